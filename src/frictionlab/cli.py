@@ -1,0 +1,59 @@
+"""The ``frictionlab`` command line.
+
+Exit codes: 0 success, 1 a computation failed, 2 bad input. Each subcommand lives in
+``frictionlab.commands.<name>`` and provides ``add_parser(subparsers)`` and ``run(args)``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+from frictionlab._version import __version__
+from frictionlab.errors import FrictionlabError, InputError, ParameterError, ValidityError
+
+#: Subcommand modules under ``frictionlab.commands`` (one job each).
+COMMANDS: tuple[str, ...] = ()
+
+EXIT_OK = 0
+EXIT_FAILED = 1
+EXIT_BAD_INPUT = 2
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Build the argument parser with every registered subcommand."""
+    parser = argparse.ArgumentParser(
+        prog="frictionlab",
+        description="Anisotropic friction: subloading-friction law and lattice-spring roughness.",
+    )
+    parser.add_argument("--version", action="version", version=f"frictionlab {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name in COMMANDS:
+        module = importlib.import_module(f"frictionlab.commands.{name}")
+        module.add_parser(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the CLI and return the exit code."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse exits 2 on bad usage, 0 on --help
+        return int(exc.code) if isinstance(exc.code, int) else EXIT_BAD_INPUT
+    if args.command is None:
+        parser.print_help()
+        return EXIT_BAD_INPUT
+    try:
+        return int(args.handler(args))
+    except (InputError, ParameterError, ValidityError) as exc:
+        print(f"frictionlab: error: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except FrictionlabError as exc:
+        print(f"frictionlab: computation failed: {exc}", file=sys.stderr)
+        return EXIT_FAILED
+    except KeyboardInterrupt:
+        print("frictionlab: interrupted", file=sys.stderr)
+        return EXIT_FAILED

@@ -1,0 +1,1 @@
+"""Subcommands of the ``frictionlab`` command line, one module each."""
