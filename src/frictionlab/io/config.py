@@ -1,0 +1,211 @@
+"""Reading TOML configuration files with clear, one-line errors.
+
+:class:`Table` wraps one TOML table and hands out typed values; every problem is an
+:class:`~frictionlab.errors.InputError` that names the key (``[law].mu_s``), the value
+and what is allowed. :meth:`Table.finish` rejects keys nobody asked for, so a typo is
+never silently ignored.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tomllib
+from collections.abc import Callable, Iterable, Sequence
+from pathlib import Path
+from typing import Any
+
+from frictionlab.errors import InputError
+
+__all__ = ["REQUIRED", "Table", "apply_overrides", "load_toml"]
+
+
+class _Required:
+    def __repr__(self) -> str:
+        return "REQUIRED"
+
+
+#: Sentinel default meaning "the key must be present".
+REQUIRED: Any = _Required()
+
+_TYPE_NAMES = {float: "a number", int: "an integer", str: "a string", bool: "true or false"}
+
+
+def load_toml(path: str | os.PathLike[str]) -> dict[str, Any]:
+    """Read a TOML file; unreadable or malformed files raise :class:`InputError`."""
+    p = Path(path)
+    try:
+        raw = p.read_bytes()
+    except OSError as exc:
+        raise InputError(f"cannot read file '{p}': {exc.strerror or exc}") from None
+    try:
+        return tomllib.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise InputError(f"file '{p}' is not UTF-8 text") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"file '{p}' is not valid TOML: {exc}") from None
+
+
+def apply_overrides(data: dict[str, Any], overrides: Iterable[str]) -> dict[str, Any]:
+    """Return a copy of ``data`` with ``section.key=value`` overrides applied.
+
+    The value is parsed as a TOML value (``0.6``, ``"tear"``, ``[1.0, 0.5]``); a bare
+    word that is not valid TOML is taken as a string.
+    """
+    result = _deep_copy(data)
+    for item in overrides:
+        if "=" not in item:
+            raise InputError(f"override '{item}' must look like section.key=value")
+        dotted, text = item.split("=", 1)
+        parts = [part.strip() for part in dotted.strip().split(".")]
+        if not all(parts):
+            raise InputError(f"override '{item}' has an empty key")
+        try:
+            value = tomllib.loads(f"v = {text.strip()}")["v"]
+        except tomllib.TOMLDecodeError:
+            value = text.strip()
+        node = result
+        for part in parts[:-1]:
+            child = node.setdefault(part, {})
+            if not isinstance(child, dict):
+                raise InputError(f"override '{item}': '{part}' is not a table")
+            node = child
+        node[parts[-1]] = value
+    return result
+
+
+def _deep_copy(obj: Any) -> Any:
+    if isinstance(obj, dict):
+        return {k: _deep_copy(v) for k, v in obj.items()}
+    if isinstance(obj, list):
+        return [_deep_copy(v) for v in obj]
+    return obj
+
+
+class Table:
+    """One TOML table with typed, checked access.
+
+    Parameters
+    ----------
+    data:
+        The parsed table.
+    where:
+        How the table is named in messages, e.g. ``"[law]"`` or ``"[[program]] #2"``.
+    """
+
+    def __init__(self, data: Any, where: str) -> None:
+        if not isinstance(data, dict):
+            raise InputError(f"{where} must be a table, got {type(data).__name__}")
+        self._data = data
+        self.where = where
+        self._used: set[str] = set()
+
+    def __contains__(self, key: str) -> bool:
+        return key in self._data
+
+    def keys(self) -> list[str]:
+        return list(self._data)
+
+    def _name(self, key: str) -> str:
+        return f"{self.where}.{key}" if self.where else key
+
+    def raw(self, key: str, default: Any = REQUIRED) -> Any:
+        """The untyped value (marks the key as used)."""
+        self._used.add(key)
+        if key not in self._data:
+            if default is REQUIRED:
+                raise InputError(f"missing required key {self._name(key)}")
+            return default
+        return self._data[key]
+
+    def get(
+        self,
+        key: str,
+        kind: type,
+        default: Any = REQUIRED,
+        *,
+        choices: Sequence[Any] | None = None,
+        check: Callable[[Any], bool] | None = None,
+        allowed: str = "",
+    ) -> Any:
+        """A scalar value of type ``kind`` (float accepts integers; bool is never a number).
+
+        ``choices`` restricts the value to a set; ``check`` is a predicate whose failure is
+        reported with ``allowed`` as the description of the allowed range.
+        """
+        value = self.raw(key, default)
+        if value is default and key not in self._data:
+            return value
+        value = _coerce(value, kind, self._name(key))
+        if choices is not None and value not in choices:
+            options = ", ".join(repr(c) for c in choices)
+            raise InputError(f"{self._name(key)} = {value!r} is not allowed; choose one of {options}")
+        if check is not None and not check(value):
+            raise InputError(f"{self._name(key)} = {value!r} is invalid: allowed {allowed}")
+        return value
+
+    def get_list(
+        self,
+        key: str,
+        kind: type = float,
+        default: Any = REQUIRED,
+        *,
+        length: int | tuple[int, ...] | None = None,
+    ) -> Any:
+        """A list of values of type ``kind``, optionally of a given length (or lengths)."""
+        value = self.raw(key, default)
+        if value is default and key not in self._data:
+            return value
+        name = self._name(key)
+        if not isinstance(value, list):
+            raise InputError(f"{name} must be a list, got {_describe(value)}")
+        lengths = (length,) if isinstance(length, int) else length
+        if lengths is not None and len(value) not in lengths:
+            want = " or ".join(str(n) for n in lengths)
+            raise InputError(f"{name} must have {want} entries, got {len(value)}")
+        return [_coerce(v, kind, f"{name}[{i}]") for i, v in enumerate(value)]
+
+    def table(self, key: str, required: bool = False) -> Table | None:
+        """A sub-table, or ``None`` when absent and not required."""
+        value = self.raw(key, REQUIRED if required else None)
+        if value is None:
+            return None
+        return Table(value, f"[{key}]" if not self.where else f"{self.where}.{key}")
+
+    def tables(self, key: str, required: bool = False) -> list[Table]:
+        """An array of tables (``[[key]]``)."""
+        value = self.raw(key, REQUIRED if required else [])
+        if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
+            raise InputError(f"{self._name(key)} must be an array of tables ([[{key}]])")
+        return [Table(v, f"[[{key}]] #{i + 1}") for i, v in enumerate(value)]
+
+    def finish(self) -> None:
+        """Reject keys that were never read."""
+        unknown = [k for k in self._data if k not in self._used]
+        if unknown:
+            allowed = ", ".join(sorted(self._used)) or "none"
+            raise InputError(
+                f"unknown key {self._name(unknown[0])}; allowed keys here: {allowed}"
+            )
+
+
+def _describe(value: Any) -> str:
+    return f"{type(value).__name__} {value!r}"
+
+
+def _coerce(value: Any, kind: type, name: str) -> Any:
+    if kind is float:
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise InputError(f"{name} must be {_TYPE_NAMES[float]}, got {_describe(value)}")
+        value = float(value)
+        if not math.isfinite(value):
+            raise InputError(f"{name} = {value} must be finite")
+        return value
+    if kind is int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise InputError(f"{name} must be {_TYPE_NAMES[int]}, got {_describe(value)}")
+        return value
+    if not isinstance(value, kind) or (kind is not bool and isinstance(value, bool)):
+        want = _TYPE_NAMES.get(kind, kind.__name__)
+        raise InputError(f"{name} must be {want}, got {_describe(value)}")
+    return value
