@@ -1,0 +1,302 @@
+"""Contact state of N points, kept in the co-rotating contact frame (spec §4.1, Eq 81).
+
+Arrays are points first, components last. Tangential components refer to the contact
+frame (e_1, e_2, n) of each point, which rides with the contact surface; the frame
+itself is stored as ``frame[i] = [e_1, e_2, n]`` (rows, global components), so that a
+rigid rotation of the contact pair changes only ``frame`` (objectivity, Eqs 13, 19, 81).
+
+Sign conventions (spec §1): the normal traction ``f_n`` is positive in compression and
+the normal slip is positive for approach; the traction acts on the body and the slip is
+that of the counter body relative to the body.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from frictionlab.errors import ParameterError
+from frictionlab.subloading.params import SubloadingParams
+from frictionlab.subloading.surfaces import SURFACE_CODES, potential
+
+__all__ = [
+    "ContactState",
+    "check_snap_back",
+    "global_traction",
+    "initial_state",
+    "local_increment",
+    "rotate_frame",
+]
+
+
+@dataclass(frozen=True)
+class ContactState:
+    """State of N contact points (all arrays read-only).
+
+    Attributes
+    ----------
+    traction:
+        (N, 3) ``(f_t1, f_t2, f_n)`` [Pa] in the contact frame; ``f_n >= 0``.
+    F:
+        (N,) size of the sliding-yield surface (mu for the cone).
+    R:
+        (N,) normal sliding-yield ratio, Eq (22).
+    plastic_slip:
+        (N,) accumulated plastic sliding u^p [m], Eq (29).
+    gap:
+        (N,) normal opening [m] while the contact is open (0 when closed).
+    frame:
+        (N, 3, 3) rows e_1, e_2, n of the co-rotating contact frame in global components.
+    """
+
+    traction: np.ndarray
+    F: np.ndarray
+    R: np.ndarray
+    plastic_slip: np.ndarray
+    gap: np.ndarray
+    frame: np.ndarray
+
+    def __post_init__(self) -> None:
+        traction = _readonly_float(self.traction, "traction")
+        if traction.ndim != 2 or traction.shape[1] != 3:
+            raise ParameterError("traction", traction.shape, "shape (N, 3)")
+        n = traction.shape[0]
+        object.__setattr__(self, "traction", traction)
+        for name in ("F", "R", "plastic_slip", "gap"):
+            arr = _readonly_float(getattr(self, name), name)
+            if arr.shape != (n,):
+                raise ParameterError(name, arr.shape, f"shape ({n},)")
+            object.__setattr__(self, name, arr)
+        frame = _readonly_float(self.frame, "frame")
+        if frame.shape != (n, 3, 3):
+            raise ParameterError("frame", frame.shape, f"shape ({n}, 3, 3)")
+        object.__setattr__(self, "frame", frame)
+
+    @property
+    def n_points(self) -> int:
+        """Number of contact points N."""
+        return int(self.traction.shape[0])
+
+    @property
+    def is_open(self) -> np.ndarray:
+        """(N,) True where the contact is open (zero normal traction)."""
+        return np.asarray(self.traction[:, 2] <= 0.0)
+
+    def replace(self, **changes: Any) -> ContactState:
+        """A new state with some arrays replaced."""
+        values = {f.name: getattr(self, f.name) for f in fields(self)}
+        values.update(changes)
+        return ContactState(**values)
+
+    @classmethod
+    def _trusted(cls, **arrays: np.ndarray) -> ContactState:
+        """Build a state from arrays produced by the kernel (already checked; made read-only)."""
+        obj = object.__new__(cls)
+        for name, arr in arrays.items():
+            arr.setflags(write=False)
+            object.__setattr__(obj, name, arr)
+        return obj
+
+    def take(self, index: Any) -> ContactState:
+        """The sub-state of the points selected by ``index`` (mask or integer array)."""
+        return ContactState(**{f.name: getattr(self, f.name)[index] for f in fields(self)})
+
+
+def _readonly_float(value: Any, name: str) -> np.ndarray:
+    arr = np.array(value, dtype=np.float64, copy=True)
+    if not np.all(np.isfinite(arr)):
+        raise ParameterError(name, value, "finite values (no NaN or infinity)")
+    arr.setflags(write=False)
+    return arr
+
+
+def initial_state(
+    params: SubloadingParams,
+    normal_traction: Any,
+    tangential_traction: Any = (0.0, 0.0),
+    *,
+    F: Any = None,
+    n_points: int | None = None,
+    frame: Any = None,
+) -> ContactState:
+    """A virgin (fully recovered) contact state, spec §3.3.
+
+    Parameters
+    ----------
+    params:
+        The law's parameters (scalars or per point).
+    normal_traction:
+        f_n [Pa] > 0, scalar or (N,).
+    tangential_traction:
+        (f_t1, f_t2) [Pa] in the contact frame, shape (2,) or (N, 2). Default zero.
+    F:
+        Initial size; default the static value (F_s or mu_s): a fully recovered contact.
+    n_points:
+        N, when every other input is shared.
+    frame:
+        (3, 3) or (N, 3, 3) rows e_1, e_2, n; default the global axes.
+
+    The initial ratio is ``R = f(f, beta)/F`` (Eq 22): ``|beta|/mu_s`` for the cone
+    with rotation, ``f_n g(|beta|/M)/F_s`` for a closed surface. The state is checked
+    for the domain of the law (pitfall 3: ``f_n < F_k`` for closed surfaces, ``R <= 1``)
+    and for the no-snap-back condition (pitfall 7, :func:`check_snap_back`).
+    """
+    fn = np.asarray(normal_traction, dtype=np.float64)
+    ft = np.asarray(tangential_traction, dtype=np.float64)
+    if ft.shape[-1:] != (2,) or ft.ndim > 2:
+        raise ParameterError("tangential_traction", ft, "shape (2,) or (N, 2)")
+    sizes = {a.shape[0] for a in (fn, ft[..., 0]) if a.ndim == 1}
+    if params.per_point:
+        sizes.add(params.n_points)
+    if n_points is not None:
+        if int(n_points) < 1:
+            raise ParameterError("n_points", n_points, "n_points >= 1")
+        sizes.add(int(n_points))
+    if len(sizes) > 1:
+        raise ParameterError("initial state arrays", sorted(sizes), "one common number of points N")
+    n = sizes.pop() if sizes else 1
+    fn = np.broadcast_to(fn, (n,)).astype(np.float64)
+    ft = np.broadcast_to(ft, (n, 2)).astype(np.float64)
+    if not np.all(np.isfinite(fn)) or np.any(fn <= 0.0):
+        raise ParameterError("normal_traction", fn, "finite f_n > 0 (compression positive)")
+    static = np.broadcast_to(params.static, (n,))
+    kinetic = np.broadcast_to(params.kinetic, (n,))
+    F0 = static.copy() if F is None else np.broadcast_to(np.asarray(F, np.float64), (n,)).copy()
+    if not np.all(np.isfinite(F0)) or np.any(F0 < kinetic) or np.any(F0 > static):
+        raise ParameterError("F", F0, "F_k <= F <= F_s (mu_k <= mu <= mu_s for the cone)")
+    if not params.is_cone and np.any(fn >= kinetic):
+        raise ParameterError(
+            "normal_traction",
+            fn,
+            "f_n < F_k for a closed surface (pitfall 3: the normal traction must stay inside "
+            "the kinetic sliding-yield surface)",
+        )
+    traction = np.column_stack([ft, fn])
+    R = ratio_of(params, traction, F0)
+    if np.any(R > 1.0):
+        raise ParameterError("tangential_traction", ft, "inside the sliding-yield surface (R <= 1)")
+    check_snap_back(params, fn)
+    if frame is None:
+        frame_arr = np.broadcast_to(np.eye(3), (n, 3, 3))
+    else:
+        frame_arr = np.broadcast_to(np.asarray(frame, np.float64), (n, 3, 3))
+        _check_rotation("frame", frame_arr)
+    return ContactState(
+        traction=traction,
+        F=F0,
+        R=R,
+        plastic_slip=np.zeros(n),
+        gap=np.zeros(n),
+        frame=frame_arr,
+    )
+
+
+def ratio_of(params: SubloadingParams, traction: np.ndarray, F: np.ndarray) -> np.ndarray:
+    """R = f(f, beta)/F (Eq 22) for tractions (N, 3) in the contact frame."""
+    n = traction.shape[0]
+    code = SURFACE_CODES[params.surface]
+    beta = np.broadcast_to(params.rotation, (n, 2))
+    axes = np.broadcast_to(params.axis_factors, (n, 2))
+    angle = np.broadcast_to(params.orthotropy_angle, (n,))
+    c, s = np.cos(angle), np.sin(angle)
+    fhat = traction[:, :2] - traction[:, 2:3] * beta
+    p1 = c * fhat[:, 0] + s * fhat[:, 1]
+    p2 = -s * fhat[:, 0] + c * fhat[:, 1]
+    w = np.hypot(p1 / axes[:, 0], p2 / axes[:, 1])
+    out = np.empty(n)
+    for i in range(n):
+        out[i] = potential(code, params.tear_k, float(w[i]), float(traction[i, 2]))[0] / F[i]
+    return out
+
+
+def check_snap_back(params: SubloadingParams, normal_traction: Any) -> None:
+    """Reject parameters that allow snap-back in softening (pitfall 7, Eq 44).
+
+    Near R = 1 the local problem has a unique root only if the elastic stiffness
+    exceeds the softening slope: cone ``alpha_t > A_max f_n kappa (mu/mu_k - 1)^m`` for
+    all mu in [mu_k, mu_s]; closed surfaces ``alpha_t g'(chi*)/A_i > kappa (F/F_k - 1)^m``
+    on the yield surface ``f_n g(chi*) = F`` for F in [F_k, F_s] (checked on a grid of
+    65 values of F, the end points included).
+    """
+    fn = np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))
+    n = fn.shape[0]
+    alpha_t = np.broadcast_to(params.alpha_t, (n,))
+    kappa = np.broadcast_to(params.kappa, (n,))
+    m = np.broadcast_to(params.m, (n,))
+    static = np.broadcast_to(params.static, (n,))
+    kinetic = np.broadcast_to(params.kinetic, (n,))
+    a_max = np.max(np.broadcast_to(params.axis_factors, (n, 2)), axis=1)
+    a_min = np.min(np.broadcast_to(params.axis_factors, (n, 2)), axis=1)
+    if params.is_cone:
+        slope = a_max * fn * kappa * (static / kinetic - 1.0) ** m
+        bad = ~(alpha_t > slope)
+        if bad.any():
+            i = int(np.flatnonzero(bad)[0])
+            raise ParameterError(
+                "alpha_t",
+                float(alpha_t[i]),
+                f"alpha_t > C_max f_n kappa (mu_s/mu_k - 1)^m = {slope[i]:.6g} "
+                "(no snap-back in softening, spec pitfall 7)",
+            )
+        return
+    code = SURFACE_CODES[params.surface]
+    from frictionlab.subloading.surfaces import g_inverse, g_value
+
+    for i in range(n):
+        if fn[i] >= kinetic[i]:
+            continue  # reported by the domain check of the caller
+        grid = np.linspace(kinetic[i], static[i], 65)
+        chi = g_inverse(params.surface, grid / fn[i], params.tear_k)
+        for F_val, c in zip(grid, chi, strict=True):
+            dg = g_value(code, params.tear_k, float(c))[1]
+            softening = kappa[i] * max(F_val / kinetic[i] - 1.0, 0.0) ** m[i]
+            # the worst axis is the one with the largest factor A_i (smallest g'/A_i)
+            stiffness = alpha_t[i] * dg / (a_max[i] if a_max[i] > 0 else a_min[i])
+            if not stiffness > softening:
+                raise ParameterError(
+                    "alpha_t",
+                    float(alpha_t[i]),
+                    f"alpha_t g'(chi*)/M_max > kappa (F/F_k - 1)^m on the yield surface "
+                    f"(no snap-back in softening; fails at F = {F_val:.6g}, f_n = {fn[i]:.6g}; "
+                    "spec pitfall 7)",
+                )
+
+
+def _check_rotation(name: str, Q: np.ndarray) -> None:
+    eye = np.eye(3)
+    err = np.abs(np.einsum("...ij,...kj->...ik", Q, Q) - eye).max() if Q.size else 0.0
+    det = np.linalg.det(Q)
+    if not (err < 1e-10 and np.all(np.abs(det - 1.0) < 1e-10)):
+        raise ParameterError(name, "non-orthonormal matrix", "proper rotation matrices (Q Q^T = I, det Q = 1)")
+
+
+def rotate_frame(state: ContactState, rotation: Any) -> ContactState:
+    """Rotate the contact frame rigidly by the incremental rotation ``rotation``.
+
+    ``rotation`` is a proper rotation matrix (3, 3) or (N, 3, 3) in global components.
+    The co-rotating components of the traction (and of beta, which is fixed to the
+    surface, Eq 19) are unchanged: this is the objective update of spec §4.2 step 0
+    and Eq (81). Only ``frame`` changes, to ``frame @ rotation.T`` (each basis vector
+    is rotated).
+    """
+    Q = np.broadcast_to(np.asarray(rotation, dtype=np.float64), (state.n_points, 3, 3))
+    if not np.all(np.isfinite(Q)):
+        raise ParameterError("rotation", rotation, "finite values")
+    _check_rotation("rotation", Q)
+    new_frame = np.einsum("nij,nkj->nik", state.frame, Q)
+    return state.replace(frame=new_frame)
+
+
+def global_traction(state: ContactState) -> np.ndarray:
+    """Traction vectors on the body in global components, ``f = f_t1 e1 + f_t2 e2 - f_n n`` (Eq 9)."""
+    coeffs = state.traction * np.array([1.0, 1.0, -1.0])
+    return np.einsum("ni,nij->nj", coeffs, state.frame)
+
+
+def local_increment(state: ContactState, slip_increment_global: Any) -> np.ndarray:
+    """Contact-frame slip increment from a global one: ``(du.e1, du.e2, -du.n)`` (Eqs 2–3)."""
+    du = np.broadcast_to(np.asarray(slip_increment_global, dtype=np.float64), (state.n_points, 3))
+    local = np.einsum("nij,nj->ni", state.frame, du)
+    return local * np.array([1.0, 1.0, -1.0])
