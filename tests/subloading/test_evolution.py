@@ -54,7 +54,7 @@ def test_eq29_closed_form_equals_ode(R0: float, dup: float) -> None:
     )  # fmt: skip
     R_ode = sol.y[0, -1]
     assert ratio_closed_form(R0, dup, u) == pytest.approx(R_ode, rel=1e-8, abs=1e-10)
-    R_kernel, slope = ratio_after(U_COT, u, R0, dup)
+    R_kernel, slope, _ = ratio_after(U_COT, u, R0, dup)
     assert R_kernel == pytest.approx(R_ode, rel=1e-8)
     assert slope == pytest.approx(u / math.tan(0.5 * math.pi * R_kernel), rel=1e-12)
     assert plastic_slip_for_ratio(R0, R_ode, u) == pytest.approx(dup, rel=1e-7)
@@ -65,10 +65,10 @@ def test_eq29_accuracy_near_one() -> None:
     u = 100.0
     R0 = 1.0 - 1e-12
     for dlam in (1e-12, 1e-9, 1e-3):
-        R, _ = ratio_after(U_COT, u, R0, dlam)
+        R = ratio_after(U_COT, u, R0, dlam)[0]
         # 1 - R = (2/pi) asin(sin(pi (1 - R0)/2) e^{-a}) to first order
         expected = (1 - R0) * math.exp(-0.5 * math.pi * u * dlam)
-        assert (1.0 - R) == pytest.approx(expected, rel=1e-3, abs=2e-16)
+        assert pytest.approx(expected, rel=1e-3, abs=2e-16) == (1.0 - R)
         assert R0 <= R <= 1.0
 
 
@@ -84,15 +84,26 @@ def test_ln_law_implicit_euler_converges_to_li_solution() -> None:
     for steps in (50, 100, 200, 400):
         R = R0
         for _ in range(steps):
-            R, _ = ratio_after(U_LN, u, R, dup / steps)
+            R = ratio_after(U_LN, u, R, dup / steps)[0]
         errors.append(abs(R - exact))
     ratios = np.array(errors[:-1]) / np.array(errors[1:])
     np.testing.assert_allclose(ratios, 2.0, rtol=0.1)  # first order
-    R1, slope = ratio_after(U_LN, u, R0, 1e-4)
+    R1, slope, _ = ratio_after(U_LN, u, R0, 1e-4)
     assert R1 - R0 + u * 1e-4 * math.log(R1) == pytest.approx(0.0, abs=1e-15)
     h = 1e-9
     fd = (ratio_after(U_LN, u, R0, 1e-4 + h)[0] - ratio_after(U_LN, u, R0, 1e-4 - h)[0]) / (2 * h)
     assert slope == pytest.approx(fd, rel=1e-6)
+
+
+@pytest.mark.parametrize("law", [U_COT, U_LN])
+@pytest.mark.parametrize("R0", [0.05, 0.5, 0.95])
+def test_ratio_derivative_with_respect_to_the_start(law: int, R0: float) -> None:
+    h = 1e-7
+    _, _, dR0 = ratio_after(law, 100.0, R0, 2e-3)
+    fd = (ratio_after(law, 100.0, R0 + h, 2e-3)[0] - ratio_after(law, 100.0, R0 - h, 2e-3)[0]) / (
+        2 * h
+    )
+    assert dR0 == pytest.approx(fd, rel=1e-6)
 
 
 def _ode_F(F0, Fs, Fk, kappa, xi, m, n, rate, duration, form="one_minus"):
@@ -117,7 +128,7 @@ def test_exponential_update_is_exact_for_constant_rates(dlam: float, dt: float) 
     rate = dlam / duration
     xi_eff = xi if dt > 0 else 0.0
     expected = _ode_F(F0, Fs, Fk, kappa, xi_eff, 1.0, 1.0, rate, duration)
-    assert F == pytest.approx(expected, rel=1e-9)
+    assert pytest.approx(expected, rel=1e-9) == F
     h = 1e-7
     fd = (
         size_after(F0, Fs, Fk, kappa, xi, 1, 1, dlam + h, dt, EXPONENTIAL, ONE_MINUS)[0]

@@ -106,7 +106,7 @@ def test_a3_slide_hold_slide() -> None:
         step = update(params, state, np.zeros((n, 3)), holds / 200)
         assert np.all(step.status == Status.STICK) and np.all(step.plastic_multiplier == 0)
         np.testing.assert_array_equal(step.traction, stop_traction)  # no relaxation
-        assert np.all(step.state.R < R_prev)
+        assert np.all(R_prev > step.state.R)
         R_prev = step.state.R
         state = step.state
         expected = MU_S - (MU_S - mu0) * np.exp(-XI * holds * (k + 1) / 200 / MU_S)
@@ -136,7 +136,7 @@ def test_a4_rotational_anisotropy() -> None:
     beta = 0.05
     params = set_a(rotation=(beta, 0.0))
     state = fresh(params, n=2)
-    assert state.R == pytest.approx(beta / MU_S, rel=1e-14)  # R0 = |beta|/mu_s
+    assert pytest.approx(beta / MU_S, rel=1e-14) == state.R  # R0 = |beta|/mu_s
     du = np.zeros((2000, 2, 3))
     du[:, 0, 0], du[:, 1, 0] = 10.0 / 2000, -10.0 / 2000
     h = run(params, state, du, np.full(2000, 10.0 / 2000 / V))
@@ -177,7 +177,10 @@ def test_a6_ratcheting_slip_per_cycle_is_exact(increments: int) -> None:
     residual = []
     for _ in range(3):
         targets = np.concatenate(
-            [np.linspace(0, target_max, increments + 1)[1:], np.linspace(target_max, 0, increments + 1)[1:]]
+            [
+                np.linspace(0, target_max, increments + 1)[1:],
+                np.linspace(target_max, 0, increments + 1)[1:],
+            ]
         )
         for target in targets:
             du = np.zeros((1, 3))

@@ -20,8 +20,8 @@ from numba import njit
 from frictionlab.errors import ParameterError
 
 __all__ = [
-    "EXPONENTIAL",
     "BACKWARD_EULER",
+    "EXPONENTIAL",
     "ONE_MINUS",
     "RATIO",
     "U_COT",
@@ -43,8 +43,8 @@ _HALF_PI = 0.5 * math.pi
 
 # ============================================================================ R
 @njit(cache=True)
-def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, float]:
-    """R and dR/d(dlam) after plastic sliding ``dlam >= 0`` from ``R0``.
+def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, float, float]:
+    """R, dR/d(dlam) and dR/dR0 after plastic sliding ``dlam >= 0`` from ``R0``.
 
     Cot law, Eq (29): ``cos(pi R/2) = cos(pi R0/2) exp(-pi u dlam/2)``, evaluated as
     ``R = (2/pi) atan2(sqrt(s0^2 - y0^2 expm1(-2a)), y0 e^-a)`` with ``a = pi u dlam/2``,
@@ -62,12 +62,13 @@ def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, floa
         s = math.sqrt(s2) if s2 > 0.0 else 0.0
         R = math.atan2(s, y) / _HALF_PI
         slope = u * y / s if s > 0.0 else math.inf
-        return R, slope
+        dR0 = math.exp(-a) * s0 / s if s > 0.0 else 1.0
+        return R, slope, dR0
     # ln law
     if dlam <= 0.0:
         if R0 <= 0.0:
-            return 0.0, math.inf
-        return R0, -u * math.log(R0)
+            return 0.0, math.inf, 1.0
+        return R0, -u * math.log(R0), 1.0
     c = u * dlam
     x = 0.0 if R0 <= 1.0 else math.log(R0)
     for _ in range(200):
@@ -78,7 +79,7 @@ def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, floa
         if abs(step) <= 1e-16 * max(1.0, abs(x)):
             break
     R = math.exp(x)
-    return R, -u * x / (1.0 + c / R)
+    return R, -u * x / (1.0 + c / R), 1.0 / (1.0 + c / R)
 
 
 # ============================================================================ F
@@ -122,7 +123,9 @@ def _recover_exactly(F0: float, Fs: float, xi: float, n: float, dt: float) -> fl
 
 
 @njit(cache=True)
-def _soften_exactly(F1: float, Fk: float, kappa: float, m: float, dlam: float) -> tuple[float, float]:
+def _soften_exactly(
+    F1: float, Fk: float, kappa: float, m: float, dlam: float
+) -> tuple[float, float]:
     """F and dF/d(dlam) after pure softening by dlam from F1 (closed forms of dF = -kappa phi)."""
     x1 = max(F1 / Fk - 1.0, 0.0)
     if kappa == 0.0 or x1 == 0.0:
@@ -243,11 +246,16 @@ def plastic_slip_for_ratio(R0: np.ndarray, R: np.ndarray, u: float) -> np.ndarra
 
 
 def ratcheting_slip_per_cycle(R_max: np.ndarray, u: float) -> np.ndarray:
-    """Residual slip per traction cycle 0 -> R_max -> 0 (kappa = xi = 0): (2/(pi u)) ln sec(pi R_max/2)."""
-    return plastic_slip_for_ratio(0.0, R_max, u)
+    """Residual slip per traction cycle 0 -> R_max -> 0 with kappa = xi = 0 [m].
+
+    ``(2/(pi u)) ln sec(pi R_max/2)`` (spec A6): the hallmark of the subloading concept.
+    """
+    return plastic_slip_for_ratio(np.zeros_like(np.asarray(R_max, dtype=np.float64)), R_max, u)
 
 
-def hold_recovery(F0: np.ndarray, F_s: float, xi: float, time: np.ndarray, n: float = 1.0) -> np.ndarray:
+def hold_recovery(
+    F0: np.ndarray, F_s: float, xi: float, time: np.ndarray, n: float = 1.0
+) -> np.ndarray:
     """F after a hold of ``time`` [s] from F0 (no sliding), closed forms of spec §2.6."""
     F0 = np.asarray(F0, dtype=np.float64)
     t = np.asarray(time, dtype=np.float64)
@@ -262,7 +270,12 @@ def hold_recovery(F0: np.ndarray, F_s: float, xi: float, time: np.ndarray, n: fl
     return F_s * (1.0 - np.where(base > 0, np.maximum(base, 0.0) ** (1.0 / (1.0 - n)), 0.0))
 
 
-def steady_size(velocity: np.ndarray, kappa: float, xi: float, F_s: float, F_k: float) -> np.ndarray:
-    """Steady-sliding F_ss(V) = (kappa V + xi)/(kappa V/F_k + xi/F_s), spec §2.6 (mu_ss for the cone)."""
+def steady_size(
+    velocity: np.ndarray, kappa: float, xi: float, F_s: float, F_k: float
+) -> np.ndarray:
+    """Steady-sliding size F_ss(V) = (kappa V + xi)/(kappa V/F_k + xi/F_s), spec §2.6.
+
+    For the cone this is mu_ss(V), the steady friction coefficient at sliding speed V.
+    """
     V = np.abs(np.asarray(velocity, dtype=np.float64))
     return (kappa * V + xi) / (kappa * V / F_k + xi / F_s)

@@ -49,20 +49,25 @@ MAX_ITERATIONS = 100
 @njit(cache=True)
 def _state_at(
     q: float,
+    omq: float,
     fh1t: float, fh2t: float, fn: float, A1: float, A2: float, Aref: float,
     alpha_t: float, surface: int, tear_k: float,
     R0: float, u: float, ulaw: int,
     F0: float, Fs: float, Fk: float, kappa: float, xi: float, m: float, n: float,
     dt: float, integ: int, rform: int,
 ):  # fmt: skip
-    """Residual r(q) = Phi(fhat(q), f_n) - R(dlam) F(dlam) and everything derived from it."""
-    if q >= 1.0:  # limit gamma -> infinity: fhat -> 0, dlam -> |fhat^tr|/alpha_t
+    """Residual r(q) = Phi(fhat(q), f_n) - R(dlam) F(dlam) and everything derived from it.
+
+    ``omq`` is 1 - q, passed separately so that q close to 1 keeps full precision.
+    """
+    if omq <= 0.0:  # limit gamma -> infinity: fhat -> 0, dlam -> |fhat^tr|/alpha_t
         dlam = math.hypot(fh1t, fh2t) / alpha_t
-        R, dR = ratio_after(ulaw, u, R0, dlam)
+        R, dR, dR0 = ratio_after(ulaw, u, R0, dlam)
         F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
         phi = 0.0 if surface == COULOMB else fn * 1.0
-        return phi - R * F, 0.0, 0.0, 0.0, dlam, R, dR, F, dF, 0.0, 0.0, 0.0, 0.0, math.inf
-    gamma = Aref * Aref * q / (1.0 - q)
+        return (phi - R * F, 0.0, 0.0, 0.0, dlam, R, dR, F, dF, 0.0, 0.0, 0.0, 0.0, phi,
+                dR0, 0.0, 0.0)  # fmt: skip
+    gamma = Aref * Aref * q / omq
     d1 = A1 * A1 + gamma
     d2 = A2 * A2 + gamma
     a1 = A1 * A1 / d1
@@ -75,7 +80,7 @@ def _state_at(
     dlam = gamma * W / alpha_t
     w = math.hypot(fh1 / A1, fh2 / A2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fn)
-    R, dR = ratio_after(ulaw, u, R0, dlam)
+    R, dR, dR0 = ratio_after(ulaw, u, R0, dlam)
     F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
     r = phi - R * F
     # derivatives with respect to gamma
@@ -90,8 +95,11 @@ def _state_at(
     dW = -(fh1t * fh1t / (d1 * d1 * d1) + fh2t * fh2t / (d2 * d2 * d2)) / W if W > 0.0 else 0.0
     ddlam = (W + gamma * dW) / alpha_t
     hard = dR * F + R * dF
-    r_gamma = phi_1 * dfh1 + phi_2 * dfh2 - hard * ddlam
-    return r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi
+    phi_gamma = phi_1 * dfh1 + phi_2 * dfh2
+    rf_gamma = hard * ddlam
+    r_gamma = phi_gamma - rf_gamma
+    return (r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi, dR0,
+            phi_gamma, rf_gamma)  # fmt: skip
 
 
 @njit(cache=True)
@@ -168,6 +176,10 @@ def step_points(
 
         # 3. starting ratio with the partial-unloading correction
         R_start = R_old[i]
+        corrected = False
+        gR1 = 0.0  # gradient of R_start with respect to (du1, du2, dun), principal axes
+        gR2 = 0.0
+        gRn = 0.0
         if fn > 0.0:
             h1 = f1 - fn * b1
             h2 = f2 - fn * b2
@@ -177,11 +189,34 @@ def step_points(
             if den > 0.0:
                 s = -((h1 * e1) / (A1 * A1) + (h2 * e2) / (A2 * A2)) / den
                 if 0.0 < s < 1.0:
-                    ws = math.hypot((h1 + s * e1) / A1, (h2 + s * e2) / A2)
-                    fns = fn + s * (fn_tr - fn)
-                    R_min = potential(surface, tear_k, ws, fns)[0] / F_rec
+                    q1 = h1 + s * e1
+                    q2 = h2 + s * e2
+                    ws = math.hypot(q1 / A1, q2 / A2)
+                    dfn_tr = fn_tr - fn
+                    fns = fn + s * dfn_tr
+                    phis, phis_w, phis_fn = potential(surface, tear_k, ws, fns)
+                    R_min = phis / F_rec
                     if R_min < R_start:
                         R_start = R_min
+                        corrected = True
+                        # derivative of the minimum along the path (envelope theorem for w;
+                        # s* moves with du through f_n(s*)), for the consistent tangent
+                        k1 = (h1 + 2.0 * s * e1) / (A1 * A1 * den)
+                        k2 = (h2 + 2.0 * s * e2) / (A2 * A2 * den)
+                        ds1 = -alpha_t * k1
+                        ds2 = -alpha_t * k2
+                        dsn = alpha_n * (k1 * b1 + k2 * b2)
+                        if ws > 0.0:
+                            dw1 = s * alpha_t * q1 / (A1 * A1 * ws)
+                            dw2 = s * alpha_t * q2 / (A2 * A2 * ws)
+                            dwn = -s * alpha_n * (q1 * b1 / (A1 * A1) + q2 * b2 / (A2 * A2)) / ws
+                        else:
+                            dw1 = 0.0
+                            dw2 = 0.0
+                            dwn = 0.0
+                        gR1 = (phis_w * dw1 + phis_fn * ds1 * dfn_tr) / F_rec
+                        gR2 = (phis_w * dw2 + phis_fn * ds2 * dfn_tr) / F_rec
+                        gRn = (phis_w * dwn + phis_fn * (dsn * dfn_tr + s * alpha_n)) / F_rec
 
         # 4. loading test on the trial state
         r0 = phi_tr - R_start * F_rec
@@ -208,22 +243,67 @@ def step_points(
             continue
 
         # 5. plastic corrector: bracket [0, 1] in q
-        r1 = _state_at(1.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                       R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
-                       rform)[0]  # fmt: skip
+        end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+                        R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
+                        rform)  # fmt: skip
+        r1 = end[0]
         if not r1 < 0.0:
-            _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                      out_traction, out_F, out_R, out_gap, out_tangent)  # fmt: skip
-            out_status[i] = FAILED
+            # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of f:
+            # only possible for a closed surface loaded normally with a small tangential
+            # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
+            # tangential mechanism, pitfall 3), so R = f_n g(0)/F if that is <= 1.
+            R_end = end[13] / end[7]
+            if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
+                _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
+                          out_traction, out_F, out_R, out_gap, out_tangent)  # fmt: skip
+                out_status[i] = FAILED
+                continue
+            dlam = end[4]
+            norm = math.hypot(fh1t, fh2t)
+            tb1 = fh1t / norm
+            tb2 = fh2t / norm
+            g1 = fn_tr * b1
+            g2 = fn_tr * b2
+            out_dlam[i] = dlam
+            out_diss[i] = dlam * (g1 * tb1 + g2 * tb2)
+            out_vp[i, 0] = dlam * (ca * tb1 - sa * tb2)
+            out_vp[i, 1] = dlam * (sa * tb1 + ca * tb2)
+            out_traction[i, 0] = ca * g1 - sa * g2
+            out_traction[i, 1] = sa * g1 + ca * g2
+            out_traction[i, 2] = fn_tr
+            out_F[i] = end[7]
+            out_R[i] = min(R_end, 1.0)
+            out_gap[i] = 0.0
+            out_status[i] = SLIP
+            # f_t = f_n beta: independent of du_t
+            out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
+            out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
+            out_tangent[i, 2, 2] = alpha_n
             continue
-        lo, hi = 0.0, 1.0
-        q = r0 / (r0 - r1) if math.isfinite(r0) else 0.5
-        if not 0.0 < q < 1.0:
-            q = 0.5
+        # Unknown t in [0, 1]: q = t, or 1 - q = t when the regula-falsi estimate lies in
+        # the upper half, so that a return almost to the axis (q -> 1) keeps full precision.
+        if math.isfinite(r0):
+            q0 = r0 / (r0 - r1)
+            if not 0.0 < q0 < 1.0:
+                q0 = 0.5
+            flip = q0 > 0.5
+        else:  # trial outside the domain of g: locate the root's half first
+            mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
+                            tear_k, R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
+                            integ, rform)[0]  # fmt: skip
+            flip = mid > 0.0
+            q0 = 0.75 if flip else 0.25
+        dqdt = -1.0 if flip else 1.0
+        t = 1.0 - q0 if flip else q0
+        t_pos = 1.0 if flip else 0.0  # end of the bracket with r > 0 (q = 0)
+        t_neg = 0.0 if flip else 1.0  # end with r < 0 (q = 1)
         converged = False
         it = 0
-        r_prev = math.inf
-        res = _state_at(q, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+        dx = 1.0
+        dx_old = 1.0
+        q = 1.0 - t if flip else t
+        omq = t if flip else 1.0 - t
+        res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
                         R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
                         rform)  # fmt: skip
         while it < MAX_ITERATIONS:
@@ -234,19 +314,32 @@ def step_points(
                 converged = True
                 break
             if r > 0.0:
-                lo = q
+                t_pos = t
             else:
-                hi = q
-            drdq = res[1] * Aref * Aref / ((1.0 - q) * (1.0 - q))
-            q_new = q - r / drdq if (drdq < 0.0 and math.isfinite(drdq)) else -1.0
-            if not (lo < q_new < hi) or abs(r) > 0.5 * r_prev:
-                q_new = 0.5 * (lo + hi)
-            r_prev = abs(r)
+                t_neg = t
+            lo = min(t_pos, t_neg)
+            hi = max(t_pos, t_neg)
             if hi - lo <= 4e-16 * max(hi, 1e-300):
                 converged = abs(r) <= RTOL_ACCEPT * scale
                 break
-            q = q_new
-            res = _state_at(q, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+            # Newton on the log residual ln(Phi / (R F)) (same root and sign; nearly linear
+            # for the exponential Cam-clay surface), safeguarded as in rtsafe: bisect when
+            # the step leaves the bracket or does not at least halve the step before last.
+            phi = res[13]
+            rf = res[5] * res[7]
+            t_new = -1.0
+            if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
+                dlog = (res[15] / phi - res[16] / rf) * Aref * Aref / (omq * omq) * dqdt
+                if dlog != 0.0 and math.isfinite(dlog):
+                    t_new = t - math.log(phi / rf) / dlog
+            if not (lo < t_new < hi) or abs(t_new - t) > 0.5 * abs(dx_old):
+                t_new = 0.5 * (lo + hi)
+            dx_old = dx
+            dx = t_new - t
+            t = t_new
+            q = 1.0 - t if flip else t
+            omq = t if flip else 1.0 - t
+            res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
                             R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
                             rform)  # fmt: skip
         out_iter[i] = it
@@ -255,7 +348,8 @@ def step_points(
                       out_traction, out_F, out_R, out_gap, out_tangent)  # fmt: skip
             out_status[i] = FAILED
             continue
-        (r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi) = res
+        (r, r_gamma, phi_1, phi_2, dlam, R, _, F, _, phi_fn, gamma, W, hard, phi, dR0,
+         _, _) = res  # fmt: skip
         d1 = A1 * A1 + gamma
         d2 = A2 * A2 + gamma
         a1 = A1 * A1 / d1
@@ -301,6 +395,14 @@ def step_points(
         T22 = alpha_t * j22
         T1n = alpha_n * (jn1 - j11 * b1 - j12 * b2)
         T2n = alpha_n * (jn2 - j21 * b1 - j22 * b2)
+        if corrected:  # R_start depends on du: r_R0 = -F dR/dR0
+            cR = -F * dR0 / r_gamma
+            T11 -= G1 * cR * gR1
+            T12 -= G1 * cR * gR2
+            T21 -= G2 * cR * gR1
+            T22 -= G2 * cR * gR2
+            T1n -= G1 * cR * gRn
+            T2n -= G2 * cR * gRn
         # back to the contact frame: T_c = Q^T T_p Q, Q = [[ca, sa], [-sa, ca]]
         p11 = ca * T11 - sa * T21
         p12 = ca * T12 - sa * T22

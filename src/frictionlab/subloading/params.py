@@ -154,9 +154,13 @@ class SubloadingParams:
             )
         cone = self.surface == "coulomb"
         given = {k: getattr(self, k) is not None for k in ("mu_s", "mu_k", "F_s", "F_k", "M")}
-        need, forbid = (("mu_s", "mu_k"), ("F_s", "F_k", "M")) if cone else (
-            ("F_s", "F_k", "M"),
-            ("mu_s", "mu_k"),
+        need, forbid = (
+            (("mu_s", "mu_k"), ("F_s", "F_k", "M"))
+            if cone
+            else (
+                ("F_s", "F_k", "M"),
+                ("mu_s", "mu_k"),
+            )
         )
         for key in need:
             if not given[key]:
@@ -213,13 +217,15 @@ class SubloadingParams:
         static, kinetic = self.static, self.kinetic
         s_name, k_name = ("mu_s", "mu_k") if self.is_cone else ("F_s", "F_k")
         _check_positive(k_name, kinetic)
-        bad = ~(np.broadcast_to(kinetic, np.broadcast(static, kinetic).shape) <= static)
+        shape = np.broadcast(static, kinetic).shape
+        bad = ~(np.broadcast_to(kinetic, shape) <= static)
         if bad.any():
             i = int(np.flatnonzero(bad.ravel())[0])
+            s_value = float(np.ravel(np.broadcast_to(static, shape))[i])
             raise ParameterError(
                 k_name,
-                float(np.ravel(np.broadcast_to(kinetic, bad.shape))[i]),
-                f"0 < {k_name} <= {s_name} (= {float(np.ravel(np.broadcast_to(static, bad.shape))[i])})",
+                float(np.ravel(np.broadcast_to(kinetic, shape))[i]),
+                f"0 < {k_name} <= {s_name} (= {s_value})",
             )
         if not self.is_cone:
             _check_positive("M", self.M)
@@ -246,18 +252,18 @@ class SubloadingParams:
     @property
     def static(self) -> np.ndarray:
         """F_s, or mu_s for the cone."""
-        return self.mu_s if self.is_cone else self.F_s  # type: ignore[no-any-return]
+        return self.mu_s if self.is_cone else self.F_s
 
     @property
     def kinetic(self) -> np.ndarray:
         """F_k, or mu_k for the cone."""
-        return self.mu_k if self.is_cone else self.F_k  # type: ignore[no-any-return]
+        return self.mu_k if self.is_cone else self.F_k
 
     @property
     def axis_factors(self) -> np.ndarray:
         """(A_1, A_2): C_i for the cone, M C_i for closed surfaces; shape (2,) or (N, 2)."""
         if self.is_cone:
-            return self.orthotropy  # type: ignore[no-any-return]
+            return self.orthotropy
         return _readonly(np.asarray(self.M)[..., None] * self.orthotropy)
 
     @property

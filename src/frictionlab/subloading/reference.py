@@ -18,6 +18,7 @@ Single point, pure NumPy, slow by design.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -47,36 +48,54 @@ def yield_value(params: SubloadingParams, traction: np.ndarray, point: int = 0) 
     fn = float(traction[2])
     if fn <= 0.0:
         return 0.0
-    fhat = ft - fn * p["beta"]
-    c, s = math.cos(p["angle"]), math.sin(p["angle"])
+    fhat = ft - fn * p.beta
+    c, s = math.cos(p.angle), math.sin(p.angle)
     principal = np.array([c * fhat[0] + s * fhat[1], -s * fhat[0] + c * fhat[1]])
-    w = float(np.sqrt(np.sum((principal / p["axes"]) ** 2)))
+    w = float(np.sqrt(np.sum((principal / p.axes) ** 2)))
     if params.is_cone:
         return w / fn
     return fn * _g(params.surface, w / fn, params.tear_k)
 
 
-def _point_params(params: SubloadingParams, i: int) -> dict[str, object]:
+@dataclass(frozen=True)
+class _Point:
+    """Parameters of one point as plain floats."""
+
+    alpha_n: float
+    alpha_t: float
+    Fs: float
+    Fk: float
+    u: float
+    kappa: float
+    xi: float
+    m: float
+    n: float
+    beta: np.ndarray
+    axes: np.ndarray
+    angle: float
+
+
+def _point_params(params: SubloadingParams, i: int) -> _Point:
     def at(value: object) -> float:
         arr = np.asarray(value, dtype=float)
         return float(arr if arr.ndim == 0 else arr[i])
 
     rot = np.asarray(params.rotation, dtype=float)
     axes = np.asarray(params.axis_factors, dtype=float)
-    return {
-        "alpha_n": at(params.alpha_n),
-        "alpha_t": at(params.alpha_t),
-        "Fs": at(params.static),
-        "Fk": at(params.kinetic),
-        "u": at(params.u),
-        "kappa": at(params.kappa),
-        "xi": at(params.xi),
-        "m": at(params.m),
-        "n": at(params.n),
-        "beta": rot if rot.ndim == 1 else rot[i],
-        "axes": axes if axes.ndim == 1 else axes[i],
-        "angle": at(params.orthotropy_angle),
-    }
+    return _Point(
+        alpha_n=at(params.alpha_n),
+        alpha_t=at(params.alpha_t),
+        Fs=at(params.static),
+        Fk=at(params.kinetic),
+        u=at(params.u),
+        kappa=at(params.kappa),
+        xi=at(params.xi),
+        m=at(params.m),
+        n=at(params.n),
+        beta=rot if rot.ndim == 1 else rot[i],
+        axes=axes if axes.ndim == 1 else axes[i],
+        angle=at(params.orthotropy_angle),
+    )
 
 
 def explicit_increment(
@@ -98,8 +117,8 @@ def explicit_increment(
     x = np.array(traction, dtype=float)
     du = np.asarray(slip_increment, dtype=float) / substeps
     h = time_increment / substeps
-    C = np.array([p["alpha_t"], p["alpha_t"], p["alpha_n"]])
-    Fs, Fk, kappa, xi, u = p["Fs"], p["Fk"], p["kappa"], p["xi"], p["u"]
+    C = np.array([p.alpha_t, p.alpha_t, p.alpha_n])
+    Fs, Fk, kappa, xi, u = p.Fs, p.Fk, p.kappa, p.xi, p.u
     up = 0.0
     for _ in range(substeps):
         grad = _gradient(params, x, point)
@@ -108,8 +127,8 @@ def explicit_increment(
         lam = 0.0
         if norm_t > 0.0 and R > 0.0:
             tbar = np.array([gt[0] / norm_t, gt[1] / norm_t, 0.0])
-            phi = max(F / Fk - 1.0, 0.0) ** p["m"]
-            psi = max(1.0 - F / Fs, 0.0) ** p["n"]
+            phi = max(F / Fk - 1.0, 0.0) ** p.m
+            psi = max(1.0 - F / Fs, 0.0) ** p.n
             U = u * math.cos(0.5 * math.pi * R) / math.sin(0.5 * math.pi * R)
             numerator = float(grad @ (C * du)) - R * xi * psi * h
             denominator = U * F - R * kappa * phi + float(grad @ (C * tbar))
@@ -117,8 +136,8 @@ def explicit_increment(
                 lam = numerator / denominator
         else:
             tbar = np.zeros(3)
-            phi = max(F / Fk - 1.0, 0.0) ** p["m"]
-            psi = max(1.0 - F / Fs, 0.0) ** p["n"]
+            phi = max(F / Fk - 1.0, 0.0) ** p.m
+            psi = max(1.0 - F / Fs, 0.0) ** p.n
             U = 0.0
         x = x + C * (du - lam * tbar)
         F = F - kappa * phi * lam + xi * psi * h

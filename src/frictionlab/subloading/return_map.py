@@ -17,7 +17,14 @@ import numpy as np
 
 from frictionlab.errors import ConvergenceError, ParameterError
 from frictionlab.subloading import kernels
-from frictionlab.subloading.evolution import BACKWARD_EULER, EXPONENTIAL, ONE_MINUS, RATIO, U_COT, U_LN
+from frictionlab.subloading.evolution import (
+    BACKWARD_EULER,
+    EXPONENTIAL,
+    ONE_MINUS,
+    RATIO,
+    U_COT,
+    U_LN,
+)
 from frictionlab.subloading.params import SubloadingParams
 from frictionlab.subloading.state import ContactState
 from frictionlab.subloading.surfaces import SURFACE_CODES

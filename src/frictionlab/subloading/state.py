@@ -164,7 +164,7 @@ def initial_state(
     static = np.broadcast_to(params.static, (n,))
     kinetic = np.broadcast_to(params.kinetic, (n,))
     F0 = static.copy() if F is None else np.broadcast_to(np.asarray(F, np.float64), (n,)).copy()
-    if not np.all(np.isfinite(F0)) or np.any(F0 < kinetic) or np.any(F0 > static):
+    if not np.all(np.isfinite(F0)) or np.any(kinetic > F0) or np.any(static < F0):
         raise ParameterError("F", F0, "F_k <= F <= F_s (mu_k <= mu <= mu_s for the cone)")
     if not params.is_cone and np.any(fn >= kinetic):
         raise ParameterError(
@@ -269,7 +269,9 @@ def _check_rotation(name: str, Q: np.ndarray) -> None:
     err = np.abs(np.einsum("...ij,...kj->...ik", Q, Q) - eye).max() if Q.size else 0.0
     det = np.linalg.det(Q)
     if not (err < 1e-10 and np.all(np.abs(det - 1.0) < 1e-10)):
-        raise ParameterError(name, "non-orthonormal matrix", "proper rotation matrices (Q Q^T = I, det Q = 1)")
+        raise ParameterError(
+            name, "non-orthonormal matrix", "proper rotation matrices (Q Q^T = I, det Q = 1)"
+        )
 
 
 def rotate_frame(state: ContactState, rotation: Any) -> ContactState:
@@ -290,7 +292,10 @@ def rotate_frame(state: ContactState, rotation: Any) -> ContactState:
 
 
 def global_traction(state: ContactState) -> np.ndarray:
-    """Traction vectors on the body in global components, ``f = f_t1 e1 + f_t2 e2 - f_n n`` (Eq 9)."""
+    """Traction vectors on the body in global components (Eq 9).
+
+    ``f = f_t1 e1 + f_t2 e2 - f_n n``; returns (N, 3).
+    """
     coeffs = state.traction * np.array([1.0, 1.0, -1.0])
     return np.einsum("ni,nij->nj", coeffs, state.frame)
 

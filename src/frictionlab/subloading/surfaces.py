@@ -160,8 +160,8 @@ def friction_coefficient_on_yield(
 def yield_function(
     surface: str,
     traction: np.ndarray,
-    rotation: np.ndarray = np.zeros(2),
-    axis_factors: np.ndarray = np.ones(2),
+    rotation: np.ndarray | tuple[float, float] = (0.0, 0.0),
+    axis_factors: np.ndarray | tuple[float, float] = (1.0, 1.0),
     tear_k: float = 1.0,
 ) -> np.ndarray:
     """f(f, beta) of Eqs (48)/(67)/(82)/(95) for tractions ``(..., 3) = (f_t1, f_t2, f_n)``.
