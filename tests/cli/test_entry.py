@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import itertools
 import subprocess
 import sys
 from pathlib import Path
@@ -30,5 +31,5 @@ def test_demo_writes_a_table_with_recovery_of_static_friction(tmp_path: Path) ->
     peaks = [float(r["restart_peak"]) for r in rows]
     holds = [float(r["hold_time_s"]) for r in rows]
     assert holds == sorted(holds)
-    assert all(b > a for a, b in zip(peaks, peaks[1:], strict=False)) and max(peaks) <= 0.5
+    assert all(b > a for a, b in itertools.pairwise(peaks)) and max(peaks) <= 0.5
     assert not list(tmp_path.glob(".*.tmp*"))  # no temporary files left behind

@@ -18,7 +18,7 @@ from frictionlab.subloading import SubloadingParams, initial_state, update
 HOLD_TIMES = (10.0, 1000.0, 1e5)  # s
 
 
-def add_parser(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def add_parser(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser("demo", help="run the bundled default simulation")
     parser.add_argument("--out", type=Path, default=Path("out/demo"), help="output directory")
     parser.set_defaults(handler=run)
