@@ -351,3 +351,11 @@ def test_partial_unloading_correction_for_a_reversal_inside_one_step() -> None:
     assert one.traction[0, 0] == pytest.approx(fine.traction[-1, 0, 0], rel=1e-3)
     # without the correction the reload would start from R = 1 and reach -mu_s at once
     assert abs(one.traction[0, 0]) < 0.3
+
+
+def test_initial_ratio_of_a_rotated_closed_surface() -> None:
+    """R0 = f_n g(|beta|/M)/F_s for a virgin closed surface (spec §3.3, set B)."""
+    beta, M, fn = 0.1, 0.5, 0.2
+    params = set_b("modified_cam_clay", rotation=(0.0, beta))
+    state = fresh(params, fn=fn)
+    assert state.R[0] == pytest.approx(fn * (1.0 + (beta / M) ** 2) / 1.0, rel=1e-14)
