@@ -139,7 +139,9 @@ class Table:
         value = _coerce(value, kind, self._name(key))
         if choices is not None and value not in choices:
             options = ", ".join(repr(c) for c in choices)
-            raise InputError(f"{self._name(key)} = {value!r} is not allowed; choose one of {options}")
+            raise InputError(
+                f"{self._name(key)} = {value!r} is not allowed; choose one of {options}"
+            )
         if check is not None and not check(value):
             raise InputError(f"{self._name(key)} = {value!r} is invalid: allowed {allowed}")
         return value
@@ -184,9 +186,7 @@ class Table:
         unknown = [k for k in self._data if k not in self._used]
         if unknown:
             allowed = ", ".join(sorted(self._used)) or "none"
-            raise InputError(
-                f"unknown key {self._name(unknown[0])}; allowed keys here: {allowed}"
-            )
+            raise InputError(f"unknown key {self._name(unknown[0])}; allowed keys here: {allowed}")
 
 
 def _describe(value: Any) -> str:
