@@ -113,8 +113,9 @@ def solve_offset_nb(
     A Newton step solves the linear piece of its starting point exactly; when the step
     lands on the same piece (same compressed count) the root is found. From the right the
     iterates decrease monotonically; a step from the left overshoots to the right; a
-    start with zero slope (no spring compressed, ``k_t = 0``) jumps to ``max(gap) +
-    load/k_c``. Bisection is the fallback. Returns (c, iterations).
+    start with zero slope (no spring compressed, ``k_t = 0``) jumps to the one-spring
+    solution ``min(gap) + n load/k_c``, which is right of the root. Bisection is the
+    fallback. Returns (c, iterations).
     """
     gmax = gap[0]
     gmin = gap[0]
@@ -130,8 +131,12 @@ def solve_offset_nb(
     f, fp, count = _mean_force(gap, c, kc, kt)
     for it in range(1, _MAX_NEWTON + 1):
         if fp <= 0.0:
-            c = gmax + load / kc
+            # No spring compressed (k_t = 0): the root lies above min(gap); the
+            # one-spring solution is at or right of it (convexity).
+            c = gmin + gap.size * load / kc
             f, fp, count = _mean_force(gap, c, kc, kt)
+            if fp <= 0.0:  # the load is below the rounding of the gaps
+                return c, it
             continue
         c_new = c - (f - load) / fp
         f, fp, count_new = _mean_force(gap, c_new, kc, kt)

@@ -23,7 +23,6 @@ Contents
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -199,28 +198,42 @@ def h_rotated(
     return ca * hx_l - sa * hy_l, sa * hx_l + ca * hy_l  # Eq 4 (counter-clockwise alpha)
 
 
+def _face_weights(rise_deg: FloatArray, fall_deg: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Vectorised Eq 14 weights; (1/2, 1/2) where both angles are 0 (flat)."""
+    rise, fall = np.broadcast_arrays(rise_deg, fall_deg)
+    ok = np.isfinite(rise) & np.isfinite(fall)
+    ok &= (rise >= 0.0) & (rise < 90.0) & (fall >= 0.0) & (fall < 90.0)
+    flat = (rise == 0.0) & (fall == 0.0)
+    half = (rise == 0.0) ^ (fall == 0.0)
+    for bad, allowed in ((~ok, "0 <= angle < 90 degrees"), (half, "both faces > 0 or both 0")):
+        if np.any(bad):
+            k = int(np.flatnonzero(np.ravel(bad))[0])
+            pair = (float(np.ravel(rise)[k]), float(np.ravel(fall)[k]))
+            raise ParameterError("angles_deg", pair, allowed)
+    t1 = np.tan(np.radians(rise))
+    t2 = np.tan(np.radians(fall))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        w_rise = np.where(flat, 0.5, t2 / (t1 + t2))
+        w_fall = np.where(flat, 0.5, t1 / (t1 + t2))
+    return w_rise, w_fall
+
+
 def wedge_face_weights(rise_deg: float, fall_deg: float) -> tuple[float, float]:
     """Eq 14 weights: the horizontal shares psi/(1+psi) and 1/(1+psi) of the two faces.
 
     ``psi = tan(fall)/tan(rise)``. A flat surface (both angles 0) gives (1/2, 1/2).
     Angles in degrees, in [0, 90); exactly one zero angle is not a wedge.
     """
-    for name, v in (("rise_deg", rise_deg), ("fall_deg", fall_deg)):
-        if not (isinstance(v, int | float) and math.isfinite(v) and 0.0 <= v < 90.0):
-            raise ParameterError(name, v, "0 <= angle < 90 degrees")
-    if rise_deg == 0.0 and fall_deg == 0.0:
-        return 0.5, 0.5
-    if rise_deg == 0.0 or fall_deg == 0.0:
-        raise ParameterError(
-            "angles_deg", (rise_deg, fall_deg), "both faces > 0 (a wedge) or both 0 (flat)"
-        )
-    t1 = math.tan(math.radians(rise_deg))
-    t2 = math.tan(math.radians(fall_deg))
-    return t2 / (t1 + t2), t1 / (t1 + t2)
+    try:
+        r, f = float(rise_deg), float(fall_deg)
+    except (TypeError, ValueError):
+        raise ParameterError("angles_deg", (rise_deg, fall_deg), "two angles in degrees") from None
+    w_rise, w_fall = _face_weights(np.asarray(r), np.asarray(f))
+    return float(w_rise), float(w_fall)
 
 
 def wedge_friction(
-    mu0: float, angles_deg: Sequence[float], beta_deg: ArrayLike
+    mu0: float, angles_deg: ArrayLike, beta_deg: ArrayLike
 ) -> tuple[FloatArray, FloatArray]:
     """Eqs 15-16: (mu_x, mu_y) of two 1-D wedge (saw-tooth) profiles at sliding direction beta.
 
@@ -229,22 +242,21 @@ def wedge_friction(
     ``phi1 = phi2 = 0`` a flat lower one). Each face contributes its multiplier
     ``H(mu0, +phi_rise)`` or ``H(mu0, -phi_fall)`` with its Eq 14 weight, half from each
     family. Exact for any load (spec section 2.6) and any beta; at beta = 90 deg it is
-    the static value, also exact for wedges.
+    the static value, also exact for wedges. Vectorised: ``angles_deg`` may have shape
+    (..., 4), broadcast against ``beta_deg``.
     """
     m = _check_mu0(mu0)
-    try:
-        p1, p2, p3, p4 = (float(a) for a in angles_deg)
-    except (TypeError, ValueError):
-        raise ParameterError(
-            "angles_deg", angles_deg, "four angles (phi1, phi2, phi3, phi4)"
-        ) from None
+    angles = np.asarray(angles_deg, dtype=np.float64)
+    if angles.ndim == 0 or angles.shape[-1] != 4:
+        raise ParameterError("angles_deg", angles_deg, "four angles (phi1, phi2, phi3, phi4)")
     beta = np.radians(np.asarray(beta_deg, dtype=np.float64))
-    mu_x = np.zeros(beta.shape)
-    mu_y = np.zeros(beta.shape)
-    for rise, fall in ((p1, p2), (p3, p4)):
-        w_rise, w_fall = wedge_face_weights(rise, fall)
+    shape = np.broadcast_shapes(angles.shape[:-1], beta.shape)
+    mu_x = np.zeros(shape)
+    mu_y = np.zeros(shape)
+    for rise, fall in ((angles[..., 0], angles[..., 1]), (angles[..., 2], angles[..., 3])):
+        w_rise, w_fall = _face_weights(rise, fall)
         for weight, phi in ((w_rise, rise), (w_fall, -fall)):
-            hx, hy = h_local(m, np.full(beta.shape, math.radians(phi)), beta)
+            hx, hy = h_local(m, np.broadcast_to(np.radians(phi), shape), beta)
             mu_x += 0.5 * weight * hx  # Eq 15
             mu_y += 0.5 * weight * hy  # Eq 16
     return mu_x, mu_y

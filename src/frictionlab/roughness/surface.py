@@ -503,7 +503,7 @@ class FunctionHeightMap(HeightMap):
 def _check_function_values(
     name: str, z: FloatArray, g: FloatArray, z_shift: FloatArray, g_shift: FloatArray
 ) -> None:
-    if not (np.all(np.isfinite(z)) and np.all(np.isfinite(g))):
+    if not all(np.all(np.isfinite(a)) for a in (z, g, z_shift, g_shift)):
         raise ParameterError(name, "non-finite values", "finite heights and gradients")
     scale = max(float(np.ptp(z)), float(np.max(np.abs(z))), 1e-300)
     if np.max(np.abs(z_shift - z)) > 1e-9 * scale:
