@@ -576,24 +576,30 @@ def friction_polar(
         fractions = np.empty(path.shifts.shape[0])
         t_max = 0.0
         first_invalid: tuple[int, int, int] | None = None
+        full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
         for j, (sx, sy) in enumerate(path.shifts):
             whole = _whole_stations(sx - px, sy - py, spacing, geometry.dimension)
-            if whole is not None:
-                z2 = z2_base
-                h2x, h2y, den2 = h2_base
-                kx, ky = whole[0] % nx, whole[1] % ny
+            if whole is not None and full_whole is not None:
+                res = full_whole
             else:
-                z2, g2x, g2y = (
-                    np.ascontiguousarray(a).ravel() for a in upper.evaluate(xs - sx, ys - sy)
-                )
-                if mode == _kernels.MODE_FULL:
+                if whole is not None:
                     z2 = z2_base
-                h2x, h2y, den2 = multipliers(m0, g2x, g2y, cb, sb)
-                kx = ky = 0
-            res = sample(
-                z1, h1x, h1y, den1, z2, h2x, h2y, den2, nx, ny, kx, ky,
-                settings.k_c, settings.k_t, mode, load, c,
-            )  # fmt: skip
+                    h2x, h2y, den2 = h2_base
+                    kx, ky = whole[0] % nx, whole[1] % ny
+                else:
+                    z2, g2x, g2y = (
+                        np.ascontiguousarray(a).ravel() for a in upper.evaluate(xs - sx, ys - sy)
+                    )
+                    if mode == _kernels.MODE_FULL:
+                        z2 = z2_base
+                    h2x, h2y, den2 = multipliers(m0, g2x, g2y, cb, sb)
+                    kx = ky = 0
+                res = sample(
+                    z1, h1x, h1y, den1, z2, h2x, h2y, den2, nx, ny, kx, ky,
+                    settings.k_c, settings.k_t, mode, load, c,
+                )  # fmt: skip
+                if mode == _kernels.MODE_FULL and whole is not None:
+                    full_whole = res
             c_new, iters, fs, xs_, ys_, ft, n_comp, n_tens, n_inv, first, family = res
             if mode == _kernels.MODE_LOAD:
                 c = c_new
@@ -621,11 +627,16 @@ def friction_polar(
             for key in ("mu_x", "mu_y", "mu_apparent"):
                 out[key][k] = math.nan
             continue
-        if f_sum <= 0.0:
+        if f_sum <= 0.0:  # no compressed spring at any sample: friction is undefined
+            field_name, value = (
+                ("separation", settings.separation)
+                if mode == _kernels.MODE_SEPARATION
+                else ("load", settings.load)
+            )
             raise ParameterError(
-                "separation",
-                settings.separation,
-                f"an offset c that compresses some spring during sliding (beta = {beta:g} deg)",
+                field_name,
+                value,
+                f"a value that compresses some spring during sliding (beta = {beta:g} deg)",
             )
         out["mu_x"][k] = x_sum / (2.0 * f_sum)  # Eqs 5-9: both families, R_z = 2 sum F
         out["mu_y"][k] = y_sum / (2.0 * f_sum)
