@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import io
 import math
+import textwrap
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -132,7 +133,7 @@ def plot_family_lines(
             ax.plot(table[x], values, marker=".", label=name[len(prefix) :])
     ax.set_xlabel("beta (deg)" if x == "beta_deg" else x)
     ax.set_ylabel(ylabel)
-    ax.set_title(table.description, fontsize=8)
+    ax.set_title("\n".join(textwrap.wrap(table.description, 80)), fontsize=8)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7)
     return ax
@@ -148,9 +149,11 @@ def plot_wavelength_map(
         ax = new_figure(4.5, 4.0).add_subplot()
     fx, fy, matrix = wavelength_matrix(table, beta_deg)
     image = ax.imshow(matrix, origin="lower", cmap=imshow.pop("cmap", "magma"), **imshow)
+    middle = 0.5 * (np.nanmin(matrix) + np.nanmax(matrix))
     for i in range(fx.size):
         for j in range(fy.size):
-            ax.text(j, i, f"{matrix[i, j]:.3f}", ha="center", va="center", fontsize=6, color="w")
+            colour = "k" if matrix[i, j] > middle else "w"
+            ax.text(j, i, f"{matrix[i, j]:.3f}", ha="center", va="center", fontsize=6, color=colour)
     ax.set_xticks(range(fy.size), [f"{v:g}pi" for v in fy])
     ax.set_yticks(range(fx.size), [f"{v:g}pi" for v in fx])
     ax.set_xlabel("lambda_y")
