@@ -44,6 +44,10 @@ SAMPLE_FIELDS = (
 
 _MAX_NEWTON = 100
 
+#: Floating-point licences for the reductions (reassociation lets them vectorise; no
+#: assumption about NaN or infinity is made).
+_FAST = {"reassoc", "contract", "nsz"}
+
 
 @numba.njit(cache=True, inline="always")
 def _h_one(mu0: float, gx: float, gy: float, cb: float, sb: float) -> tuple[float, float, float]:
@@ -62,13 +66,21 @@ def _h_one(mu0: float, gx: float, gy: float, cb: float, sb: float) -> tuple[floa
 def multipliers_nb(
     mu0: float, gx: np.ndarray, gy: np.ndarray, cb: float, sb: float
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Multipliers (hx, hy) and denominators of many gradients (1-D arrays)."""
+    """Multipliers (hx, hy) and denominators of many gradients (1-D arrays).
+
+    Where the denominator is not positive (a contact violating Eq 1) the multipliers are
+    set to 0: the caller reports such contacts from ``den`` and never uses their value.
+    """
     n = gx.size
     hx = np.empty(n)
     hy = np.empty(n)
     den = np.empty(n)
     for i in range(n):
-        hx[i], hy[i], den[i] = _h_one(mu0, gx[i], gy[i], cb, sb)
+        a, b, d = _h_one(mu0, gx[i], gy[i], cb, sb)
+        if not d > 0.0:  # invalid contact (Eq 1): flagged by den, multipliers unused
+            a = 0.0
+            b = 0.0
+        hx[i], hy[i], den[i] = a, b, d
     return hx, hy, den
 
 
@@ -81,26 +93,36 @@ def multipliers_np(
     inv_t = 1.0 / np.sqrt(1.0 + a * a)
     den = inv_n - mu0 * a * inv_t
     with np.errstate(divide="ignore", invalid="ignore"):
-        big_n = 1.0 / den
+        big_n = np.where(den > 0.0, 1.0 / den, 0.0)
         hx = big_n * (gx * inv_n + mu0 * cb * inv_t)
         hy = big_n * (gy * inv_n + mu0 * sb * inv_t)
     return hx, hy, den
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, fastmath=_FAST)
 def _mean_force(gap: np.ndarray, c: float, kc: float, kt: float) -> tuple[float, float, int]:
     """Mean spring force per station at offset c, its slope in c, and the compressed count."""
     f = 0.0
     count = 0
     for i in range(gap.size):
         u = c - gap[i]
-        if u > 0.0:
-            f += kc * u
-            count += 1
-        else:
-            f += kt * u
+        f += kc * max(u, 0.0) + kt * min(u, 0.0)
+        count += u > 0.0
     n = gap.size
     return f / n, (kc * count + kt * (n - count)) / n, count
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _gap_stats(gap: np.ndarray) -> tuple[float, float, float]:
+    """(max, min, sum) of the gaps."""
+    gmax = gap[0]
+    gmin = gap[0]
+    gsum = 0.0
+    for i in range(gap.size):
+        gmax = max(gmax, gap[i])
+        gmin = min(gmin, gap[i])
+        gsum += gap[i]
+    return gmax, gmin, gsum
 
 
 @numba.njit(cache=True)
@@ -117,13 +139,7 @@ def solve_offset_nb(
     solution ``min(gap) + n load/k_c``, which is right of the root. Bisection is the
     fallback. Returns (c, iterations).
     """
-    gmax = gap[0]
-    gmin = gap[0]
-    gsum = 0.0
-    for i in range(gap.size):
-        gmax = max(gmax, gap[i])
-        gmin = min(gmin, gap[i])
-        gsum += gap[i]
+    gmax, gmin, gsum = _gap_stats(gap)
     c_full = gsum / gap.size + load / kc  # every spring compressed
     if c_full >= gmax:
         return c_full, 0
@@ -196,6 +212,60 @@ def solve_offset_np(gap: np.ndarray, kc: float, kt: float, load: float) -> tuple
     return float(c0 + (load - float(mean_force(np.array([c0]), np.array([k]))[0])) / slope), 1
 
 
+@numba.njit(cache=True, fastmath=_FAST)
+def _difference(
+    gap: np.ndarray, z2: np.ndarray, z1: np.ndarray, p0: int, q0: int, length: int
+) -> None:
+    """gap[p0 + m] = z2[q0 + m] - z1[p0 + m] for m < length (one contiguous run)."""
+    for m in range(length):
+        gap[p0 + m] = z2[q0 + m] - z1[p0 + m]
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _accumulate_row(
+    gap: np.ndarray,
+    h1x: np.ndarray,
+    h1y: np.ndarray,
+    den1: np.ndarray,
+    h2x: np.ndarray,
+    h2y: np.ndarray,
+    den2: np.ndarray,
+    p0: int,
+    q0: int,
+    length: int,
+    c: float,
+    kc: float,
+    kt: float,
+    full: bool,
+) -> tuple[float, float, float, float, int, int, int]:
+    """Sums over stations p0 .. p0+length-1 reading surface 2 at q0 .. q0+length-1."""
+    fsum = 0.0
+    xsum = 0.0
+    ysum = 0.0
+    ftot = 0.0
+    n_comp = 0
+    n_tens = 0
+    n_inv = 0
+    for m in range(length):
+        p = p0 + m
+        q = q0 + m
+        if full:
+            fc = 1.0
+            ft = 0.0
+        else:
+            u = c - gap[p]
+            fc = kc * max(u, 0.0)
+            ft = kt * min(u, 0.0)
+        ftot += fc + ft
+        fsum += fc
+        xsum += fc * (h1x[p] + h2x[q])
+        ysum += fc * (h1y[p] + h2y[q])
+        n_comp += fc > 0.0
+        n_tens += ft < 0.0
+        n_inv += (fc > 0.0) & ((den1[p] <= 0.0) | (den2[q] <= 0.0))
+    return fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv
+
+
 @numba.njit(cache=True)
 def sample_nb(
     z1: np.ndarray,
@@ -224,23 +294,25 @@ def sample_nb(
     grid, read at the station index shifted by whole stations (kx, ky), 0 <= kx < nx,
     0 <= ky < ny: station (i, k) sees entry ((i - kx) mod nx, (k - ky) mod ny). Both
     families share the station and its compression ``u = c - gap``; only compressed
-    springs carry friction (Eqs 5-9 summed per station).
+    springs carry friction (Eqs 5-9 summed per station). Each row of stations (a grid row
+    in 2-D, all stations in 1-D) is processed as two contiguous runs, before and after
+    the wrap of the shifted index, which the compiler vectorises.
     """
     n = nx * ny
+    # Rows of contiguous stations: the grid rows in 2-D, one row of nx stations in 1-D.
+    rows, cols, rshift, cshift = (1, nx, 0, kx) if ny == 1 else (nx, ny, kx, ky)
     gap = np.empty(n)
-    for i in range(nx):
-        ii = i - kx
+    for i in range(rows):
+        ii = i - rshift
         if ii < 0:
-            ii += nx
-        for k in range(ny):
-            kk = k - ky
-            if kk < 0:
-                kk += ny
-            gap[i * ny + k] = z2[ii * ny + kk] - z1[i * ny + k]
+            ii += rows
+        _difference(gap, z2, z1, i * cols, ii * cols + cols - cshift, cshift)
+        _difference(gap, z2, z1, i * cols + cshift, ii * cols, cols - cshift)
     iterations = 0
     c = c_in
     if mode == MODE_LOAD:
         c, iterations = solve_offset_nb(gap, kc, kt, load, c_in)
+    full = mode == MODE_FULL
     fsum = 0.0
     xsum = 0.0
     ysum = 0.0
@@ -248,42 +320,46 @@ def sample_nb(
     n_comp = 0
     n_tens = 0
     n_inv = 0
+    for i in range(rows):
+        ii = i - rshift
+        if ii < 0:
+            ii += rows
+        # k in [0, cshift): kk = k - cshift + cols ; k in [cshift, cols): kk = k - cshift
+        for k0, q0, length in (
+            (0, ii * cols + cols - cshift, cshift),
+            (cshift, ii * cols, cols - cshift),
+        ):
+            if length == 0:
+                continue
+            part = _accumulate_row(
+                gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc, kt, full
+            )
+            fsum += part[0]
+            xsum += part[1]
+            ysum += part[2]
+            ftot += part[3]
+            n_comp += part[4]
+            n_tens += part[5]
+            n_inv += part[6]
     first = -1
     family = 0
-    for i in range(nx):
-        ii = i - kx
-        if ii < 0:
-            ii += nx
-        for k in range(ny):
-            kk = k - ky
-            if kk < 0:
-                kk += ny
-            p = i * ny + k
-            if mode == MODE_FULL:
-                fc = 1.0
-                ft = 0.0
-            else:
-                u = c - gap[p]
-                if u > 0.0:
-                    fc = kc * u
-                    ft = 0.0
-                else:
-                    fc = 0.0
-                    ft = kt * u
-            ftot += fc + ft
-            if fc > 0.0:
-                n_comp += 1
-                q = ii * ny + kk
-                if den1[p] <= 0.0 or den2[q] <= 0.0:
-                    n_inv += 1
-                    if first < 0:
-                        first = p
-                        family = 1 if den1[p] <= 0.0 else 2
-                fsum += fc
-                xsum += fc * (h1x[p] + h2x[q])
-                ysum += fc * (h1y[p] + h2y[q])
-            elif ft < 0.0:
-                n_tens += 1
+    if n_inv > 0:  # locate the first invalid contact (rare: the computation stops)
+        for i in range(nx):
+            ii = i - kx
+            if ii < 0:
+                ii += nx
+            for k in range(ny):
+                kk = k - ky
+                if kk < 0:
+                    kk += ny
+                p = i * ny + k
+                compressed = full or c - gap[p] > 0.0
+                if compressed and (den1[p] <= 0.0 or den2[ii * ny + kk] <= 0.0):
+                    first = p
+                    family = 1 if den1[p] <= 0.0 else 2
+                    break
+            if first >= 0:
+                break
     return c, iterations, fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv, first, family
 
 

@@ -54,15 +54,18 @@ class TestLoadBalance:
 class TestSampleKernels:
     @pytest.mark.parametrize("mode", [K.MODE_FULL, K.MODE_LOAD, K.MODE_SEPARATION])
     @pytest.mark.parametrize("kt", [0.0, 0.5])
-    def test_numba_equals_numpy(self, mode, kt) -> None:
+    @pytest.mark.parametrize(
+        ("nx", "ny", "shifts"),
+        [(7, 5, ((0, 0), (3, 1), (6, 4))), (35, 1, ((0, 0), (1, 0), (34, 0), (17, 0)))],
+    )
+    def test_numba_equals_numpy(self, mode, kt, nx, ny, shifts) -> None:
         rng = np.random.default_rng(4)
-        nx, ny = 7, 5
         n = nx * ny
         z1, z2 = rng.standard_normal((2, n))
         h1x, h1y, h2x, h2y = rng.standard_normal((4, n))
         den1, den2 = rng.uniform(0.1, 1.0, (2, n))
         den2[3] = -0.1  # one invalid contact on surface 2
-        for kx, ky in ((0, 0), (3, 1), (6, 4)):
+        for kx, ky in shifts:
             args = (z1, h1x, h1y, den1, z2, h2x, h2y, den2, nx, ny, kx, ky, 1.0, kt, mode, 0.4, 0.3)
             a = K.sample_nb(*args)
             b = K.sample_np(*args)
