@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import argparse
 import time
-from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -36,7 +35,7 @@ from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import FlatProfile, WedgeProfile
-from frictionlab.roughness.lattice import FrictionPolar, friction_polar
+from frictionlab.roughness.lattice import FrictionPolar, friction_polar, merge_polars
 
 __all__ = ["add_parser", "run"]
 
@@ -107,10 +106,7 @@ def _full_circle(scenario: RoughnessScenario, polar: FrictionPolar) -> FrictionP
     more = friction_polar(
         scenario.lower, scenario.upper, scenario.mu0, extra, settings=scenario.settings
     )
-    merged: dict[str, Any] = {}
-    for name in ("beta_deg", "mu_x", "mu_y", "mu", "mu_magnitude", "mu_projection", "mu_apparent"):
-        merged[name] = np.concatenate([getattr(polar, name), getattr(more, name)])
-    return replace(polar, **merged)
+    return merge_polars(polar, more)
 
 
 def _csv_text(scenario: RoughnessScenario, polar: FrictionPolar, path: Path) -> str:

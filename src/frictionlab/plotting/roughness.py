@@ -85,13 +85,21 @@ def plot_polar(
 
 
 def plot_surface(
-    surface: Surface, *, ax: Axes | None = None, points: int = 300, title: str | None = None
+    surface: Surface,
+    *,
+    ax: Axes | None = None,
+    points: int = 300,
+    title: str | None = None,
+    length: float | None = None,
 ) -> Axes:
-    """One period of a surface: a profile line (1-D) or a height image (2-D), in micrometres."""
+    """One period of a surface: a profile line (1-D) or a height image (2-D), in micrometres.
+
+    ``length`` (m) is the x range drawn for a surface without period (flat); default 1 mm.
+    """
     if ax is None:
         ax = new_figure(5.0, 3.5).add_subplot()
     lx, ly = surface.periods
-    length_x = lx if lx is not None else 1.0
+    length_x = lx if lx is not None else (length if length is not None else 1e-3)
     if surface.ndim == 1:
         x = (np.arange(points) + 0.5) * length_x / points
         z, _, _ = surface.evaluate(x)
@@ -175,8 +183,13 @@ def scenario_figure(
     fig = new_figure(11.0, 5.0)
     grid = fig.add_gridspec(2, 2, width_ratios=(1.3, 1.0))
     plot_polar(polar, ax=fig.add_subplot(grid[:, 0], projection="polar"), requested=requested)
-    plot_surface(lower, ax=fig.add_subplot(grid[0, 1]), title=f"lower (fixed): {lower.kind}")
-    plot_surface(upper, ax=fig.add_subplot(grid[1, 1]), title=f"upper (sliding): {upper.kind}")
+    cell = polar.geometry.cell[0]
+    plot_surface(
+        lower, ax=fig.add_subplot(grid[0, 1]), title=f"lower (fixed): {lower.kind}", length=cell
+    )
+    plot_surface(
+        upper, ax=fig.add_subplot(grid[1, 1]), title=f"upper (sliding): {upper.kind}", length=cell
+    )
     if title:
         fig.suptitle(title, fontsize=10)
     return fig

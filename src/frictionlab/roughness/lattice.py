@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, fields, replace
 from typing import Any
 
 import numpy as np
@@ -53,6 +53,7 @@ __all__ = [
     "LatticeSettings",
     "friction_polar",
     "lattice_geometry",
+    "merge_polars",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -370,6 +371,36 @@ class FrictionPolar:
             time_samples=self.time_samples,
         )
         return out
+
+
+def merge_polars(first: FrictionPolar, *others: FrictionPolar) -> FrictionPolar:
+    """One polar holding the directions of several (same surfaces and settings), by beta.
+
+    Per-direction arrays are concatenated and sorted by ``beta_deg`` (stable); work
+    counters add up; invalid-direction messages are kept.
+    """
+    polars = (first, *others)
+    for p in others:
+        if p.settings != first.settings or p.mu0 != first.mu0 or p.geometry != first.geometry:
+            raise ParameterError("others", "a polar of another computation", "same settings")
+    order = np.argsort(np.concatenate([p.beta_deg for p in polars]), kind="stable")
+    merged: dict[str, Any] = {}
+    n = first.beta_deg.size
+    for f in fields(FrictionPolar):
+        value = getattr(first, f.name)
+        if isinstance(value, np.ndarray) and value.shape == (n,):
+            merged[f.name] = _ro(np.concatenate([getattr(p, f.name) for p in polars])[order])
+        elif isinstance(value, tuple) and len(value) == n and f.name != "invalid_messages":
+            values = [v for p in polars for v in getattr(p, f.name)]
+            merged[f.name] = tuple(values[i] for i in order)
+    merged["spring_evaluations"] = sum(p.spring_evaluations for p in polars)
+    merged["invalid_messages"] = tuple(m for p in polars for m in p.invalid_messages)
+    merged["success"] = all(p.success for p in polars)
+    bad = int(np.count_nonzero(~merged["valid"]))
+    merged["message"] = (
+        "ok" if bad == 0 else f"{bad} of {order.size} directions violate Eq 1's bound"
+    )
+    return replace(first, **merged)
 
 
 def _cos_sin_deg(beta_deg: float) -> tuple[float, float]:

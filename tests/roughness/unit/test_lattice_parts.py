@@ -12,7 +12,12 @@ from hypothesis import strategies as st
 from frictionlab.errors import ParameterError
 from frictionlab.roughness import _kernels as K
 from frictionlab.roughness import generators as gen
-from frictionlab.roughness.lattice import LatticeSettings, friction_polar, lattice_geometry
+from frictionlab.roughness.lattice import (
+    LatticeSettings,
+    friction_polar,
+    lattice_geometry,
+    merge_polars,
+)
 
 
 def mean_force(gap: np.ndarray, c: float, kc: float, kt: float) -> float:
@@ -166,3 +171,20 @@ class TestGeometry:
             lattice_geometry(gen.wedge(30.0, 1.0), gen.flat(), (10, 10))
         with pytest.raises(ParameterError, match="at most"):
             lattice_geometry(gen.sinusoid(1.0, [1.0, 1.0]), gen.flat(), (5000, 5000))
+
+
+def test_merge_polars_equals_one_computation() -> None:
+    w = gen.wedge((30.0, 15.0), 1.0)
+    kw = {"load": 0.01, "stations": 400, "time_samples": 20}
+    whole = friction_polar(w, gen.flat(), 0.3, [0.0, 30.0, 60.0, 90.0], **kw)
+    part_a = friction_polar(w, gen.flat(), 0.3, [60.0, 0.0], **kw)
+    part_b = friction_polar(w, gen.flat(), 0.3, [90.0, 30.0], **kw)
+    merged = merge_polars(part_a, part_b)
+    np.testing.assert_array_equal(merged.beta_deg, whole.beta_deg)
+    for name in ("mu", "mu_x", "mu_y", "contact_fraction_min", "time_samples"):
+        np.testing.assert_array_equal(getattr(merged, name), getattr(whole, name))
+    assert merged.travel_mode == whole.travel_mode
+    assert merged.spring_evaluations == whole.spring_evaluations
+    other = friction_polar(w, gen.flat(), 0.4, [45.0], **kw)
+    with pytest.raises(ParameterError, match="same settings"):
+        merge_polars(part_a, other)
