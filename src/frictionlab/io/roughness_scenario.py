@@ -45,7 +45,7 @@ Surface kinds and their keys:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -84,7 +84,6 @@ class RoughnessScenario:
     title: str = ""
     plot_full_circle: bool = True
     plot_step_deg: float = 5.0
-    sources: dict[str, Any] = field(default_factory=dict)
 
 
 def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessScenario:
@@ -167,7 +166,6 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         title=title,
         plot_full_circle=full_circle,
         plot_step_deg=step,
-        sources={"lower": dict(data["lower"]), "upper": dict(data["upper"])},
     )
 
 
