@@ -168,6 +168,8 @@ class LatticeSettings:
                 raise ParameterError("load", self.load, "'full' or a finite force per spring in N")
             elif self.k_t == 0.0 and self.load <= 0.0:
                 raise ParameterError("load", self.load, "> 0 N per spring (k_t = 0: no adhesion)")
+            elif self.load == 0.0:
+                raise ParameterError("load", self.load, "non-zero (Eq 22 is singular at L = 0)")
             else:
                 object.__setattr__(self, "load", float(self.load))
         else:
@@ -555,154 +557,210 @@ def friction_polar(
         raise ParameterError("options", sorted(options), "either settings= or keyword options")
     m0 = _check_mu0(mu0)
     betas = _check_betas(beta_deg)
+    lattice = _prepare(lower, upper, settings)
+    results = [_direction(lattice, lower, upper, m0, float(b), settings) for b in betas]
+    mu_x = np.array([r.mu_x for r in results])
+    mu_y = np.array([r.mu_y for r in results])
+    cos_b = np.array([_cos_sin_deg(float(b))[0] for b in betas])
+    sin_b = np.array([_cos_sin_deg(float(b))[1] for b in betas])
+    mu_mag = np.hypot(mu_x, mu_y)
+    mu_proj = mu_x * cos_b + mu_y * sin_b
+    messages = tuple(r.invalid for r in results if r.invalid is not None)
+    n_bad = len(messages)
+    return FrictionPolar(
+        beta_deg=_ro(betas),
+        mu_x=_ro(mu_x),
+        mu_y=_ro(mu_y),
+        mu=_ro(mu_mag if settings.mu_definition == "magnitude" else mu_proj),
+        mu_magnitude=_ro(mu_mag),
+        mu_projection=_ro(mu_proj),
+        mu_apparent=_ro(np.array([r.mu_apparent for r in results])),
+        valid=_ro(np.array([r.invalid is None for r in results])),
+        contact_fraction_min=_ro(np.array([r.contact_min for r in results])),
+        contact_fraction_mean=_ro(np.array([r.contact_mean for r in results])),
+        tensile_fraction_max=_ro(np.array([r.tensile_max for r in results])),
+        time_samples=_ro(np.array([r.samples for r in results], dtype=np.int64)),
+        solver_iterations_max=_ro(np.array([r.iterations for r in results], dtype=np.int64)),
+        travel_mode=tuple(r.travel_mode for r in results),
+        travel_m=tuple(r.travel for r in results),
+        mu0=m0,
+        settings=settings,
+        geometry=lattice.geometry,
+        spring_evaluations=sum(r.samples for r in results) * lattice.geometry.n_stations,
+        success=n_bad == 0,
+        message="ok" if n_bad == 0 else f"{n_bad} of {betas.size} directions violate Eq 1's bound",
+        invalid_messages=messages,
+    )
+
+
+@dataclass(frozen=True)
+class _Lattice:
+    """Arrays prepared once per call: stations, surface 1, surface 2 at the start phase."""
+
+    geometry: LatticeGeometry
+    xs: FloatArray
+    ys: FloatArray
+    z1: FloatArray
+    g1: tuple[FloatArray, FloatArray]
+    z2: FloatArray
+    g2: tuple[FloatArray, FloatArray]
+    nx: int
+    ny: int
+    spacing: tuple[float, float]
+    mode: int
+    load: float
+
+
+@dataclass(frozen=True)
+class _Direction:
+    """The time-averaged outcome for one sliding direction."""
+
+    mu_x: float
+    mu_y: float
+    mu_apparent: float
+    contact_min: float
+    contact_mean: float
+    tensile_max: float
+    samples: int
+    iterations: int
+    travel_mode: str
+    travel: float | None
+    invalid: str | None
+
+
+def _prepare(lower: Surface, upper: Surface, settings: LatticeSettings) -> _Lattice:
     geometry = lattice_geometry(lower, upper, settings.stations)
     xs, ys = geometry.station_coordinates()
     z1, g1x, g1y = (np.ascontiguousarray(a).ravel() for a in lower.evaluate(xs, ys))
-    n_st = geometry.n_stations
-    numba_engine = settings.engine == "numba"
-    multipliers = _kernels.multipliers_nb if numba_engine else _kernels.multipliers_np
-    sample = _kernels.sample_nb if numba_engine else _kernels.sample_np
+    # Surface 2 at the stations minus the initial phase: reused, read rolled, for every
+    # time sample whose shift is a whole number of station spacings.
+    px, py = settings.phase
+    z2, g2x, g2y = (np.ascontiguousarray(a).ravel() for a in upper.evaluate(xs - px, ys - py))
     if settings.control == "separation":
         mode = _kernels.MODE_SEPARATION
     elif settings.load == "full":
         mode = _kernels.MODE_FULL
+        z1 = np.zeros_like(z1)  # heights play no role in the full-contact limit
+        z2 = np.zeros_like(z2)
     else:
         mode = _kernels.MODE_LOAD
-    load = settings.load if isinstance(settings.load, float) else 0.0
-    c_fixed = settings.separation if settings.separation is not None else math.nan
-
-    # Surface 2 at the stations minus the initial phase: reused, rolled by whole stations,
-    # for every time sample whose shift is a whole number of station spacings.
-    px, py = settings.phase
-    z2_base, g2x_base, g2y_base = (
-        np.ascontiguousarray(a).ravel() for a in upper.evaluate(xs - px, ys - py)
-    )
-    if mode == _kernels.MODE_FULL:
-        z1 = np.zeros_like(z1)  # heights play no role in the full-contact limit
-        z2_base = np.zeros_like(z2_base)
     nx = geometry.shape[0]
     ny = geometry.shape[1] if geometry.dimension == 2 else 1
     lx, ly = geometry.cell
-    spacing = (lx / nx, (ly / ny) if ly is not None else math.inf)
-
-    nb = betas.size
-    out = {k: np.zeros(nb) for k in ("mu_x", "mu_y", "mu_apparent", "cmin", "cmean", "tmax")}
-    valid = np.ones(nb, dtype=bool)
-    samples = np.zeros(nb, dtype=np.int64)
-    iterations = np.zeros(nb, dtype=np.int64)
-    modes: list[str] = []
-    travels: list[float | None] = []
-    messages: list[str] = []
-    evaluations = 0
-    for k, beta in enumerate(betas):
-        cb, sb = _cos_sin_deg(float(beta))
-        h1x, h1y, den1 = multipliers(m0, g1x, g1y, cb, sb)
-        h2_base = multipliers(m0, g2x_base, g2y_base, cb, sb)
-        path = _sliding_path(geometry, float(beta), settings)
-        modes.append(path.mode)
-        travels.append(path.travel)
-        samples[k] = path.shifts.shape[0]
-        f_sum = x_sum = y_sum = f_tot = 0.0
-        c = c_fixed if mode == _kernels.MODE_SEPARATION else math.nan
-        fractions = np.empty(path.shifts.shape[0])
-        t_max = 0.0
-        first_invalid: tuple[int, int, int] | None = None
-        full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
-        for j, (sx, sy) in enumerate(path.shifts):
-            whole = _whole_stations(sx - px, sy - py, spacing, geometry.dimension)
-            if whole is not None and full_whole is not None:
-                res = full_whole
-            else:
-                if whole is not None:
-                    z2 = z2_base
-                    h2x, h2y, den2 = h2_base
-                    kx, ky = whole[0] % nx, whole[1] % ny
-                else:
-                    z2, g2x, g2y = (
-                        np.ascontiguousarray(a).ravel() for a in upper.evaluate(xs - sx, ys - sy)
-                    )
-                    if mode == _kernels.MODE_FULL:
-                        z2 = z2_base
-                    h2x, h2y, den2 = multipliers(m0, g2x, g2y, cb, sb)
-                    kx = ky = 0
-                res = sample(
-                    z1, h1x, h1y, den1, z2, h2x, h2y, den2, nx, ny, kx, ky,
-                    settings.k_c, settings.k_t, mode, load, c,
-                )  # fmt: skip
-                if mode == _kernels.MODE_FULL and whole is not None:
-                    full_whole = res
-            c_new, iters, fs, xs_, ys_, ft, n_comp, n_tens, n_inv, first, family = res
-            if mode == _kernels.MODE_LOAD:
-                c = c_new
-            iterations[k] = max(iterations[k], iters)
-            f_sum += fs
-            x_sum += xs_
-            y_sum += ys_
-            f_tot += ft
-            fractions[j] = n_comp / n_st
-            t_max = max(t_max, n_tens / n_st)
-            if n_inv and first_invalid is None:
-                first_invalid = (j, first, family)
-        evaluations += n_st * path.shifts.shape[0]
-        out["cmin"][k] = fractions.min()
-        out["cmean"][k] = fractions.mean()
-        out["tmax"][k] = t_max
-        if first_invalid is not None:
-            message = _invalid_message(
-                lower, upper, geometry, m0, float(beta), path.shifts, first_invalid
-            )
-            if settings.on_invalid == "raise":
-                raise ValidityError(message)
-            valid[k] = False
-            messages.append(message)
-            for key in ("mu_x", "mu_y", "mu_apparent"):
-                out[key][k] = math.nan
-            continue
-        if f_sum <= 0.0:  # no compressed spring at any sample: friction is undefined
-            field_name, value = (
-                ("separation", settings.separation)
-                if mode == _kernels.MODE_SEPARATION
-                else ("load", settings.load)
-            )
-            raise ParameterError(
-                field_name,
-                value,
-                f"a value that compresses some spring during sliding (beta = {beta:g} deg)",
-            )
-        out["mu_x"][k] = x_sum / (2.0 * f_sum)  # Eqs 5-9: both families, R_z = 2 sum F
-        out["mu_y"][k] = y_sum / (2.0 * f_sum)
-        out["mu_apparent"][k] = (
-            math.hypot(x_sum, y_sum) / (2.0 * f_tot) if f_tot != 0.0 else math.inf
-        )
-    cos_b = np.array([_cos_sin_deg(float(b))[0] for b in betas])
-    sin_b = np.array([_cos_sin_deg(float(b))[1] for b in betas])
-    mu_mag = np.hypot(out["mu_x"], out["mu_y"])
-    mu_proj = out["mu_x"] * cos_b + out["mu_y"] * sin_b
-    mu = mu_mag if settings.mu_definition == "magnitude" else mu_proj
-    n_bad = int(np.count_nonzero(~valid))
-    return FrictionPolar(
-        beta_deg=_ro(betas),
-        mu_x=_ro(out["mu_x"]),
-        mu_y=_ro(out["mu_y"]),
-        mu=_ro(mu),
-        mu_magnitude=_ro(mu_mag),
-        mu_projection=_ro(mu_proj),
-        mu_apparent=_ro(out["mu_apparent"]),
-        valid=_ro(valid),
-        contact_fraction_min=_ro(out["cmin"]),
-        contact_fraction_mean=_ro(out["cmean"]),
-        tensile_fraction_max=_ro(out["tmax"]),
-        time_samples=_ro(samples),
-        solver_iterations_max=_ro(iterations),
-        travel_mode=tuple(modes),
-        travel_m=tuple(travels),
-        mu0=m0,
-        settings=settings,
+    return _Lattice(
         geometry=geometry,
-        spring_evaluations=evaluations,
-        success=n_bad == 0,
-        message="ok" if n_bad == 0 else f"{n_bad} of {nb} directions violate Eq 1's bound",
-        invalid_messages=tuple(messages),
+        xs=xs,
+        ys=ys,
+        z1=z1,
+        g1=(g1x, g1y),
+        z2=z2,
+        g2=(g2x, g2y),
+        nx=nx,
+        ny=ny,
+        spacing=(lx / nx, (ly / ny) if ly is not None else math.inf),
+        mode=mode,
+        load=settings.load if isinstance(settings.load, float) else 0.0,
+    )
+
+
+def _direction(
+    lat: _Lattice,
+    lower: Surface,
+    upper: Surface,
+    mu0: float,
+    beta: float,
+    settings: LatticeSettings,
+) -> _Direction:
+    """Time average over the sliding path of one direction (spec sections 2.4 and 4)."""
+    numba_engine = settings.engine == "numba"
+    multipliers = _kernels.multipliers_nb if numba_engine else _kernels.multipliers_np
+    sample = _kernels.sample_nb if numba_engine else _kernels.sample_np
+    cb, sb = _cos_sin_deg(beta)
+    h1x, h1y, den1 = multipliers(mu0, lat.g1[0], lat.g1[1], cb, sb)
+    h2_start = multipliers(mu0, lat.g2[0], lat.g2[1], cb, sb)
+    path = _sliding_path(lat.geometry, beta, settings)
+    px, py = settings.phase
+    n_st = lat.geometry.n_stations
+    c = math.nan  # load control: no warm start yet
+    if lat.mode == _kernels.MODE_SEPARATION and settings.separation is not None:
+        c = settings.separation
+    f_sum = x_sum = y_sum = f_tot = 0.0
+    fractions = np.empty(path.shifts.shape[0])
+    t_max = 0.0
+    iterations = 0
+    first_invalid: tuple[int, int, int] | None = None
+    full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
+    for j, (sx, sy) in enumerate(path.shifts):
+        whole = _whole_stations(sx - px, sy - py, lat.spacing, lat.geometry.dimension)
+        if whole is not None and full_whole is not None:
+            res = full_whole
+        else:
+            if whole is not None:
+                z2, (h2x, h2y, den2) = lat.z2, h2_start
+                kx, ky = whole[0] % lat.nx, whole[1] % lat.ny
+            else:
+                z2, g2x, g2y = (
+                    np.ascontiguousarray(a).ravel()
+                    for a in upper.evaluate(lat.xs - sx, lat.ys - sy)
+                )
+                z2 = lat.z2 if lat.mode == _kernels.MODE_FULL else z2
+                h2x, h2y, den2 = multipliers(mu0, g2x, g2y, cb, sb)
+                kx = ky = 0
+            res = sample(
+                lat.z1, h1x, h1y, den1, z2, h2x, h2y, den2, lat.nx, lat.ny, kx, ky,
+                settings.k_c, settings.k_t, lat.mode, lat.load, c,
+            )  # fmt: skip
+            if lat.mode == _kernels.MODE_FULL and whole is not None:
+                full_whole = res
+        c_new, iters, fs, xs_, ys_, ft, n_comp, n_tens, n_inv, first, family = res
+        if lat.mode == _kernels.MODE_LOAD:
+            c = c_new  # warm start of the next load balance
+        iterations = max(iterations, iters)
+        f_sum += fs
+        x_sum += xs_
+        y_sum += ys_
+        f_tot += ft
+        fractions[j] = n_comp / n_st
+        t_max = max(t_max, n_tens / n_st)
+        if n_inv and first_invalid is None:
+            first_invalid = (j, first, family)
+    outcome = _Direction(
+        mu_x=math.nan,
+        mu_y=math.nan,
+        mu_apparent=math.nan,
+        contact_min=float(fractions.min()),
+        contact_mean=float(fractions.mean()),
+        tensile_max=t_max,
+        samples=int(path.shifts.shape[0]),
+        iterations=iterations,
+        travel_mode=path.mode,
+        travel=path.travel,
+        invalid=None,
+    )
+    if first_invalid is not None:
+        message = _invalid_message(
+            lower, upper, lat.geometry, mu0, beta, path.shifts, first_invalid
+        )
+        if settings.on_invalid == "raise":
+            raise ValidityError(message)
+        return replace(outcome, invalid=message)
+    if f_sum <= 0.0 or f_tot == 0.0:  # no compressed spring, or zero load: undefined
+        name, value = (
+            ("separation", settings.separation)
+            if lat.mode == _kernels.MODE_SEPARATION
+            else ("load", settings.load)
+        )
+        raise ParameterError(
+            name,
+            value,
+            f"a value that compresses some spring during sliding with a non-zero total load "
+            f"(beta = {beta:g} deg)",
+        )
+    return replace(
+        outcome,
+        mu_x=x_sum / (2.0 * f_sum),  # Eqs 5-9: both families, R_z = 2 sum F
+        mu_y=y_sum / (2.0 * f_sum),
+        mu_apparent=math.hypot(x_sum, y_sum) / (2.0 * f_tot),  # Eq 22
     )
 
 

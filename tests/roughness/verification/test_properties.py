@@ -239,5 +239,7 @@ class TestValidityAndOptions:
         sticky = friction_polar(s, s, 0.3, [0.0], load=0.5, k_t=0.5, **kw)
         assert sticky.tensile_fraction_max[0] > 0.0
         assert float(sticky.mu_apparent[0]) > float(sticky.mu_magnitude[0]) * 1.01
-        with pytest.raises(ParameterError, match="load"):
+        with pytest.raises(ParameterError, match="load"):  # every spring tensile
             friction_polar(s, s, 0.3, [90.0], load=-0.1, k_t=0.5, **kw)
+        with pytest.raises(ParameterError, match="Eq 22"):
+            friction_polar(s, s, 0.3, [0.0], load=0.0, k_t=0.5, **kw)
