@@ -228,7 +228,6 @@ class SampledProfile(Profile):
     heights: FloatArray
     size: float
     gradient: str = "fd"
-    _slopes: FloatArray = field(init=False, repr=False)
     _fields: FloatArray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -237,9 +236,7 @@ class SampledProfile(Profile):
         (slopes,) = _grid_gradient(h, (length / h.size,), self.gradient)
         object.__setattr__(self, "heights", _readonly(h))
         object.__setattr__(self, "size", length)
-        object.__setattr__(self, "_slopes", _readonly(slopes))
-        fields = np.stack([h, slopes])[:, :, None]
-        object.__setattr__(self, "_fields", _readonly(fields))
+        object.__setattr__(self, "_fields", _readonly(np.stack([h, slopes])[:, :, None]))
 
     @property
     def length(self) -> float:
@@ -247,8 +244,8 @@ class SampledProfile(Profile):
 
     @property
     def slopes(self) -> FloatArray:
-        """Slopes f' at the samples (read-only)."""
-        return self._slopes
+        """Slopes f' at the samples (read-only view)."""
+        return self._fields[1, :, 0]
 
     @property
     def grid_shape(self) -> tuple[int, ...]:
@@ -256,7 +253,7 @@ class SampledProfile(Profile):
 
     @property
     def max_slope(self) -> float:
-        return float(np.max(np.abs(self._slopes)))
+        return float(np.max(np.abs(self.slopes)))
 
     def positions(self) -> FloatArray:
         """Sample positions (m), at the pixel centres."""
@@ -275,7 +272,7 @@ class SampledProfile(Profile):
             "length_m": self.size,
             "gradient": self.gradient,
             "rms_height_m": float(np.std(self.heights)),
-            "rms_slope": float(np.sqrt(np.mean(self._slopes**2))),
+            "rms_slope": float(np.sqrt(np.mean(self.slopes**2))),
         }
 
 
