@@ -1,0 +1,107 @@
+"""The lattice-spring roughness model (ALSFM): anisotropic friction mu(beta) of rough surfaces.
+
+Two rigid rough surfaces joined by vertical springs, half fixed on each body; the upper
+surface slides along beta; each compressed spring tip obeys Coulomb's law with the local
+coefficient mu0 on the tangent plane of the surface it touches; forces are time-averaged
+over one relative period. See ``docs/roughness.md`` for the equations, every option with
+its default, and how the specification's uncertainties were resolved.
+
+Pure physics: nothing here reads files (except :func:`read_surface`, the file entry point
+of the SurfaceTopography adapter), prints or plots.
+
+Quick start::
+
+    from frictionlab.roughness import wedge, sinusoid, friction_polar
+    polar = friction_polar(wedge((30, 15), 1e-3), sinusoid(1e-4, [1e-3, 2e-3]),
+                           mu0=0.3, beta_deg=range(0, 91, 5), load="full")
+    polar.mu_over_mu0
+"""
+
+from frictionlab.roughness.closed_forms import (
+    flat_on_wedge_0deg,
+    flat_on_wedge_90deg,
+    h_global,
+    h_local,
+    h_rotated,
+    max_mu0,
+    normal_force_factor,
+    singular_angle_deg,
+    wedge_face_weights,
+    wedge_friction,
+    wedge_on_wedge_0deg,
+    wedge_on_wedge_90deg,
+)
+from frictionlab.roughness.generators import (
+    FlatProfile,
+    ProductSineMap,
+    SineProfile,
+    SmoothWedgeProfile,
+    WedgeProfile,
+    flat,
+    from_array,
+    from_function,
+    self_affine,
+    sinusoid,
+    smooth_wedge,
+    wedge,
+)
+from frictionlab.roughness.lattice import (
+    FrictionPolar,
+    LatticeGeometry,
+    LatticeSettings,
+    friction_polar,
+    lattice_geometry,
+    merge_polars,
+)
+from frictionlab.roughness.surface import (
+    FunctionHeightMap,
+    FunctionProfile,
+    HeightMap,
+    Profile,
+    SampledHeightMap,
+    SampledProfile,
+    Surface,
+)
+from frictionlab.roughness.topography import from_topography, read_surface
+
+__all__ = [
+    "FlatProfile",
+    "FrictionPolar",
+    "FunctionHeightMap",
+    "FunctionProfile",
+    "HeightMap",
+    "LatticeGeometry",
+    "LatticeSettings",
+    "ProductSineMap",
+    "Profile",
+    "SampledHeightMap",
+    "SampledProfile",
+    "SineProfile",
+    "SmoothWedgeProfile",
+    "Surface",
+    "WedgeProfile",
+    "flat",
+    "flat_on_wedge_0deg",
+    "flat_on_wedge_90deg",
+    "friction_polar",
+    "from_array",
+    "from_function",
+    "from_topography",
+    "h_global",
+    "h_local",
+    "h_rotated",
+    "lattice_geometry",
+    "max_mu0",
+    "merge_polars",
+    "normal_force_factor",
+    "read_surface",
+    "self_affine",
+    "singular_angle_deg",
+    "sinusoid",
+    "smooth_wedge",
+    "wedge",
+    "wedge_face_weights",
+    "wedge_friction",
+    "wedge_on_wedge_0deg",
+    "wedge_on_wedge_90deg",
+]

@@ -1,0 +1,509 @@
+"""Hot loops of the lattice-spring model: compiled (numba) kernels and their NumPy twins.
+
+Private module. :mod:`frictionlab.roughness.lattice` calls one time sample at a time:
+
+* :func:`multipliers_nb` / :func:`multipliers_np`: the global force multiplier
+  ``H(mu0, g, beta)`` of spec section 4 (frame-free form of Eqs 1-4) for many gradients;
+* :func:`solve_offset_nb` / :func:`solve_offset_np`: the load balance (spec section 4,
+  step 2) for the offset ``c = l0 - d``, with compressive stiffness ``k_c`` and tensile
+  stiffness ``k_t`` (``k_t = 0``: no adhesion);
+* :func:`sample_nb` / :func:`sample_np`: one time sample: spring forces, friction
+  forces of both families, validity check, sums (steps 2-5);
+* :func:`interp_periodic_nb`: bilinear periodic interpolation of sampled surfaces.
+
+Mode codes of the sample kernels: ``MODE_FULL`` (full-contact limit, every spring carries
+the same force), ``MODE_LOAD`` (mean force per spring held, ``c`` solved) and
+``MODE_SEPARATION`` (``c`` held).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+MODE_FULL = 0
+MODE_LOAD = 1
+MODE_SEPARATION = 2
+
+#: Index of each quantity in the tuple returned by the sample kernels.
+SAMPLE_FIELDS = (
+    "c",  # offset l0 - d (m)
+    "iterations",  # load-solve iterations
+    "force_compressed",  # sum of compressive spring forces over the stations (N)
+    "x",  # sum of F_c * (H1x + H2x) (N)
+    "y",  # sum of F_c * (H1y + H2y) (N)
+    "force_total",  # sum of all spring forces, tensile included (N)
+    "n_compressed",
+    "n_tensile",
+    "n_invalid",
+    "first_invalid",  # station index of the first invalid contact, -1 if none
+    "invalid_family",  # 1: upper-fixed spring on surface 1, 2: lower-fixed on surface 2
+)
+
+_MAX_NEWTON = 100
+
+#: Floating-point licences for the reductions (reassociation lets them vectorise; no
+#: assumption about NaN or infinity is made).
+_FAST = {"reassoc", "contract", "nsz"}
+
+
+@numba.njit(cache=True, inline="always")
+def _h_one(mu0: float, gx: float, gy: float, cb: float, sb: float) -> tuple[float, float, float]:
+    """H = (-F_x, -F_y) per unit F_z and the denominator n_z - mu0 t_z (spec section 4)."""
+    inv_n = 1.0 / math.sqrt(1.0 + gx * gx + gy * gy)
+    a = gx * cb + gy * sb
+    inv_t = 1.0 / math.sqrt(1.0 + a * a)
+    den = inv_n - mu0 * a * inv_t
+    big_n = 1.0 / den
+    hx = big_n * (gx * inv_n + mu0 * cb * inv_t)
+    hy = big_n * (gy * inv_n + mu0 * sb * inv_t)
+    return hx, hy, den
+
+
+@numba.njit(cache=True)
+def multipliers_nb(
+    mu0: float, gx: np.ndarray, gy: np.ndarray, cb: float, sb: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Multipliers (hx, hy) and denominators of many gradients (1-D arrays).
+
+    Where the denominator is not positive (a contact violating Eq 1) the multipliers are
+    set to 0: the caller reports such contacts from ``den`` and never uses their value.
+    """
+    n = gx.size
+    hx = np.empty(n)
+    hy = np.empty(n)
+    den = np.empty(n)
+    for i in range(n):
+        a, b, d = _h_one(mu0, gx[i], gy[i], cb, sb)
+        if not d > 0.0:  # invalid contact (Eq 1): flagged by den, multipliers unused
+            a = 0.0
+            b = 0.0
+        hx[i], hy[i], den[i] = a, b, d
+    return hx, hy, den
+
+
+def multipliers_np(
+    mu0: float, gx: np.ndarray, gy: np.ndarray, cb: float, sb: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """NumPy twin of :func:`multipliers_nb`."""
+    inv_n = 1.0 / np.sqrt(1.0 + gx * gx + gy * gy)
+    a = gx * cb + gy * sb
+    inv_t = 1.0 / np.sqrt(1.0 + a * a)
+    den = inv_n - mu0 * a * inv_t
+    with np.errstate(divide="ignore", invalid="ignore"):
+        big_n = np.where(den > 0.0, 1.0 / den, 0.0)
+        hx = big_n * (gx * inv_n + mu0 * cb * inv_t)
+        hy = big_n * (gy * inv_n + mu0 * sb * inv_t)
+    return hx, hy, den
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _mean_force(gap: np.ndarray, c: float, kc: float, kt: float) -> tuple[float, float, int]:
+    """Mean spring force per station at offset c, its slope in c, and the compressed count."""
+    f = 0.0
+    count = 0
+    for i in range(gap.size):
+        u = c - gap[i]
+        f += kc * max(u, 0.0) + kt * min(u, 0.0)
+        count += u > 0.0
+    n = gap.size
+    return f / n, (kc * count + kt * (n - count)) / n, count
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _gap_stats(gap: np.ndarray) -> tuple[float, float, float]:
+    """(max, min, sum) of the gaps."""
+    gmax = gap[0]
+    gmin = gap[0]
+    gsum = 0.0
+    for i in range(gap.size):
+        gmax = max(gmax, gap[i])
+        gmin = min(gmin, gap[i])
+        gsum += gap[i]
+    return gmax, gmin, gsum
+
+
+@numba.njit(cache=True)
+def solve_offset_nb(
+    gap: np.ndarray, kc: float, kt: float, load: float, c_start: float
+) -> tuple[float, int]:
+    """Offset c with mean(k_c max(c-g,0) + k_t min(c-g,0)) = load (spec section 4, step 2).
+
+    The mean force is piecewise linear, increasing and convex in c (``0 <= k_t <= k_c``).
+    A Newton step solves the linear piece of its starting point exactly; when the step
+    lands on the same piece (same compressed count) the root is found. From the right the
+    iterates decrease monotonically; a step from the left overshoots to the right; a
+    start with zero slope (no spring compressed, ``k_t = 0``) jumps to the one-spring
+    solution ``min(gap) + n load/k_c``, which is right of the root. Bisection is the
+    fallback. Returns (c, iterations).
+    """
+    gmax, gmin, gsum = _gap_stats(gap)
+    c_full = gsum / gap.size + load / kc  # every spring compressed
+    if c_full >= gmax:
+        return c_full, 0
+    c = c_start if math.isfinite(c_start) else c_full
+    f, fp, count = _mean_force(gap, c, kc, kt)
+    for it in range(1, _MAX_NEWTON + 1):
+        if fp <= 0.0:
+            # No spring compressed (k_t = 0): the root lies above min(gap); the
+            # one-spring solution is at or right of it (convexity).
+            c = gmin + gap.size * load / kc
+            f, fp, count = _mean_force(gap, c, kc, kt)
+            if fp <= 0.0:  # the load is below the rounding of the gaps
+                return c, it
+            continue
+        c_new = c - (f - load) / fp
+        f, fp, count_new = _mean_force(gap, c_new, kc, kt)
+        c = c_new
+        if count_new == count:
+            return c, it
+        count = count_new
+    # Fallback: bisection on a bracket of the root.
+    span = abs(load) / kc + (gmax - gmin) + 1.0e-300
+    lo = gmin - (abs(load) / kt if kt > 0.0 else 0.0) - span
+    hi = gmax + span
+    steps = 0
+    while steps < 200 and hi - lo > 4e-16 * (abs(lo) + abs(hi)):
+        steps += 1
+        mid = 0.5 * (lo + hi)
+        f, _, _ = _mean_force(gap, mid, kc, kt)
+        if f < load:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi), _MAX_NEWTON + steps
+
+
+def solve_offset_np(gap: np.ndarray, kc: float, kt: float, load: float) -> tuple[float, int]:
+    """Exact load balance by sorting (independent of the Newton solver of the numba engine).
+
+    Between consecutive sorted gaps the mean force is linear in c; prefix sums give it at
+    every breakpoint, and the root is found by interpolation in the bracketing segment.
+    """
+    g = np.sort(gap)
+    n = g.size
+    c_full = g.mean() + load / kc
+    if c_full >= g[-1]:
+        return float(c_full), 0
+    prefix = np.concatenate(([0.0], np.cumsum(g)))
+    m = np.arange(n + 1)  # springs with gap < c for c in (g[m-1], g[m]]
+    total = prefix[-1]
+
+    def mean_force(c: np.ndarray, k: np.ndarray) -> np.ndarray:
+        compressed = kc * (k * c - prefix[k])
+        tensile = kt * ((n - k) * c - (total - prefix[k]))
+        return np.asarray((compressed + tensile) / n)
+
+    # Force at each breakpoint c = g[j] (springs 0..j-1 compressed, j..n-1 not).
+    f_break = mean_force(g, m[:-1])
+    j = int(np.searchsorted(f_break, load, side="right"))  # root in (g[j-1], g[j]]
+    if j == n:
+        return float(c_full), 0
+    if j == 0:
+        if kt <= 0.0:
+            raise ValueError("a non-positive load cannot be carried with k_t = 0")
+        # All springs tensile: kt * (c - mean g) = load.
+        return float(g.mean() + load / kt), 1
+    k = j  # springs 0..j-1 compressed
+    slope = (kc * k + kt * (n - k)) / n
+    c0 = float(g[j - 1])
+    return float(c0 + (load - float(mean_force(np.array([c0]), np.array([k]))[0])) / slope), 1
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _difference(
+    gap: np.ndarray, z2: np.ndarray, z1: np.ndarray, p0: int, q0: int, length: int
+) -> None:
+    """gap[p0 + m] = z2[q0 + m] - z1[p0 + m] for m < length (one contiguous run)."""
+    for m in range(length):
+        gap[p0 + m] = z2[q0 + m] - z1[p0 + m]
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _accumulate_row(
+    gap: np.ndarray,
+    h1x: np.ndarray,
+    h1y: np.ndarray,
+    den1: np.ndarray,
+    h2x: np.ndarray,
+    h2y: np.ndarray,
+    den2: np.ndarray,
+    p0: int,
+    q0: int,
+    length: int,
+    c: float,
+    kc: float,
+    kt: float,
+    full: bool,
+) -> tuple[float, float, float, float, int, int, int]:
+    """Sums over stations p0 .. p0+length-1 reading surface 2 at q0 .. q0+length-1."""
+    fsum = 0.0
+    xsum = 0.0
+    ysum = 0.0
+    ftot = 0.0
+    n_comp = 0
+    n_tens = 0
+    n_inv = 0
+    for m in range(length):
+        p = p0 + m
+        q = q0 + m
+        if full:
+            fc = 1.0
+            ft = 0.0
+        else:
+            u = c - gap[p]
+            fc = kc * max(u, 0.0)
+            ft = kt * min(u, 0.0)
+        ftot += fc + ft
+        fsum += fc
+        xsum += fc * (h1x[p] + h2x[q])
+        ysum += fc * (h1y[p] + h2y[q])
+        n_comp += fc > 0.0
+        n_tens += ft < 0.0
+        n_inv += (fc > 0.0) & ((den1[p] <= 0.0) | (den2[q] <= 0.0))
+    return fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv
+
+
+@numba.njit(cache=True)
+def sample_nb(
+    z1: np.ndarray,
+    h1x: np.ndarray,
+    h1y: np.ndarray,
+    den1: np.ndarray,
+    z2: np.ndarray,
+    h2x: np.ndarray,
+    h2y: np.ndarray,
+    den2: np.ndarray,
+    nx: int,
+    ny: int,
+    kx: int,
+    ky: int,
+    kc: float,
+    kt: float,
+    mode: int,
+    load: float,
+    c_in: float,
+) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
+    """One time sample (spec section 4, steps 1-5) over all stations; see ``SAMPLE_FIELDS``.
+
+    Stations are the nx x ny grid, flattened row-major (1-D: ny = 1). ``z1, h1x, h1y,
+    den1``: surface 1 at the stations with its multipliers and Eq 1 denominators
+    (upper-fixed springs). ``z2, h2x, h2y, den2``: the same for surface 2 on the station
+    grid, read at the station index shifted by whole stations (kx, ky), 0 <= kx < nx,
+    0 <= ky < ny: station (i, k) sees entry ((i - kx) mod nx, (k - ky) mod ny). Both
+    families share the station and its compression ``u = c - gap``; only compressed
+    springs carry friction (Eqs 5-9 summed per station). Each row of stations (a grid row
+    in 2-D, all stations in 1-D) is processed as two contiguous runs, before and after
+    the wrap of the shifted index, which the compiler vectorises.
+    """
+    n = nx * ny
+    # Rows of contiguous stations: the grid rows in 2-D, one row of nx stations in 1-D.
+    rows, cols, rshift, cshift = (1, nx, 0, kx) if ny == 1 else (nx, ny, kx, ky)
+    gap = np.empty(n)
+    for i in range(rows):
+        ii = i - rshift
+        if ii < 0:
+            ii += rows
+        _difference(gap, z2, z1, i * cols, ii * cols + cols - cshift, cshift)
+        _difference(gap, z2, z1, i * cols + cshift, ii * cols, cols - cshift)
+    iterations = 0
+    c = c_in
+    if mode == MODE_LOAD:
+        c, iterations = solve_offset_nb(gap, kc, kt, load, c_in)
+    full = mode == MODE_FULL
+    fsum = 0.0
+    xsum = 0.0
+    ysum = 0.0
+    ftot = 0.0
+    n_comp = 0
+    n_tens = 0
+    n_inv = 0
+    for i in range(rows):
+        ii = i - rshift
+        if ii < 0:
+            ii += rows
+        # k in [0, cshift): kk = k - cshift + cols ; k in [cshift, cols): kk = k - cshift
+        for k0, q0, length in (
+            (0, ii * cols + cols - cshift, cshift),
+            (cshift, ii * cols, cols - cshift),
+        ):
+            if length == 0:
+                continue
+            part = _accumulate_row(
+                gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc, kt, full
+            )
+            fsum += part[0]
+            xsum += part[1]
+            ysum += part[2]
+            ftot += part[3]
+            n_comp += part[4]
+            n_tens += part[5]
+            n_inv += part[6]
+    first = -1
+    family = 0
+    if n_inv > 0:  # locate the first invalid contact (rare: the computation stops)
+        for i in range(nx):
+            ii = i - kx
+            if ii < 0:
+                ii += nx
+            for k in range(ny):
+                kk = k - ky
+                if kk < 0:
+                    kk += ny
+                p = i * ny + k
+                compressed = full or c - gap[p] > 0.0
+                if compressed and (den1[p] <= 0.0 or den2[ii * ny + kk] <= 0.0):
+                    first = p
+                    family = 1 if den1[p] <= 0.0 else 2
+                    break
+            if first >= 0:
+                break
+    return c, iterations, fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv, first, family
+
+
+def sample_np(
+    z1: np.ndarray,
+    h1x: np.ndarray,
+    h1y: np.ndarray,
+    den1: np.ndarray,
+    z2: np.ndarray,
+    h2x: np.ndarray,
+    h2y: np.ndarray,
+    den2: np.ndarray,
+    nx: int,
+    ny: int,
+    kx: int,
+    ky: int,
+    kc: float,
+    kt: float,
+    mode: int,
+    load: float,
+    c_in: float,
+) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
+    """NumPy twin of :func:`sample_nb` (load balance by sorting instead of Newton)."""
+
+    def shifted(a: np.ndarray) -> np.ndarray:
+        return np.roll(a.reshape(nx, ny), (kx, ky), axis=(0, 1)).ravel()
+
+    gap = shifted(z2) - z1
+    iterations = 0
+    c = c_in
+    if mode == MODE_LOAD:
+        c, iterations = solve_offset_np(gap, kc, kt, load)
+    if mode == MODE_FULL:
+        fc = np.ones(gap.size)
+        ft = np.zeros(gap.size)
+    else:
+        u = c - gap
+        fc = np.where(u > 0.0, kc * u, 0.0)
+        ft = np.where(u > 0.0, 0.0, kt * u)
+    comp = fc > 0.0
+    bad1 = den1[comp] <= 0.0
+    bad = bad1 | (shifted(den2)[comp] <= 0.0)
+    idx = np.flatnonzero(comp)
+    first = int(idx[bad][0]) if bad.any() else -1
+    family = 0 if first < 0 else (1 if bool(bad1[bad][0]) else 2)
+    f = fc[comp]
+    with np.errstate(invalid="ignore", over="ignore"):
+        x = float(np.sum(f * (h1x[comp] + shifted(h2x)[comp])))
+        y = float(np.sum(f * (h1y[comp] + shifted(h2y)[comp])))
+    return (
+        float(c),
+        iterations,
+        float(f.sum()),
+        x,
+        y,
+        float(fc.sum() + ft.sum()),
+        int(comp.sum()),
+        int(np.count_nonzero(ft < 0.0)),
+        int(bad.sum()),
+        first,
+        family,
+    )
+
+
+@numba.njit(cache=True)
+def interp_periodic_nb(
+    fields: np.ndarray,
+    dx: float,
+    dy: float,
+    xq: np.ndarray,
+    yq: np.ndarray,
+) -> np.ndarray:
+    """Bilinear periodic interpolation of ``fields`` (k, nx, ny) on the outer grid xq x yq.
+
+    Samples sit at pixel centres ``((i + 1/2) dx, (j + 1/2) dy)``; a query on a sample
+    returns it exactly. ``xq`` (m) and ``yq`` (m) are 1-D; the result is (k, xq.size,
+    yq.size). For a line scan pass ny = 1 and any ``yq`` of length 1.
+    """
+    k, nx, ny = fields.shape
+    out = np.empty((k, xq.size, yq.size))
+    ix0 = np.empty(xq.size, dtype=np.int64)
+    ix1 = np.empty(xq.size, dtype=np.int64)
+    wx = np.empty(xq.size)
+    for a in range(xq.size):
+        u = xq[a] / dx - 0.5
+        f = math.floor(u)
+        wx[a] = u - f
+        i = int(f) % nx
+        ix0[a] = i
+        ix1[a] = (i + 1) % nx
+    iy0 = np.empty(yq.size, dtype=np.int64)
+    iy1 = np.empty(yq.size, dtype=np.int64)
+    wy = np.empty(yq.size)
+    for b in range(yq.size):
+        if ny == 1:
+            iy0[b] = 0
+            iy1[b] = 0
+            wy[b] = 0.0
+        else:
+            v = yq[b] / dy - 0.5
+            f = math.floor(v)
+            wy[b] = v - f
+            j = int(f) % ny
+            iy0[b] = j
+            iy1[b] = (j + 1) % ny
+    for m in range(k):
+        for a in range(xq.size):
+            i0 = ix0[a]
+            i1 = ix1[a]
+            tx = wx[a]
+            for b in range(yq.size):
+                j0 = iy0[b]
+                j1 = iy1[b]
+                ty = wy[b]
+                out[m, a, b] = (1.0 - tx) * (
+                    (1.0 - ty) * fields[m, i0, j0] + ty * fields[m, i0, j1]
+                ) + tx * ((1.0 - ty) * fields[m, i1, j0] + ty * fields[m, i1, j1])
+    return out
+
+
+@numba.njit(cache=True)
+def interp_points_nb(
+    fields: np.ndarray, dx: float, dy: float, xq: np.ndarray, yq: np.ndarray
+) -> np.ndarray:
+    """Bilinear periodic interpolation of ``fields`` (k, nx, ny) at the points (xq, yq).
+
+    Same convention as :func:`interp_periodic_nb`; ``xq`` and ``yq`` are 1-D arrays of
+    equal length; the result is (k, xq.size).
+    """
+    k, nx, ny = fields.shape
+    out = np.empty((k, xq.size))
+    for p in range(xq.size):
+        u = xq[p] / dx - 0.5
+        f = math.floor(u)
+        tx = u - f
+        i0 = int(f) % nx
+        i1 = (i0 + 1) % nx
+        v = yq[p] / dy - 0.5
+        f = math.floor(v)
+        ty = v - f
+        j0 = int(f) % ny
+        j1 = (j0 + 1) % ny
+        for m in range(k):
+            out[m, p] = (1.0 - tx) * ((1.0 - ty) * fields[m, i0, j0] + ty * fields[m, i0, j1]) + (
+                tx * ((1.0 - ty) * fields[m, i1, j0] + ty * fields[m, i1, j1])
+            )
+    return out

@@ -1,0 +1,327 @@
+"""The paper's figure families as tables (spec section 5; Figs 6a, 6b, 7 and 8).
+
+* :func:`wedge_cases` (Fig 6a, scenario T2): mu/mu0 vs beta of the six wedge cases A-F;
+* :func:`generic_cases` (Fig 6b): the same six cases for smooth ("generic") 1-D roughness
+  with the same mean face slopes (:class:`~frictionlab.roughness.generators.SmoothWedgeProfile`);
+* :func:`surfaces_2d_vs_beta` (Fig 7): identical 2-D product sinusoids, symmetric and
+  asymmetric wavelengths, vs beta;
+* :func:`wavelength_map` (Fig 8, scenario T4): the 25 combinations lambda_x, lambda_y in
+  {1, 1.5, 2, 2.5, 3} pi at beta = 0, 45, 90 degrees.
+
+Geometry the paper does not give is the specification's choice (spec section 8.5): the
+wedge angles 30/15 and 20/10 degrees, amplitude A = 1 (m) for the 2-D surfaces, and the
+half-cosine faces for the generic profile (this module's choice: the paper states only
+mean slopes). Every family returns a :class:`FamilyTable` of read-only columns. Lengths
+are in m (the results depend only on slopes in full contact).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from types import MappingProxyType
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from frictionlab.errors import ParameterError
+from frictionlab.roughness.closed_forms import wedge_friction
+from frictionlab.roughness.generators import flat, sinusoid, smooth_wedge, wedge
+from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+from frictionlab.roughness.surface import Profile
+
+__all__ = [
+    "WEDGE_CASES",
+    "FamilyTable",
+    "case_angles",
+    "generic_cases",
+    "surfaces_2d_vs_beta",
+    "wavelength_map",
+    "wavelength_matrix",
+    "wedge_cases",
+]
+
+FloatArray = NDArray[np.float64]
+
+#: The six configuration types of Fig 6 (spec scenario T2) as (phi1, phi2, phi3, phi4)
+#: built from a steep angle "S" and a shallow angle "s" (0: flat face pair).
+WEDGE_CASES: Mapping[str, tuple[str, str, str, str]] = MappingProxyType(
+    {
+        "A": ("S", "S", "0", "0"),  # flat on symmetric
+        "B": ("S", "S", "S", "S"),  # symmetric on symmetric
+        "C": ("S", "s", "0", "0"),  # flat on asymmetric, first slope steeper
+        "D": ("s", "S", "0", "0"),  # flat on asymmetric, first slope shallower
+        "E": ("S", "s", "S", "s"),  # rough/rough, phi1 = phi3 > phi2 = phi4
+        "F": ("s", "S", "s", "S"),  # rough/rough, phi1 = phi3 < phi2 = phi4
+    }
+)
+
+_DEFAULT_BETAS = tuple(float(b) for b in range(0, 91, 5))
+
+
+@dataclass(frozen=True)
+class FamilyTable:
+    """A named table of equal-length columns with units (``"1"``: dimensionless)."""
+
+    name: str
+    description: str
+    columns: Mapping[str, FloatArray]
+    units: Mapping[str, str]
+
+    def __post_init__(self) -> None:
+        frozen = {}
+        for key, value in self.columns.items():
+            arr = np.array(value, dtype=np.float64, copy=True)
+            arr.setflags(write=False)
+            frozen[key] = arr
+        object.__setattr__(self, "columns", MappingProxyType(frozen))
+        object.__setattr__(self, "units", MappingProxyType(dict(self.units)))
+
+    def __getitem__(self, key: str) -> FloatArray:
+        return self.columns[key]
+
+
+def case_angles(case: str, angles_deg: Sequence[float]) -> tuple[float, float, float, float]:
+    """(phi1, phi2, phi3, phi4) in degrees of case A-F for (steep, shallow) angles."""
+    if case not in WEDGE_CASES:
+        raise ParameterError("case", case, f"one of {sorted(WEDGE_CASES)}")
+    steep, shallow = _angle_pair(angles_deg)
+    table = {"S": steep, "s": shallow, "0": 0.0}
+    a, b, c, d = (table[k] for k in WEDGE_CASES[case])
+    return a, b, c, d
+
+
+def _angle_pair(angles_deg: Sequence[float]) -> tuple[float, float]:
+    try:
+        steep, shallow = (float(a) for a in angles_deg)
+    except (TypeError, ValueError):
+        raise ParameterError("angles_deg", angles_deg, "(steep, shallow) in degrees") from None
+    if not (0.0 < shallow < steep < 90.0):
+        raise ParameterError("angles_deg", angles_deg, "0 < shallow < steep < 90 degrees")
+    return steep, shallow
+
+
+def _betas(beta_deg: ArrayLike) -> FloatArray:
+    b = np.array(beta_deg, dtype=np.float64, ndmin=1)
+    if b.ndim != 1 or b.size == 0 or not np.all(np.isfinite(b)):
+        raise ParameterError("beta_deg", beta_deg, "a non-empty 1-D array of finite degrees")
+    return b
+
+
+def _pair(case: str, angles: tuple[float, ...], smooth: bool) -> tuple[Profile, Profile]:
+    make = smooth_wedge if smooth else wedge
+    lower = make((angles[0], angles[1]), 1.0)
+    upper = flat() if angles[2] == 0.0 else make((angles[2], angles[3]), 1.0)
+    return lower, upper
+
+
+def _six_cases(
+    name: str,
+    description: str,
+    mu0: float,
+    angles_deg: Sequence[float],
+    beta_deg: ArrayLike,
+    compute: str,
+    settings: LatticeSettings | None,
+) -> FamilyTable:
+    betas = _betas(beta_deg)
+    columns: dict[str, FloatArray] = {"beta_deg": betas}
+    units = {"beta_deg": "deg"}
+    for case in WEDGE_CASES:
+        angles = case_angles(case, angles_deg)
+        if compute == "closed_form":
+            mu_x, mu_y = wedge_friction(mu0, angles, betas)  # Eqs 15-16
+            definition = settings.mu_definition if settings is not None else "magnitude"
+            if definition == "magnitude":
+                mu = np.hypot(mu_x, mu_y)
+            else:
+                rad = np.radians(betas)
+                mu = mu_x * np.cos(rad) + mu_y * np.sin(rad)
+        else:
+            lower, upper = _pair(case, angles, smooth=compute == "generic")
+            polar = friction_polar(lower, upper, mu0, betas, settings=settings)
+            mu_x, mu_y, mu = polar.mu_x, polar.mu_y, polar.mu
+        columns[f"mu_over_mu0_{case}"] = mu / mu0
+        columns[f"mu_x_over_mu0_{case}"] = mu_x / mu0
+        columns[f"mu_y_over_mu0_{case}"] = mu_y / mu0
+    return FamilyTable(name, description, columns, units)
+
+
+def _check_mu0(mu0: float) -> float:
+    if not (isinstance(mu0, int | float) and math.isfinite(mu0) and mu0 > 0.0):
+        raise ParameterError("mu0", mu0, "a finite local coefficient > 0")
+    return float(mu0)
+
+
+def wedge_cases(
+    mu0: float = 0.3,
+    angles_deg: Sequence[float] = (30.0, 15.0),
+    beta_deg: ArrayLike = _DEFAULT_BETAS,
+    *,
+    method: str = "closed_form",
+    settings: LatticeSettings | None = None,
+) -> FamilyTable:
+    """Fig 6a / scenario T2: mu/mu0, mu_x/mu0, mu_y/mu0 vs beta for the six wedge cases A-F.
+
+    ``angles_deg = (steep, shallow)`` in degrees; the case definitions are
+    :data:`WEDGE_CASES`. ``method="closed_form"`` (Eqs 15-16, exact) or ``"lattice"``
+    (the discrete lattice with ``settings``; default: full contact, default resolution).
+    Columns: ``beta_deg`` and ``mu_over_mu0_<case>``, ``mu_x_over_mu0_<case>``,
+    ``mu_y_over_mu0_<case>`` for each case.
+    """
+    m = _check_mu0(mu0)
+    if method not in ("closed_form", "lattice"):
+        raise ParameterError("method", method, "'closed_form' or 'lattice'")
+    steep, shallow = _angle_pair(angles_deg)
+    return _six_cases(
+        "wedge_cases",
+        f"Six wedge cases (Fig 6a), steep {steep:g} deg, shallow {shallow:g} deg, mu0 = {m:g}, "
+        f"{'Eqs 15-16' if method == 'closed_form' else 'discrete lattice'}",
+        m,
+        angles_deg,
+        beta_deg,
+        method,
+        settings,
+    )
+
+
+def generic_cases(
+    mu0: float = 0.3,
+    angles_deg: Sequence[float] = (30.0, 15.0),
+    beta_deg: ArrayLike = _DEFAULT_BETAS,
+    *,
+    settings: LatticeSettings | None = None,
+) -> FamilyTable:
+    """Fig 6b: the six cases A-F for smooth (half-cosine) faces with the wedges' mean slopes.
+
+    Computed with the lattice (``settings``; default: full contact, 2000 stations, 400
+    time samples). Columns as in :func:`wedge_cases`.
+    """
+    m = _check_mu0(mu0)
+    steep, shallow = _angle_pair(angles_deg)
+    return _six_cases(
+        "generic_cases",
+        f"Six generic 1-D cases (Fig 6b): half-cosine faces with mean slopes of {steep:g}/"
+        f"{shallow:g} deg wedges, mu0 = {m:g}, discrete lattice",
+        m,
+        angles_deg,
+        beta_deg,
+        "generic",
+        settings,
+    )
+
+
+def _label(wavelengths: tuple[float, float]) -> str:
+    return "l{:g}pi_{:g}pi".format(*(w / math.pi for w in wavelengths))
+
+
+def surfaces_2d_vs_beta(
+    mu0: float = 0.3,
+    beta_deg: ArrayLike = _DEFAULT_BETAS,
+    *,
+    wavelengths: Sequence[tuple[float, float]] = (
+        (2.0 * math.pi, 2.0 * math.pi),
+        (2.0 * math.pi, 3.0 * math.pi),
+        (3.0 * math.pi, 2.0 * math.pi),
+    ),
+    amplitude: float = 1.0,
+    settings: LatticeSettings | None = None,
+) -> FamilyTable:
+    """Fig 7: mu/mu0 vs beta of identical surfaces A sin(2 pi x/lx) sin(2 pi y/ly), in phase.
+
+    The first pair of ``wavelengths`` (m) defaults to the symmetric (2 pi, 2 pi) surface,
+    the others to the asymmetric (2 pi, 3 pi) and (3 pi, 2 pi). ``settings`` default: full
+    contact, 64 x 64 stations per period, 64 time samples (ergodic or return travel).
+    Columns: ``beta_deg`` and, per surface, ``mu_over_mu0_<label>``, ``mu_x_over_mu0_<label>``,
+    ``mu_y_over_mu0_<label>`` with labels like ``l2pi_3pi``.
+    """
+    m = _check_mu0(mu0)
+    betas = _betas(beta_deg)
+    settings = settings or LatticeSettings(load="full", time_samples=64)
+    columns: dict[str, FloatArray] = {"beta_deg": betas}
+    for pair in wavelengths:
+        surface = sinusoid(amplitude, pair)
+        polar = friction_polar(surface, surface, m, betas, settings=settings)
+        label = _label((float(pair[0]), float(pair[1])))
+        columns[f"mu_over_mu0_{label}"] = polar.mu / m
+        columns[f"mu_x_over_mu0_{label}"] = polar.mu_x / m
+        columns[f"mu_y_over_mu0_{label}"] = polar.mu_y / m
+    return FamilyTable(
+        "surfaces_2d_vs_beta",
+        f"Identical 2-D product sinusoids (Fig 7), A = {amplitude:g} m, mu0 = {m:g}",
+        columns,
+        {"beta_deg": "deg"},
+    )
+
+
+def wavelength_map(
+    mu0: float = 0.3,
+    factors: Sequence[float] = (1.0, 1.5, 2.0, 2.5, 3.0),
+    beta_deg: Sequence[float] = (0.0, 45.0, 90.0),
+    *,
+    amplitude: float = 1.0,
+    settings: LatticeSettings | None = None,
+) -> FamilyTable:
+    """Fig 8 / scenario T4: mu/mu0 of identical surfaces for lambda_x, lambda_y = factor * pi.
+
+    A long table with one row per (beta, lambda_x, lambda_y): columns ``beta_deg``,
+    ``lambda_x_over_pi``, ``lambda_y_over_pi``, ``mu_over_mu0``, ``mu_x_over_mu0``,
+    ``mu_y_over_mu0``. :func:`wavelength_matrix` pivots one beta to the 5 x 5 matrix (rows
+    lambda_x, columns lambda_y). ``settings`` default: full contact, 64 x 64 stations
+    per period, 64 time samples.
+    """
+    m = _check_mu0(mu0)
+    betas = _betas(beta_deg)
+    facs = _betas(factors)
+    if np.any(facs <= 0.0):
+        raise ParameterError("factors", factors, "positive multiples of pi")
+    settings = settings or LatticeSettings(load="full", time_samples=64)
+    rows: dict[str, list[float]] = {
+        k: []
+        for k in (
+            "beta_deg",
+            "lambda_x_over_pi",
+            "lambda_y_over_pi",
+            "mu_over_mu0",
+            "mu_x_over_mu0",
+            "mu_y_over_mu0",
+        )
+    }
+    results = {}
+    for fx in facs:
+        for fy in facs:
+            surface = sinusoid(amplitude, (fx * math.pi, fy * math.pi))
+            results[(fx, fy)] = friction_polar(surface, surface, m, betas, settings=settings)
+    for k, beta in enumerate(betas):
+        for fx in facs:
+            for fy in facs:
+                polar = results[(fx, fy)]
+                rows["beta_deg"].append(float(beta))
+                rows["lambda_x_over_pi"].append(float(fx))
+                rows["lambda_y_over_pi"].append(float(fy))
+                rows["mu_over_mu0"].append(float(polar.mu[k]) / m)
+                rows["mu_x_over_mu0"].append(float(polar.mu_x[k]) / m)
+                rows["mu_y_over_mu0"].append(float(polar.mu_y[k]) / m)
+    return FamilyTable(
+        "wavelength_map",
+        f"Wavelength map (Fig 8): identical A sin sin surfaces, A = {amplitude:g} m, mu0 = {m:g}",
+        {k: np.array(v) for k, v in rows.items()},
+        {"beta_deg": "deg"},
+    )
+
+
+def wavelength_matrix(
+    table: FamilyTable, beta_deg: float, column: str = "mu_over_mu0"
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Pivot a :func:`wavelength_map` table: (lambda_x/pi, lambda_y/pi, matrix[ix, iy])."""
+    sel = table["beta_deg"] == beta_deg
+    if not np.any(sel):
+        raise ParameterError("beta_deg", beta_deg, f"one of {sorted(set(table['beta_deg']))}")
+    fx = np.unique(table["lambda_x_over_pi"][sel])
+    fy = np.unique(table["lambda_y_over_pi"][sel])
+    matrix = np.full((fx.size, fy.size), np.nan)
+    ix = np.searchsorted(fx, table["lambda_x_over_pi"][sel])
+    iy = np.searchsorted(fy, table["lambda_y_over_pi"][sel])
+    matrix[ix, iy] = table[column][sel]
+    return fx, fy, matrix

@@ -1,0 +1,822 @@
+"""The lattice-spring friction model (ALSFM): mu_x, mu_y and mu(beta) of two rough surfaces.
+
+Reference algorithm of spec section 4, for any pair of surfaces (profiles and height maps):
+
+* **Lattice.** Spring stations on a regular grid over one common period cell of the two
+  surfaces, at the cell centres ``((i + 1/2) dx, (k + 1/2) dy)``. Two families share the
+  stations (spec section 2.1): upper-fixed springs slide on surface 1 (lower, fixed),
+  lower-fixed springs slide on surface 2 (upper, moving along beta).
+* **Time samples.** The upper surface is shifted by ``s_j = s_0 + (j/n) D (cos b, sin b)``
+  over one relative period D along beta (section 2.4), starting in phase (``s_0 = 0``).
+* **Per sample.** Gap ``g = f2(P - s) - f1(P)``; load balance for ``c = l0 - d``
+  (bisection-free exact Newton on the piecewise-linear spring law with k_c and k_t);
+  compression ``u = c - g``; compressed springs carry friction with the multipliers
+  ``H(mu0, grad f1(P), beta)`` and ``H(mu0, grad f2(P - s), beta)`` (frame-free Eqs 1-4);
+  sums Eqs 5-9.
+* **Coefficients.** ``mu_x = <sum X>/<R_z>``, ``mu_y = <sum Y>/<R_z>`` (section 3.2);
+  ``mu = sqrt(mu_x^2 + mu_y^2)`` ("magnitude", default) or ``mu_x cos b + mu_y sin b``
+  ("projection", the dissipative coefficient), option ``mu_definition`` (section 8.2).
+
+Options (section 8), all fields of :class:`LatticeSettings` with defaults: ``load``
+(``"full"``: the full-contact limit where every spring carries the same force; or the mean
+normal force per spring, N), ``control`` (``"load"``: L held and c solved each sample;
+``"separation"``: c held), ``k_c`` = 1 N/m, ``k_t`` = 0 (tensile springs: they carry load,
+never friction), ``stations`` (2000 per shortest period in 1-D, 64 x 64 per shortest
+periods in 2-D; sampled surfaces: their own grid), ``time_samples`` = 400 per relative
+period, ``travel`` (``"auto"``: exact return when the direction is commensurate, else
+the ergodic average over all relative shifts), ``phase`` = in phase, ``on_invalid`` =
+``"raise"`` (a :class:`~frictionlab.errors.ValidityError` when a compressed contact
+violates Eq 1's bound) or ``"mask"``; ``engine`` = ``"numba"`` or ``"numpy"``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import asdict, dataclass, field, fields, replace
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from frictionlab.errors import ParameterError, ValidityError
+from frictionlab.roughness import _kernels
+from frictionlab.roughness.closed_forms import max_mu0
+from frictionlab.roughness.surface import HeightMap, Surface
+
+__all__ = [
+    "MU_DEFINITIONS",
+    "STATIONS_PER_PERIOD_1D",
+    "STATIONS_PER_PERIOD_2D",
+    "FrictionPolar",
+    "LatticeGeometry",
+    "LatticeSettings",
+    "friction_polar",
+    "lattice_geometry",
+    "merge_polars",
+]
+
+FloatArray = NDArray[np.float64]
+
+#: Default spring stations per shortest surface period (1-D profiles), spec section 8.4.
+STATIONS_PER_PERIOD_1D = 2000
+#: Default spring stations per shortest surface period and axis (2-D height maps).
+STATIONS_PER_PERIOD_2D = 64
+#: Largest number of stations in one lattice.
+MAX_STATIONS = 1 << 22
+#: Largest integer ratio accepted between two periods of a common cell.
+MAX_PERIOD_RATIO = 64
+
+MU_DEFINITIONS = ("magnitude", "projection")
+CONTROLS = ("load", "separation")
+TRAVEL_MODES = ("auto", "return", "ergodic")
+ENGINES = ("numba", "numpy")
+ON_INVALID = ("raise", "mask")
+
+
+def _is_int(value: Any) -> bool:
+    return isinstance(value, int | np.integer) and not isinstance(value, bool)
+
+
+def _finite(value: Any) -> bool:
+    return (
+        isinstance(value, int | float | np.floating)
+        and not isinstance(value, bool)
+        and (math.isfinite(float(value)))
+    )
+
+
+@dataclass(frozen=True)
+class LatticeSettings:
+    """Options of the lattice computation (spec sections 2.4, 4 and 8), validated.
+
+    Attributes
+    ----------
+    load:
+        ``"full"`` (default): the full-contact limit, every spring carries the same force
+        (the load-independent value of wedges and height-uncorrelated profiles, section
+        2.6). A number: the mean normal force per spring (N), held constant while sliding
+        (``control="load"``); > 0 unless ``k_t`` > 0.
+    control:
+        ``"load"`` (default, L held, c solved per sample) or ``"separation"`` (c held).
+    separation:
+        ``c = l0 - d`` (m) for ``control="separation"``; the compression is ``c - gap``.
+    k_c, k_t:
+        Compressive and tensile spring stiffness (N/m); ``0 <= k_t <= k_c``. Tensile springs
+        carry load but no friction (spec section 3.5).
+    stations:
+        Stations per common period cell: an int (1-D; in 2-D the same count on both axes)
+        or (nx, ny). ``None``: 2000 per shortest period (1-D), 64 per shortest period and
+        axis (2-D), or the sample grid of sampled surfaces, whichever is finer.
+    time_samples:
+        Samples per relative period along beta (a return path crossing the cell m times
+        along x and n times along y gets ``time_samples * max(|m|, |n|)``). For the
+        ergodic average: about ``time_samples`` relative shifts on a grid of
+        ``ceil(sqrt(time_samples))`` per axis, raised to a divisor of the station count
+        within a factor 2 when one exists. Shifts by whole station spacings reuse the
+        upper surface evaluated once (choose counts that divide the stations for speed).
+    travel:
+        ``"auto"`` (default): ``"return"`` where beta is commensurate with the cell within
+        ``max_return_periods``, else ``"ergodic"``. ``"return"``: one exact relative period
+        (1-D: the period along x; error if none). ``"ergodic"``: the average over all
+        relative shifts in the cell (the limit of an infinitely long incommensurate path).
+        A number: the travel distance (m) of a straight path sampled ``time_samples``
+        times.
+    max_return_periods:
+        Largest m, n of a return vector (m Lx, n Ly) searched in 2-D.
+    phase:
+        Initial offset (x, y) (m) of the upper surface; (0, 0) is "in phase".
+    mu_definition:
+        ``"magnitude"`` (default) or ``"projection"`` (section 8.2).
+    on_invalid:
+        ``"raise"`` (default): a ValidityError when a compressed contact violates Eq 1's
+        bound; ``"mask"``: that direction gets ``valid = False`` and NaN coefficients.
+    engine:
+        ``"numba"`` (default, compiled kernels) or ``"numpy"`` (reference twin).
+    """
+
+    load: float | str = "full"
+    control: str = "load"
+    separation: float | None = None
+    k_c: float = 1.0
+    k_t: float = 0.0
+    stations: int | tuple[int, int] | None = None
+    time_samples: int = 400
+    travel: str | float = "auto"
+    max_return_periods: int = 8
+    phase: tuple[float, float] = (0.0, 0.0)
+    mu_definition: str = "magnitude"
+    on_invalid: str = "raise"
+    engine: str = "numba"
+
+    def __post_init__(self) -> None:
+        if self.control not in CONTROLS:
+            raise ParameterError("control", self.control, f"one of {CONTROLS}")
+        if not (_finite(self.k_c) and self.k_c > 0.0):
+            raise ParameterError("k_c", self.k_c, "a positive stiffness in N/m")
+        if not (_finite(self.k_t) and 0.0 <= self.k_t <= self.k_c):
+            raise ParameterError("k_t", self.k_t, f"0 <= k_t <= k_c = {self.k_c}")
+        object.__setattr__(self, "k_c", float(self.k_c))
+        object.__setattr__(self, "k_t", float(self.k_t))
+        if self.control == "load":
+            if self.separation is not None:
+                raise ParameterError("separation", self.separation, "None with control='load'")
+            if isinstance(self.load, str):
+                if self.load != "full":
+                    raise ParameterError("load", self.load, "'full' or a force per spring in N")
+            elif not _finite(self.load):
+                raise ParameterError("load", self.load, "'full' or a finite force per spring in N")
+            elif self.k_t == 0.0 and self.load <= 0.0:
+                raise ParameterError("load", self.load, "> 0 N per spring (k_t = 0: no adhesion)")
+            elif self.load == 0.0:
+                raise ParameterError("load", self.load, "non-zero (Eq 22 is singular at L = 0)")
+            else:
+                object.__setattr__(self, "load", float(self.load))
+        else:
+            if self.load != "full":
+                raise ParameterError("load", self.load, "left at 'full' with control='separation'")
+            if not _finite(self.separation):
+                raise ParameterError("separation", self.separation, "a finite offset c in m")
+            object.__setattr__(self, "separation", float(self.separation))  # type: ignore[arg-type]
+        if self.stations is not None:
+            values: Any = (self.stations,) if _is_int(self.stations) else self.stations
+            if (
+                not isinstance(values, tuple | list)
+                or len(values) not in (1, 2)
+                or not all(_is_int(v) and int(v) >= 1 for v in values)
+            ):
+                raise ParameterError("stations", self.stations, "an integer >= 1 or (nx, ny)")
+            object.__setattr__(
+                self,
+                "stations",
+                int(values[0]) if len(values) == 1 else (int(values[0]), int(values[1])),
+            )
+        if not (_is_int(self.time_samples) and self.time_samples >= 1):
+            raise ParameterError("time_samples", self.time_samples, "an integer >= 1")
+        if isinstance(self.travel, str):
+            if self.travel not in TRAVEL_MODES:
+                raise ParameterError("travel", self.travel, f"one of {TRAVEL_MODES} or a length")
+        elif not (_finite(self.travel) and self.travel > 0.0):
+            raise ParameterError("travel", self.travel, f"one of {TRAVEL_MODES} or a length > 0 m")
+        if not (_is_int(self.max_return_periods) and self.max_return_periods >= 1):
+            raise ParameterError("max_return_periods", self.max_return_periods, "an integer >= 1")
+        try:
+            px, py = self.phase
+        except (TypeError, ValueError):
+            raise ParameterError("phase", self.phase, "two offsets (x, y) in m") from None
+        if not (_finite(px) and _finite(py)):
+            raise ParameterError("phase", self.phase, "two finite offsets (x, y) in m")
+        object.__setattr__(self, "phase", (float(px), float(py)))
+        if self.mu_definition not in MU_DEFINITIONS:
+            raise ParameterError("mu_definition", self.mu_definition, f"one of {MU_DEFINITIONS}")
+        if self.on_invalid not in ON_INVALID:
+            raise ParameterError("on_invalid", self.on_invalid, f"one of {ON_INVALID}")
+        if self.engine not in ENGINES:
+            raise ParameterError("engine", self.engine, f"one of {ENGINES}")
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary of the settings."""
+        out = asdict(self)
+        out["phase"] = list(self.phase)
+        if isinstance(self.stations, tuple):
+            out["stations"] = list(self.stations)
+        return out
+
+
+@dataclass(frozen=True)
+class LatticeGeometry:
+    """The common period cell and the station grid of a surface pair.
+
+    ``dimension`` is 1 when both surfaces are profiles (y plays no role), else 2. ``cell``
+    is (Lx, Ly) (m), Ly = None in 1-D; ``shape`` the station counts per axis.
+    """
+
+    dimension: int
+    cell: tuple[float, float | None]
+    shape: tuple[int, ...]
+
+    @property
+    def n_stations(self) -> int:
+        return int(np.prod(self.shape))
+
+    def station_coordinates(self) -> tuple[FloatArray, FloatArray]:
+        """Station x (column) and y (row) coordinates (m), broadcastable to ``shape``.
+
+        1-D: x has shape (n,), y shape (1,) (zeros). 2-D: x (nx, 1), y (1, ny).
+        """
+        lx, ly = self.cell
+        x = np.asarray((np.arange(self.shape[0]) + 0.5) * (lx / self.shape[0]), dtype=np.float64)
+        if self.dimension == 1:
+            return x, np.zeros(1)
+        assert ly is not None
+        y = np.asarray((np.arange(self.shape[1]) + 0.5) * (ly / self.shape[1]), dtype=np.float64)
+        return x[:, None], y[None, :]
+
+
+def _common_period(values: Sequence[float], axis: str) -> float:
+    """Least common multiple of periods (m), accepting integer ratios p/q up to 64."""
+    result = values[0]
+    for v in values[1:]:
+        ratio = v / result  # result * p == v * q with p = q * ratio
+        for q in range(1, MAX_PERIOD_RATIO + 1):
+            p = round(q * ratio)
+            if 1 <= p <= MAX_PERIOD_RATIO and abs(p - q * ratio) <= 1e-9 * p:
+                result = result * p
+                break
+        else:
+            raise ParameterError(
+                f"periods along {axis}",
+                [result, v],
+                f"commensurate periods (an integer ratio p/q with p, q <= {MAX_PERIOD_RATIO})",
+            )
+    return result
+
+
+def lattice_geometry(
+    lower: Surface, upper: Surface, stations: int | tuple[int, int] | None = None
+) -> LatticeGeometry:
+    """The common period cell of two surfaces and the station grid (see LatticeSettings)."""
+    for name, s in (("lower", lower), ("upper", upper)):
+        if not isinstance(s, Surface):
+            raise ParameterError(name, type(s).__name__, "a Profile or HeightMap surface")
+    dimension = 2 if isinstance(lower, HeightMap) or isinstance(upper, HeightMap) else 1
+    xs = [s.periods[0] for s in (lower, upper) if s.periods[0] is not None]
+    ys = [s.periods[1] for s in (lower, upper) if s.periods[1] is not None]
+    if dimension == 1 and not xs:  # two flat surfaces: any cell, one station suffices
+        return LatticeGeometry(1, (1.0, None), (1,))
+    lx = _common_period([float(v) for v in xs], "x")
+    ly = _common_period([float(v) for v in ys], "y") if dimension == 2 else None
+    per_period = STATIONS_PER_PERIOD_1D if dimension == 1 else STATIONS_PER_PERIOD_2D
+    if stations is None:
+        counts = []
+        for axis, length in enumerate((lx, ly)[:dimension]):
+            best = 1
+            for s in (lower, upper):
+                period = s.periods[axis]
+                if period is None:
+                    continue
+                assert length is not None
+                grid = s.grid_shape
+                per = grid[axis] if grid is not None else per_period
+                best = max(best, round(per * length / period))
+            counts.append(best)
+        shape = tuple(counts)
+    elif isinstance(stations, int):
+        shape = (stations,) * dimension
+    else:
+        if dimension == 1:
+            raise ParameterError("stations", stations, "one integer for two 1-D profiles")
+        shape = (int(stations[0]), int(stations[1]))
+    total = int(np.prod(shape))
+    if total > MAX_STATIONS:
+        raise ParameterError("stations", list(shape), f"at most {MAX_STATIONS} stations in all")
+    return LatticeGeometry(dimension, (lx, ly), shape)
+
+
+@dataclass(frozen=True)
+class FrictionPolar:
+    """Friction coefficients of a surface pair over sliding directions (SciPy-style result).
+
+    Arrays are indexed like ``beta_deg``. ``mu`` follows ``settings.mu_definition``;
+    ``mu_magnitude`` and ``mu_projection`` are both always given. ``mu_apparent`` is Eq 22
+    (resultant friction over the applied load, tensile springs included); it equals
+    ``mu_magnitude`` without tensile springs. ``contact_fraction_*`` are the fractions of
+    compressed springs over the time samples (1 in full contact).
+    """
+
+    beta_deg: FloatArray
+    mu_x: FloatArray
+    mu_y: FloatArray
+    mu: FloatArray
+    mu_magnitude: FloatArray
+    mu_projection: FloatArray
+    mu_apparent: FloatArray
+    valid: NDArray[np.bool_]
+    contact_fraction_min: FloatArray
+    contact_fraction_mean: FloatArray
+    tensile_fraction_max: FloatArray
+    time_samples: NDArray[np.int64]
+    solver_iterations_max: NDArray[np.int64]
+    travel_mode: tuple[str, ...]
+    travel_m: tuple[float | None, ...]
+    mu0: float
+    settings: LatticeSettings
+    geometry: LatticeGeometry
+    spring_evaluations: int
+    success: bool
+    message: str
+    invalid_messages: tuple[str, ...] = field(default=())
+
+    @property
+    def mu_over_mu0(self) -> FloatArray:
+        """mu / mu0 (requires mu0 > 0)."""
+        if self.mu0 <= 0.0:
+            raise ParameterError("mu0", self.mu0, "> 0 to normalise by it")
+        return self.mu / self.mu0
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """The per-direction arrays as named columns (for tables)."""
+        out: dict[str, np.ndarray] = {
+            "beta_deg": self.beta_deg,
+            "mu_x": self.mu_x,
+            "mu_y": self.mu_y,
+            "mu": self.mu,
+        }
+        if self.mu0 > 0.0:
+            out["mu_over_mu0"] = self.mu_over_mu0
+        out.update(
+            mu_magnitude=self.mu_magnitude,
+            mu_projection=self.mu_projection,
+            mu_apparent=self.mu_apparent,
+            contact_fraction_min=self.contact_fraction_min,
+            contact_fraction_mean=self.contact_fraction_mean,
+            time_samples=self.time_samples,
+        )
+        return out
+
+
+def merge_polars(first: FrictionPolar, *others: FrictionPolar) -> FrictionPolar:
+    """One polar holding the directions of several (same surfaces and settings), by beta.
+
+    Per-direction arrays are concatenated and sorted by ``beta_deg`` (stable); work
+    counters add up; invalid-direction messages are kept.
+    """
+    polars = (first, *others)
+    for p in others:
+        if p.settings != first.settings or p.mu0 != first.mu0 or p.geometry != first.geometry:
+            raise ParameterError("others", "a polar of another computation", "same settings")
+    order = np.argsort(np.concatenate([p.beta_deg for p in polars]), kind="stable")
+    merged: dict[str, Any] = {}
+    n = first.beta_deg.size
+    for f in fields(FrictionPolar):
+        value = getattr(first, f.name)
+        if isinstance(value, np.ndarray) and value.shape == (n,):
+            merged[f.name] = _ro(np.concatenate([getattr(p, f.name) for p in polars])[order])
+        elif isinstance(value, tuple) and len(value) == n and f.name != "invalid_messages":
+            values = [v for p in polars for v in getattr(p, f.name)]
+            merged[f.name] = tuple(values[i] for i in order)
+    merged["spring_evaluations"] = sum(p.spring_evaluations for p in polars)
+    merged["invalid_messages"] = tuple(m for p in polars for m in p.invalid_messages)
+    merged["success"] = all(p.success for p in polars)
+    bad = int(np.count_nonzero(~merged["valid"]))
+    merged["message"] = (
+        "ok" if bad == 0 else f"{bad} of {order.size} directions violate Eq 1's bound"
+    )
+    return replace(first, **merged)
+
+
+def _cos_sin_deg(beta_deg: float) -> tuple[float, float]:
+    """cos and sin of an angle in degrees, exact at multiples of 90 degrees."""
+    b = math.fmod(beta_deg, 360.0)
+    if b < 0.0:
+        b += 360.0
+    exact = {0.0: (1.0, 0.0), 90.0: (0.0, 1.0), 180.0: (-1.0, 0.0), 270.0: (0.0, -1.0)}
+    if b in exact:
+        return exact[b]
+    r = math.radians(b)
+    return math.cos(r), math.sin(r)
+
+
+@dataclass(frozen=True)
+class _Path:
+    shifts: FloatArray  # (n, 2) upper-surface offsets (m)
+    mode: str
+    travel: float | None
+
+
+def _return_vector(
+    geometry: LatticeGeometry, beta_deg: float, limit: int
+) -> tuple[int, int] | None:
+    """Smallest (m, n) with (m Lx, n Ly) along beta, |m|, |n| <= limit; None if none."""
+    lx, ly = geometry.cell
+    assert ly is not None
+    beta = math.radians(beta_deg)
+    best: tuple[int, int] | None = None
+    best_len = math.inf
+    for m in range(-limit, limit + 1):
+        for n in range(-limit, limit + 1):
+            if (m == 0 and n == 0) or math.gcd(m, n) != 1:
+                continue
+            angle = math.atan2(n * ly, m * lx)
+            diff = abs(math.remainder(angle - beta, 2.0 * math.pi))
+            length = math.hypot(m * lx, n * ly)
+            if diff < 1e-9 and length < best_len:
+                best, best_len = (m, n), length
+    return best
+
+
+def _sliding_path(geometry: LatticeGeometry, beta_deg: float, settings: LatticeSettings) -> _Path:
+    """Upper-surface offsets of the time samples (spec section 2.4)."""
+    phase = np.array(settings.phase)
+    nt = settings.time_samples
+    cb, sb = _cos_sin_deg(beta_deg)
+    lx, ly = geometry.cell
+    j = np.arange(nt)[:, None] / nt
+    if not isinstance(settings.travel, str):
+        d = float(settings.travel)
+        return _Path(phase + j * d * np.array([cb, sb]), "explicit", d)
+    if geometry.dimension == 1:
+        if abs(cb) < 1e-12:
+            if settings.travel == "ergodic":
+                shifts = phase + j * np.array([lx, 0.0])
+                return _Path(shifts, "ergodic", None)
+            return _Path(phase[None, :], "static", 0.0)
+        # s_x sweeps one period along x; y plays no role for profiles.
+        step = np.array([math.copysign(lx, cb), math.copysign(lx, cb) * sb / abs(cb)])
+        return _Path(phase + j * step, "return", lx / abs(cb))
+    assert ly is not None
+    if settings.travel in ("auto", "return"):
+        vec = _return_vector(geometry, beta_deg, settings.max_return_periods)
+        if vec is not None:
+            m, n = vec
+            total = nt * max(abs(m), abs(n))
+            jj = np.arange(total)[:, None] / total
+            return _Path(
+                phase + jj * np.array([m * lx, n * ly]), "return", math.hypot(m * lx, n * ly)
+            )
+        if settings.travel == "return":
+            raise ParameterError(
+                "travel",
+                "return",
+                f"a direction commensurate with the cell: beta = {beta_deg:g} deg has no return "
+                f"vector (m Lx, n Ly) with |m|, |n| <= {settings.max_return_periods}; use "
+                "travel='ergodic' or a travel length",
+            )
+    target = math.ceil(math.sqrt(nt))
+    na = _ergodic_count(target, geometry.shape[0])
+    nb = _ergodic_count(target, geometry.shape[1])
+    a, b = np.meshgrid(np.arange(na) / na, np.arange(nb) / nb, indexing="ij")
+    shifts = phase + np.stack([a.ravel() * lx, b.ravel() * ly], axis=1)
+    return _Path(shifts, "ergodic", None)
+
+
+def _ergodic_count(target: int, stations: int) -> int:
+    """Shifts per axis of the ergodic grid: ``target``, raised to a divisor of the station
+    count when one lies in [target, 2 target] (whole-station shifts need no re-evaluation)."""
+    for d in range(target, 2 * target + 1):
+        if stations % d == 0:
+            return d
+    return target
+
+
+def _check_mu0(mu0: Any) -> float:
+    if not (_finite(mu0) and float(mu0) >= 0.0):
+        raise ParameterError("mu0", mu0, "a finite local friction coefficient >= 0")
+    return float(mu0)
+
+
+def _check_betas(beta_deg: ArrayLike) -> FloatArray:
+    try:
+        betas = np.array(beta_deg, dtype=np.float64, ndmin=1)
+    except (TypeError, ValueError):
+        raise ParameterError("beta_deg", beta_deg, "sliding directions in degrees") from None
+    if betas.ndim != 1 or betas.size == 0 or not np.all(np.isfinite(betas)):
+        raise ParameterError("beta_deg", beta_deg, "a non-empty 1-D array of finite degrees")
+    return betas
+
+
+def friction_polar(
+    lower: Surface,
+    upper: Surface,
+    mu0: float,
+    beta_deg: ArrayLike,
+    settings: LatticeSettings | None = None,
+    **options: Any,
+) -> FrictionPolar:
+    """Time-averaged friction coefficients of the lattice-spring model for each direction.
+
+    Parameters
+    ----------
+    lower:
+        Surface 1 (fixed), a Profile or HeightMap.
+    upper:
+        Surface 2 (moving along beta).
+    mu0:
+        Local Coulomb coefficient at the spring tips (>= 0). Hierarchy (spec Eq 29) calls
+        this with the coefficient of the level below.
+    beta_deg:
+        Sliding directions (degrees from the x axis).
+    settings, options:
+        A :class:`LatticeSettings`, or its fields as keyword arguments (not both).
+
+    Raises
+    ------
+    ValidityError
+        When a compressed contact violates the bound of Eq 1 (``on_invalid="raise"``).
+    ParameterError
+        For bad arguments.
+    """
+    if settings is None:
+        try:
+            settings = LatticeSettings(**options)
+        except TypeError as exc:
+            raise ParameterError(
+                "options", sorted(options), f"fields of LatticeSettings ({exc})"
+            ) from None
+    elif options:
+        raise ParameterError("options", sorted(options), "either settings= or keyword options")
+    m0 = _check_mu0(mu0)
+    betas = _check_betas(beta_deg)
+    lattice = _prepare(lower, upper, settings)
+    results = [_direction(lattice, lower, upper, m0, float(b), settings) for b in betas]
+    mu_x = np.array([r.mu_x for r in results])
+    mu_y = np.array([r.mu_y for r in results])
+    cos_b = np.array([_cos_sin_deg(float(b))[0] for b in betas])
+    sin_b = np.array([_cos_sin_deg(float(b))[1] for b in betas])
+    mu_mag = np.hypot(mu_x, mu_y)
+    mu_proj = mu_x * cos_b + mu_y * sin_b
+    messages = tuple(r.invalid for r in results if r.invalid is not None)
+    n_bad = len(messages)
+    return FrictionPolar(
+        beta_deg=_ro(betas),
+        mu_x=_ro(mu_x),
+        mu_y=_ro(mu_y),
+        mu=_ro(mu_mag if settings.mu_definition == "magnitude" else mu_proj),
+        mu_magnitude=_ro(mu_mag),
+        mu_projection=_ro(mu_proj),
+        mu_apparent=_ro(np.array([r.mu_apparent for r in results])),
+        valid=_ro(np.array([r.invalid is None for r in results])),
+        contact_fraction_min=_ro(np.array([r.contact_min for r in results])),
+        contact_fraction_mean=_ro(np.array([r.contact_mean for r in results])),
+        tensile_fraction_max=_ro(np.array([r.tensile_max for r in results])),
+        time_samples=_ro(np.array([r.samples for r in results], dtype=np.int64)),
+        solver_iterations_max=_ro(np.array([r.iterations for r in results], dtype=np.int64)),
+        travel_mode=tuple(r.travel_mode for r in results),
+        travel_m=tuple(r.travel for r in results),
+        mu0=m0,
+        settings=settings,
+        geometry=lattice.geometry,
+        spring_evaluations=sum(r.samples for r in results) * lattice.geometry.n_stations,
+        success=n_bad == 0,
+        message="ok" if n_bad == 0 else f"{n_bad} of {betas.size} directions violate Eq 1's bound",
+        invalid_messages=messages,
+    )
+
+
+@dataclass(frozen=True)
+class _Lattice:
+    """Arrays prepared once per call: stations, surface 1, surface 2 at the start phase."""
+
+    geometry: LatticeGeometry
+    xs: FloatArray
+    ys: FloatArray
+    z1: FloatArray
+    g1: tuple[FloatArray, FloatArray]
+    z2: FloatArray
+    g2: tuple[FloatArray, FloatArray]
+    nx: int
+    ny: int
+    spacing: tuple[float, float]
+    mode: int
+    load: float
+
+
+@dataclass(frozen=True)
+class _Direction:
+    """The time-averaged outcome for one sliding direction."""
+
+    mu_x: float
+    mu_y: float
+    mu_apparent: float
+    contact_min: float
+    contact_mean: float
+    tensile_max: float
+    samples: int
+    iterations: int
+    travel_mode: str
+    travel: float | None
+    invalid: str | None
+
+
+def _prepare(lower: Surface, upper: Surface, settings: LatticeSettings) -> _Lattice:
+    geometry = lattice_geometry(lower, upper, settings.stations)
+    xs, ys = geometry.station_coordinates()
+    z1, g1x, g1y = (np.ascontiguousarray(a).ravel() for a in lower.evaluate(xs, ys))
+    # Surface 2 at the stations minus the initial phase: reused, read rolled, for every
+    # time sample whose shift is a whole number of station spacings.
+    px, py = settings.phase
+    z2, g2x, g2y = (np.ascontiguousarray(a).ravel() for a in upper.evaluate(xs - px, ys - py))
+    if settings.control == "separation":
+        mode = _kernels.MODE_SEPARATION
+    elif settings.load == "full":
+        mode = _kernels.MODE_FULL
+        z1 = np.zeros_like(z1)  # heights play no role in the full-contact limit
+        z2 = np.zeros_like(z2)
+    else:
+        mode = _kernels.MODE_LOAD
+    nx = geometry.shape[0]
+    ny = geometry.shape[1] if geometry.dimension == 2 else 1
+    lx, ly = geometry.cell
+    return _Lattice(
+        geometry=geometry,
+        xs=xs,
+        ys=ys,
+        z1=z1,
+        g1=(g1x, g1y),
+        z2=z2,
+        g2=(g2x, g2y),
+        nx=nx,
+        ny=ny,
+        spacing=(lx / nx, (ly / ny) if ly is not None else math.inf),
+        mode=mode,
+        load=settings.load if isinstance(settings.load, float) else 0.0,
+    )
+
+
+def _direction(
+    lat: _Lattice,
+    lower: Surface,
+    upper: Surface,
+    mu0: float,
+    beta: float,
+    settings: LatticeSettings,
+) -> _Direction:
+    """Time average over the sliding path of one direction (spec sections 2.4 and 4)."""
+    numba_engine = settings.engine == "numba"
+    multipliers = _kernels.multipliers_nb if numba_engine else _kernels.multipliers_np
+    sample = _kernels.sample_nb if numba_engine else _kernels.sample_np
+    cb, sb = _cos_sin_deg(beta)
+    h1x, h1y, den1 = multipliers(mu0, lat.g1[0], lat.g1[1], cb, sb)
+    h2_start = multipliers(mu0, lat.g2[0], lat.g2[1], cb, sb)
+    path = _sliding_path(lat.geometry, beta, settings)
+    px, py = settings.phase
+    n_st = lat.geometry.n_stations
+    c = math.nan  # load control: no warm start yet
+    if lat.mode == _kernels.MODE_SEPARATION and settings.separation is not None:
+        c = settings.separation
+    f_sum = x_sum = y_sum = f_tot = 0.0
+    fractions = np.empty(path.shifts.shape[0])
+    t_max = 0.0
+    iterations = 0
+    first_invalid: tuple[int, int, int] | None = None
+    full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
+    for j, (sx, sy) in enumerate(path.shifts):
+        whole = _whole_stations(sx - px, sy - py, lat.spacing, lat.geometry.dimension)
+        if whole is not None and full_whole is not None:
+            res = full_whole
+        else:
+            if whole is not None:
+                z2, (h2x, h2y, den2) = lat.z2, h2_start
+                kx, ky = whole[0] % lat.nx, whole[1] % lat.ny
+            else:
+                z2, g2x, g2y = (
+                    np.ascontiguousarray(a).ravel()
+                    for a in upper.evaluate(lat.xs - sx, lat.ys - sy)
+                )
+                z2 = lat.z2 if lat.mode == _kernels.MODE_FULL else z2
+                h2x, h2y, den2 = multipliers(mu0, g2x, g2y, cb, sb)
+                kx = ky = 0
+            res = sample(
+                lat.z1, h1x, h1y, den1, z2, h2x, h2y, den2, lat.nx, lat.ny, kx, ky,
+                settings.k_c, settings.k_t, lat.mode, lat.load, c,
+            )  # fmt: skip
+            if lat.mode == _kernels.MODE_FULL and whole is not None:
+                full_whole = res
+        c_new, iters, fs, xs_, ys_, ft, n_comp, n_tens, n_inv, first, family = res
+        if lat.mode == _kernels.MODE_LOAD:
+            c = c_new  # warm start of the next load balance
+        iterations = max(iterations, iters)
+        f_sum += fs
+        x_sum += xs_
+        y_sum += ys_
+        f_tot += ft
+        fractions[j] = n_comp / n_st
+        t_max = max(t_max, n_tens / n_st)
+        if n_inv and first_invalid is None:
+            first_invalid = (j, first, family)
+    outcome = _Direction(
+        mu_x=math.nan,
+        mu_y=math.nan,
+        mu_apparent=math.nan,
+        contact_min=float(fractions.min()),
+        contact_mean=float(fractions.mean()),
+        tensile_max=t_max,
+        samples=int(path.shifts.shape[0]),
+        iterations=iterations,
+        travel_mode=path.mode,
+        travel=path.travel,
+        invalid=None,
+    )
+    if first_invalid is not None:
+        message = _invalid_message(
+            lower, upper, lat.geometry, mu0, beta, path.shifts, first_invalid
+        )
+        if settings.on_invalid == "raise":
+            raise ValidityError(message)
+        return replace(outcome, invalid=message)
+    if f_sum <= 0.0 or f_tot == 0.0:  # no compressed spring, or zero load: undefined
+        name, value = (
+            ("separation", settings.separation)
+            if lat.mode == _kernels.MODE_SEPARATION
+            else ("load", settings.load)
+        )
+        raise ParameterError(
+            name,
+            value,
+            f"a value that compresses some spring during sliding with a non-zero total load "
+            f"(beta = {beta:g} deg)",
+        )
+    return replace(
+        outcome,
+        mu_x=x_sum / (2.0 * f_sum),  # Eqs 5-9: both families, R_z = 2 sum F
+        mu_y=y_sum / (2.0 * f_sum),
+        mu_apparent=math.hypot(x_sum, y_sum) / (2.0 * f_tot),  # Eq 22
+    )
+
+
+def _whole_stations(
+    dx_shift: float, dy_shift: float, spacing: tuple[float, float], dimension: int
+) -> tuple[int, int] | None:
+    """The shift in whole station spacings (kx, ky), or None when it is not whole."""
+    fx = dx_shift / spacing[0]
+    kx = round(fx)
+    if abs(fx - kx) > 1e-9 * max(1.0, abs(fx)):
+        return None
+    if dimension == 1:
+        return int(kx), 0
+    fy = dy_shift / spacing[1]
+    ky = round(fy)
+    if abs(fy - ky) > 1e-9 * max(1.0, abs(fy)):
+        return None
+    return int(kx), int(ky)
+
+
+def _ro(arr: np.ndarray) -> Any:
+    arr = np.array(arr, copy=True)
+    arr.setflags(write=False)
+    return arr
+
+
+def _invalid_message(
+    lower: Surface,
+    upper: Surface,
+    geometry: LatticeGeometry,
+    mu0: float,
+    beta_deg: float,
+    shifts: FloatArray,
+    first: tuple[int, int, int],
+) -> str:
+    """Describe the first contact that violates Eq 1: which surface, where, phi, the bound."""
+    j, station, family = first
+    xs, ys = geometry.station_coordinates()
+    idx = np.unravel_index(station, geometry.shape)
+    x = float(np.ravel(xs)[idx[0]])
+    y = float(np.ravel(ys)[idx[1]]) if geometry.dimension == 2 else 0.0
+    if family == 1:
+        surface, px, py, name = lower, x, y, "lower surface (upper-fixed springs)"
+    else:
+        sx, sy = shifts[j]
+        surface, px, py, name = upper, x - sx, y - sy, "upper surface (lower-fixed springs)"
+    _, gx, gy = surface.evaluate(np.array([px]), np.array([py]))
+    g = math.hypot(float(gx[0]), float(gy[0]))
+    phi = math.atan(g)
+    alpha = math.atan2(float(gy[0]), float(gx[0]))
+    beta_local = math.radians(beta_deg) - alpha
+    bound = float(max_mu0(phi, beta_local))
+    where = f"x = {px:.6g} m" + (f", y = {py:.6g} m" if geometry.dimension == 2 else "")
+    return (
+        f"mu0 = {mu0:g} is outside the validity domain at beta = {beta_deg:g} deg: a contact on "
+        f"the {name} at {where} has slope angle phi = {math.degrees(phi):.4g} deg facing the "
+        f"sliding direction; Eq 1 requires mu0 < {bound:.6g} there (mu0 < cot(phi) = "
+        f"{1.0 / math.tan(phi) if phi > 0 else math.inf:.6g} at beta' = 0)"
+    )

@@ -1,0 +1,49 @@
+"""The example script runs and writes the figure-family tables and plots."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from frictionlab.io.tables import read_csv
+
+ROOT = Path(__file__).resolve().parents[3]
+
+
+def test_roughness_figures_example(tmp_path) -> None:
+    done = subprocess.run(
+        [sys.executable, str(ROOT / "examples" / "roughness_figures.py"), str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    out = tmp_path / "roughness_figures"
+    names = ("fig6a_wedge_cases", "fig6b_generic_cases", "fig7_surfaces_2d", "fig8_wavelength_map")
+    for name in names:
+        assert (out / f"{name}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    wedge = read_csv(out / "fig6a_wedge_cases.csv")
+    assert wedge.units["beta_deg"] == "deg"
+    np.testing.assert_array_equal(wedge["beta_deg"], np.arange(0.0, 91.0, 5.0))
+    assert {f"mu_over_mu0_{c}" for c in "ABCDEF"} <= set(wedge.columns)
+    grid = read_csv(out / "fig8_wavelength_map.csv")
+    assert grid["beta_deg"].size == 75
+    at = {}
+    for b in (0.0, 90.0):
+        sel = grid["beta_deg"] == b
+        at[b] = {
+            (lx, ly): v
+            for lx, ly, v in zip(
+                grid["lambda_x_over_pi"][sel],
+                grid["lambda_y_over_pi"][sel],
+                grid["mu_over_mu0"][sel],
+                strict=True,
+            )
+        }
+    for (lx, ly), v in at[0.0].items():
+        assert abs(at[90.0][(ly, lx)] - v) <= 1e-12 * v  # beta = 90 is the transpose
+    assert "A:" in done.stdout

@@ -1,0 +1,97 @@
+"""An independent, slow reference of the lattice-spring model for the tests.
+
+Plain Python loops over springs and time samples. It shares nothing with the package but
+the surfaces' ``evaluate`` (tested on its own): the multipliers use the local frame of
+Eqs 1-3 with the corrected Eq 4 rotation written out here with ``math``, the load balance
+is a bisection, and each spring family is summed separately (Eqs 5-9).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def local_multipliers(mu0: float, gx: float, gy: float, beta: float) -> tuple[float, float]:
+    """(X, Y) per unit F_z in global axes: Eqs 2-3 at (phi, beta - alpha), rotated by Eq 4."""
+    alpha = math.atan2(gy, gx)
+    phi = math.atan(math.hypot(gx, gy))
+    b = beta - alpha
+    s = math.sqrt(1.0 + (math.tan(phi) * math.cos(b)) ** 2)
+    den = math.cos(phi) * s - mu0 * math.tan(phi) * math.cos(b)
+    if den <= 0.0:
+        raise ArithmeticError("contact violates Eq 1")
+    hx = (math.sin(phi) * s + mu0 * math.cos(b)) / den
+    hy = mu0 * math.sin(b) / den
+    return (
+        math.cos(alpha) * hx - math.sin(alpha) * hy,
+        math.sin(alpha) * hx + math.cos(alpha) * hy,
+    )
+
+
+def spring_force(u: float, kc: float, kt: float) -> float:
+    return kc * u if u > 0.0 else kt * u
+
+
+def balance(gaps: list[float], kc: float, kt: float, load: float) -> float:
+    """c with mean spring force == load, by bisection."""
+    lo = min(gaps) - abs(load) / max(kt, 1e-300) - 1.0 if kt > 0 else min(gaps)
+    hi = max(gaps) + abs(load) / kc + 1.0
+    for _ in range(300):
+        mid = 0.5 * (lo + hi)
+        mean = sum(spring_force(mid - g, kc, kt) for g in gaps) / len(gaps)
+        if mean < load:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def reference_friction(
+    lower,
+    upper,
+    mu0: float,
+    beta_deg: float,
+    stations_x: list[float],
+    stations_y: list[float],
+    shifts: list[tuple[float, float]],
+    load: float | str,
+    kc: float = 1.0,
+    kt: float = 0.0,
+    separation: float | None = None,
+) -> dict[str, float]:
+    """mu_x, mu_y and mu_apparent over the given stations (outer grid) and shifts (m)."""
+    beta = math.radians(beta_deg)
+    rx1 = ry1 = rx2 = ry2 = rz = l_sum = 0.0
+    points = [(x, y) for x in stations_x for y in stations_y]
+    for sx, sy in shifts:
+        records = []
+        for x, y in points:
+            z1, g1x, g1y = (float(np.ravel(v)[0]) for v in lower.evaluate([x], [y]))
+            z2, g2x, g2y = (float(np.ravel(v)[0]) for v in upper.evaluate([x - sx], [y - sy]))
+            records.append((z2 - z1, (g1x, g1y), (g2x, g2y)))
+        gaps = [r[0] for r in records]
+        if load == "full":
+            forces = [1.0] * len(records)
+            totals = forces
+        else:
+            c = separation if separation is not None else balance(gaps, kc, kt, float(load))
+            totals = [spring_force(c - g, kc, kt) for g in gaps]
+            forces = [max(f, 0.0) for f in totals]
+        for f, (_, g1, g2) in zip(forces, records, strict=True):
+            if f <= 0.0:
+                continue
+            x1, y1 = local_multipliers(mu0, g1[0], g1[1], beta)  # upper-fixed, on surface 1
+            x2, y2 = local_multipliers(mu0, g2[0], g2[1], beta)  # lower-fixed, on surface 2
+            rx1 += f * x1  # Eq 6
+            ry1 += f * y1  # Eq 7
+            rx2 += f * x2  # Eq 8
+            ry2 += f * y2  # Eq 9
+            rz += 2.0 * f  # Eq 5: both families
+        l_sum += 2.0 * sum(totals)
+    return {
+        "mu_x": (rx1 + rx2) / rz,
+        "mu_y": (ry1 + ry2) / rz,
+        "mu_apparent": math.hypot(rx1 + rx2, ry1 + ry2) / l_sum,
+    }
