@@ -36,6 +36,14 @@ from frictionlab.driver.simulate import (
     simulate,
     status_labels,
 )
+from frictionlab.driver.spring_slider import (
+    SpringSlider,
+    count_slip_events,
+    critical_stiffness,
+    friction_oscillation,
+    simulate_spring_slider,
+    steady_F,
+)
 
 __all__ = [
     "SEGMENT_KINDS",
@@ -50,11 +58,17 @@ __all__ = [
     "Segment",
     "SegmentRecord",
     "Slide",
+    "SpringSlider",
     "Table",
     "TractionControl",
     "Turn",
+    "count_slip_events",
+    "critical_stiffness",
+    "friction_oscillation",
     "plan_program",
     "simulate",
+    "simulate_spring_slider",
     "slide_hold_slide",
     "status_labels",
+    "steady_F",
 ]

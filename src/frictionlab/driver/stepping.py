@@ -110,8 +110,8 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
         du[:, 2] = (control.fn_target - state.traction[:, 2]) / alpha_n + state.gap
     iters = np.zeros(n, dtype=np.int64)
     if control.ft_target is None:
-        res = update(params, state, du, control.dt, raise_on_failure=False)
-        return _result_attempt(res, du, 1, iters + res.iterations)
+        single = update(params, state, du, control.dt, raise_on_failure=False)
+        return _result_attempt(single, du, 1, iters + single.iterations)
 
     target = control.ft_target
     fn_new = state.traction[:, 2] + _elastic(params, "alpha_n", n) * (du[:, 2] - state.gap)
