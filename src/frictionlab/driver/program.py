@@ -251,7 +251,10 @@ class _ConstantPlan(SegmentPlan):
 
 
 def _direction_vector(theta: np.ndarray) -> np.ndarray:
-    return np.column_stack([np.cos(theta), np.sin(theta)])
+    """Unit vectors (N, 2); components below 1e-15 (round-off of pi) are set to 0."""
+    unit = np.column_stack([np.cos(theta), np.sin(theta)])
+    unit[np.abs(unit) < 1e-15] = 0.0
+    return unit
 
 
 def _slide_plan(
