@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from frictionlab.driver.program import Segment, plan_program, program_points
-from frictionlab.driver.stepping import advance
+from frictionlab.driver.stepping import StepWork, advance
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import ContactState, Status, SubloadingParams, initial_state
 
@@ -308,6 +308,17 @@ class _Recorder:
         )
 
 
+def _count_work(work: dict[str, int], w: StepWork, completed: bool = True) -> None:
+    """Add one step's counters to the totals (a failed step counts its solves too)."""
+    work["steps"] += int(completed)
+    work["substeps"] += w.substeps
+    work["solves"] += w.solves
+    work["iterations"] += int(w.iterations.sum())
+    work["refined_for_failure"] += int(w.refined_for_failure)
+    work["refined_for_accuracy"] += int(w.refined_for_accuracy)
+    work["accuracy_unmet"] += int(w.accuracy_unmet)
+
+
 def _check_accuracy(accuracy: float | None, max_halvings: int) -> None:
     if accuracy is not None and not (isinstance(accuracy, int | float) and accuracy > 0):
         raise ParameterError("accuracy", accuracy, "a number > 0 (or None: no accuracy control)")
@@ -378,6 +389,7 @@ def simulate(
             outcome, w = advance(
                 params, state, control, accuracy=accuracy, max_halvings=max_halvings
             )
+            _count_work(work, w, completed=outcome.ok)
             if not outcome.ok:
                 success, failed = False, True
                 message = (
@@ -387,13 +399,6 @@ def simulate(
             state = outcome.state
             rec.add(state, control.dt, outcome.du, outcome.dissipation, outcome.status,
                     index, w.substeps, w.solves, w.iterations)  # fmt: skip
-            work["steps"] += 1
-            work["substeps"] += w.substeps
-            work["solves"] += w.solves
-            work["iterations"] += int(w.iterations.sum())
-            work["refined_for_failure"] += int(w.refined_for_failure)
-            work["refined_for_accuracy"] += int(w.refined_for_accuracy)
-            work["accuracy_unmet"] += int(w.accuracy_unmet)
             if progress is not None:
                 progress(work["steps"], total)
         if rec.rows > first_row:

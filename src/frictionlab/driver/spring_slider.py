@@ -40,6 +40,8 @@ from frictionlab.driver.simulate import (
     InitialConditions,
     ProgressCallback,
     SegmentRecord,
+    _check_accuracy,
+    _count_work,
     count_points,
 )
 from frictionlab.driver.stepping import StepWork, substep
@@ -361,8 +363,6 @@ def simulate_spring_slider(
     ``spring_force`` k (V t - x) [Pa]; the slip is ``x e``. Substepping and
     ``accuracy`` work as in :func:`~frictionlab.driver.simulate`.
     """
-    from frictionlab.driver.simulate import _check_accuracy
-
     _check_accuracy(accuracy, max_halvings)
     total_time = _field("duration", duration, ">0")
     init = InitialConditions() if initial is None else initial
@@ -410,6 +410,7 @@ def simulate_spring_slider(
             max_halvings=max_halvings,
             n_points=n,
         )
+        _count_work(work, w, completed=outcome.ok)
         if not outcome.ok:
             success = False
             message = (
@@ -420,7 +421,6 @@ def simulate_spring_slider(
         _record(rows, state, outcome, w)
         substeps.append(w.substeps)
         solves.append(w.solves)
-        _count_work(work, w)
         if progress is not None:
             progress(k + 1, steps)
     t = np.array(rows["t"])
@@ -481,16 +481,6 @@ def _record(
     rows["diss"].append(rows["diss"][-1] + att.dissipation)
     rows["status"].append(att.status.astype(np.int8))
     rows["iterations"].append(w.iterations)
-
-
-def _count_work(work: dict[str, int], w: StepWork) -> None:
-    work["steps"] += 1
-    work["substeps"] += w.substeps
-    work["solves"] += w.solves
-    work["iterations"] += int(w.iterations.sum())
-    work["refined_for_failure"] += int(w.refined_for_failure)
-    work["refined_for_accuracy"] += int(w.refined_for_accuracy)
-    work["accuracy_unmet"] += int(w.accuracy_unmet)
 
 
 # --------------------------------------------------------------------------- stability
