@@ -141,6 +141,15 @@ def _positive(t: TomlTable, key: str, default: Any = None) -> Any:
     return t.get(key, float, default, check=lambda v: v > 0, allowed="a number > 0")
 
 
+def _reject_unknown(t: TomlTable, allowed: Sequence[str]) -> None:
+    """Report a misspelt key before any missing-key error it would cause."""
+    for key in t.mapping():
+        if key not in allowed:
+            raise InputError(
+                f"unknown key {t.where}.{key}; allowed keys here: {', '.join(sorted(allowed))}"
+            )
+
+
 def _reraise(where: str, call: Callable[[], Any]) -> Any:
     """Run ``call``; re-raise a ParameterError with ``where`` in front of its field."""
     try:
@@ -151,6 +160,7 @@ def _reraise(where: str, call: Callable[[], Any]) -> Any:
 
 # --------------------------------------------------------------------------- sections
 def _parse_law(t: TomlTable) -> tuple[SubloadingParams, dict[str, Any]]:
+    _reject_unknown(t, tuple(LAW_KEYS))
     surface = t.get("surface", str, _PARAM_DEFAULTS["surface"], choices=SURFACES)
     needed = _CONE_KEYS if surface == "coulomb" else _CLOSED_KEYS
     for key in needed:
@@ -179,6 +189,7 @@ def _parse_law(t: TomlTable) -> tuple[SubloadingParams, dict[str, Any]]:
 
 
 def _parse_initial(t: TomlTable) -> tuple[InitialConditions, dict[str, Any]]:
+    _reject_unknown(t, ("normal_traction", "tangential_traction", "F"))
     fn = _numbers(t, "normal_traction")
     ft = _pairs(t, "tangential_traction", [0.0, 0.0])
     F = _numbers(t, "F", None)
@@ -229,7 +240,10 @@ _REQUIRED_KEYS = {
 def _parse_segment(t: TomlTable, base_dir: Path) -> Any:
     kind = t.get("kind", str, choices=tuple(SEGMENT_KINDS))
     if kind == "table":
+        _reject_unknown(t, ("kind", "file", "steps_per_row", "max_step"))
         return _parse_table_segment(t, base_dir)
+    extra = ("magnitude", "direction_deg") if kind == "traction" else ()
+    _reject_unknown(t, ("kind", "steps", "max_step", *_SEGMENT_KEYS[kind], *extra))
     kwargs: dict[str, Any] = {}
     for key in _REQUIRED_KEYS.get(kind, ()):
         if key not in t:
