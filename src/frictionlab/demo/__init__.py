@@ -5,7 +5,7 @@
 ``ctx.out_dir`` and returns a :class:`~frictionlab.io.report.Section` whose figure paths
 are relative to ``ctx.out_dir``. The law's sections are in
 :mod:`frictionlab.demo.law` (:data:`~frictionlab.demo.law.LAW_SECTIONS`); other parts
-of frictionlab add theirs by extending :data:`SECTION_BUILDERS`.
+of frictionlab add theirs to :func:`default_builders` (e.g. a roughness section).
 
 Bundled scenarios live in ``frictionlab/data/scenarios/*.toml`` (package data) and are
 read with :mod:`importlib.resources`.
@@ -24,11 +24,11 @@ from pathlib import Path
 from frictionlab.io.report import Report, Section
 
 __all__ = [
-    "SECTION_BUILDERS",
     "DemoContext",
     "SectionBuilder",
     "bundled_scenario",
     "bundled_scenarios",
+    "default_builders",
     "run_demo",
 ]
 
@@ -67,14 +67,11 @@ def bundled_scenario(name: str) -> Iterator[Path]:
         yield Path(path)
 
 
-def _builders() -> list[SectionBuilder]:
+def default_builders() -> list[SectionBuilder]:
+    """The demo's sections, in report order."""
     from frictionlab.demo.law import LAW_SECTIONS
 
-    return list(LAW_SECTIONS)
-
-
-#: The demo's sections, in order (a list other modules may extend).
-SECTION_BUILDERS: list[SectionBuilder] = []
+    return [*LAW_SECTIONS]
 
 TITLE = "frictionlab demo: the subloading-friction law in tribometer tests"
 INTRO = (
@@ -95,7 +92,7 @@ def run_demo(
     """Run every section builder and write ``out_dir/report.html``; return its path."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    chosen = list(builders) if builders is not None else (SECTION_BUILDERS or _builders())
+    chosen = list(builders) if builders is not None else default_builders()
     ctx = DemoContext(out, progress or _no_progress, log or (lambda message: None))
     report = Report(TITLE, INTRO)
     for i, build in enumerate(chosen, start=1):

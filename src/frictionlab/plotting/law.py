@@ -67,12 +67,10 @@ def _colors(n: int) -> list[Any]:
     return [colormaps["viridis"](i / max(n - 1, 1)) for i in range(n)]
 
 
-def _time_scale(ax: Axes, t: np.ndarray) -> None:
-    """Symmetric-log time axis when the run spans many decades (e.g. long holds)."""
-    positive = np.diff(np.unique(t))
-    positive = positive[positive > 0]
-    if positive.size and t.max() / np.min(positive) > 1e4:
-        ax.set_xscale("symlog", linthresh=max(float(np.median(positive)), 1e-12) * 10)
+def _log_time(t: np.ndarray) -> bool:
+    """A logarithmic time axis when the run spans many decades (long holds, slow slides)."""
+    positive = t[t > 0]
+    return bool(positive.size) and float(positive.max() / positive.min()) > 1e4
 
 
 def plot_friction(
@@ -99,9 +97,11 @@ def plot_friction(
     x = history.slip[..., 0] if planar else history.path_length
     names = _labels(labels, n)
     colors = _colors(n)
+    log_time = _log_time(history.time)
     for i in range(n):
         ax_s.plot(x[:, i], ratio[:, i], color=colors[i], lw=1.2, label=names[i])
-        ax_t.plot(history.time[:, i], ratio[:, i], color=colors[i], lw=1.2, label=names[i])
+        shown = history.time[:, i] > 0 if log_time else slice(None)
+        ax_t.plot(history.time[shown, i], ratio[shown, i], color=colors[i], lw=1.2, label=names[i])
     marked = False
     for seg in history.segments:
         if not seg.is_hold:
@@ -112,11 +112,12 @@ def plot_friction(
             ax_s.plot(x[seg.last_row, i], ratio[seg.last_row, i], "o", color=colors[i], ms=4,
                       mfc="white", label=None if marked else "hold")  # fmt: skip
             marked = True
-    _time_scale(ax_t, history.time)
+    if log_time:
+        ax_t.set_xscale("log")
     y_label = "friction ratio f_t1/f_n [-]" if planar else "friction ratio |f_t|/f_n [-]"
     ax_s.set_xlabel("slip along e_1 [m]" if planar else "slip distance [m]")
     ax_s.set_ylabel(y_label)
-    ax_t.set_xlabel("time [s]")
+    ax_t.set_xlabel("time [s] (log scale)" if log_time else "time [s]")
     ax_t.set_ylabel(y_label)
     for ax in (ax_s, ax_t):
         ax.grid(alpha=0.3)
