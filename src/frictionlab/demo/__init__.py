@@ -73,6 +73,7 @@ def default_builders() -> list[SectionBuilder]:
 
     return [*LAW_SECTIONS]
 
+
 TITLE = "frictionlab demo: the subloading-friction law in tribometer tests"
 INTRO = (
     "Each section runs bundled scenarios (frictionlab/data/scenarios/*.toml; a copy sits next to "
