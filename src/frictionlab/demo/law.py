@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import time
 from collections.abc import Sequence
-from typing import Any
 
 import numpy as np
 
@@ -25,7 +24,7 @@ from frictionlab.driver import (
 )
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
-from frictionlab.io.report import Section
+from frictionlab.io.report import Section, format_value
 from frictionlab.io.results import write_results
 from frictionlab.io.scenario import Scenario, load_scenario
 from frictionlab.io.tables import write_csv_atomic
@@ -96,30 +95,26 @@ def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
     for key, value in law.items():
         if key == "surface" or value is None or key not in units:
             continue
-        rows.append((key, _fmt(value), units[key]))
+        rows.append((key, format_value(value), units[key]))
     rows.append(
-        ("initial normal traction f_n", _fmt(scenario.inputs["initial"]["normal_traction"]), "Pa")
+        (
+            "initial normal traction f_n",
+            format_value(scenario.inputs["initial"]["normal_traction"]),
+            "Pa",
+        )
     )
     if "program" in scenario.inputs:
         for i, seg in enumerate(scenario.inputs["program"], start=1):
             fields = ", ".join(
-                f"{k} = {_fmt(v)}" for k, v in seg.items() if k != "kind" and v is not None
+                f"{k} = {format_value(v)}" for k, v in seg.items() if k != "kind" and v is not None
             )
             rows.append((f"segment {i}: {seg['kind']}", fields, "SI"))
     else:
         machine = scenario.inputs["machine"]
         for key, unit in (("stiffness", "Pa/m"), ("velocity", "m/s"), ("mass", "kg/m^2"),
                           ("damping", "Pa s/m"), ("duration", "s"), ("steps", "-")):  # fmt: skip
-            rows.append((f"machine {key}", _fmt(machine[key]), unit))
+            rows.append((f"machine {key}", format_value(machine[key]), unit))
     return rows
-
-
-def _fmt(value: Any) -> str:
-    if isinstance(value, float):
-        return f"{value:g}"
-    if isinstance(value, list | tuple):
-        return "[" + ", ".join(_fmt(v) for v in value) + "]"
-    return str(value)
 
 
 def _law(scenario: Scenario, name: str) -> float:

@@ -28,13 +28,13 @@ outpaces the machine stiffness and vanishes for a stiff machine or a high veloci
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from scipy.optimize import brentq
 
+from frictionlab.driver.program import _checked, _count, _max_step, _steps
 from frictionlab.driver.simulate import (
     History,
     InitialConditions,
@@ -69,21 +69,6 @@ __all__ = [
 MAX_ITERATIONS = 100
 
 
-def _field(name: str, value: Any, rule: str) -> np.ndarray:
-    try:
-        arr = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ParameterError(name, value, "a real number or an array (N,)") from None
-    if arr.ndim > 1 or (arr.ndim == 1 and arr.size == 0) or not np.all(np.isfinite(arr)):
-        raise ParameterError(name, value, "finite values, a scalar or an array (N,)")
-    if rule == ">0" and np.any(arr <= 0):
-        raise ParameterError(name, value, f"{name} > 0")
-    if rule == ">=0" and np.any(arr < 0):
-        raise ParameterError(name, value, f"{name} >= 0")
-    arr.setflags(write=False)
-    return arr
-
-
 @dataclass(frozen=True)
 class SpringSlider:
     """The loading system of a stick-slip test (per unit nominal contact area).
@@ -114,11 +99,13 @@ class SpringSlider:
     spectral_radius: float = 0.5
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "stiffness", _field("stiffness", self.stiffness, ">0"))
-        object.__setattr__(self, "velocity", _field("velocity", self.velocity, ">=0"))
-        object.__setattr__(self, "mass", _field("mass", self.mass, ">=0"))
-        object.__setattr__(self, "damping", _field("damping", self.damping, ">=0"))
-        object.__setattr__(self, "direction_deg", _field("direction_deg", self.direction_deg, ""))
+        object.__setattr__(self, "stiffness", _checked("stiffness", self.stiffness, ">0"))
+        object.__setattr__(self, "velocity", _checked("velocity", self.velocity, ">=0"))
+        object.__setattr__(self, "mass", _checked("mass", self.mass, ">=0"))
+        object.__setattr__(self, "damping", _checked("damping", self.damping, ">=0"))
+        object.__setattr__(
+            self, "direction_deg", _checked("direction_deg", self.direction_deg, None)
+        )
         rho = self.spectral_radius
         if isinstance(rho, bool) or not isinstance(rho, int | float) or not 0.0 <= rho <= 1.0:
             raise ParameterError("spectral_radius", rho, "0 <= spectral_radius <= 1")
@@ -364,22 +351,18 @@ def simulate_spring_slider(
     ``accuracy`` work as in :func:`~frictionlab.driver.simulate`.
     """
     _check_accuracy(accuracy, max_halvings)
-    total_time = _field("duration", duration, ">0")
+    total_time = _checked("duration", duration, ">0")
     init = InitialConditions() if initial is None else initial
     sizes = machine.sizes() | ({total_time.shape[0]} if total_time.ndim == 1 else set())
     n = count_points(params, (), init, n_points, sizes)
     contact = init if isinstance(init, ContactState) else init.state(params, n)
     if steps is not None and max_step is not None:
         raise ParameterError("steps", steps, "steps or max_step, not both")
-    if max_step is not None:
-        if not (isinstance(max_step, int | float) and max_step > 0 and math.isfinite(max_step)):
-            raise ParameterError("max_step", max_step, "a finite number > 0 [s]")
-        steps = max(1, math.ceil(float(np.max(total_time)) / max_step * (1 - 1e-12)))
-    steps = 1000 if steps is None else steps
-    if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
-        raise ParameterError("steps", steps, "an integer >= 1")
+    limit = _max_step(max_step)
+    checked = _steps("steps", steps)
+    n_steps: int = _count(total_time, limit) if limit is not None else (checked or 1000)
     mach = _Machine(params, machine, n)
-    dt = np.broadcast_to(total_time, (n,)) / steps
+    dt = np.broadcast_to(total_time, (n,)) / n_steps
     f0 = mach.along(contact.traction)
     a0 = np.where(mach.inertial, (mach.c * mach.V - f0) / np.where(mach.inertial, mach.m, 1.0), 0.0)
     state = _SliderState(
@@ -397,8 +380,8 @@ def simulate_spring_slider(
         ("steps", "substeps", "solves", "iterations", "refined_for_failure",
          "refined_for_accuracy", "accuracy_unmet"), 0,
     )  # fmt: skip
-    success, message = True, f"completed {steps} steps"
-    for k in range(steps):
+    success, message = True, f"completed {n_steps} steps"
+    for k in range(n_steps):
         outcome, w = substep(
             state,
             dt,
@@ -414,7 +397,7 @@ def simulate_spring_slider(
         if not outcome.ok:
             success = False
             message = (
-                f"step {k + 1} of {steps} (t = {float(state.t.max()):.6g} s): {outcome.reason}"
+                f"step {k + 1} of {n_steps} (t = {float(state.t.max()):.6g} s): {outcome.reason}"
             )
             break
         state = outcome.state
@@ -422,7 +405,7 @@ def simulate_spring_slider(
         substeps.append(w.substeps)
         solves.append(w.solves)
         if progress is not None:
-            progress(k + 1, steps)
+            progress(k + 1, n_steps)
     t = np.array(rows["t"])
     x = np.array(rows["x"])
     load = mach.V * t
@@ -435,7 +418,7 @@ def simulate_spring_slider(
         "direction_deg": np.degrees(np.arctan2(mach.e[:, 1], mach.e[:, 0])),
         "spectral_radius": machine.spectral_radius,
         "duration": np.broadcast_to(total_time, (n,)).astype(float),
-        "steps": steps,
+        "steps": n_steps,
     }
     n_rows = t.shape[0]
     return History(

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import html
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -19,7 +19,7 @@ from frictionlab._version import __version__
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
 
-__all__ = ["Figure", "Report", "Section"]
+__all__ = ["Figure", "Report", "Section", "format_value"]
 
 
 @dataclass(frozen=True)
@@ -160,21 +160,10 @@ class Report:
         return write_text_atomic(target, self.render())
 
 
-def parameter_rows(
-    values: dict[str, object], units: dict[str, str], skip: Sequence[str] = ()
-) -> list[tuple[str, str, str]]:
-    """Rows ``(name, value, unit)`` for a parameter table (None values skipped)."""
-    rows = []
-    for key, value in values.items():
-        if value is None or key in skip:
-            continue
-        rows.append((key, _format(value), units.get(key, "")))
-    return rows
-
-
-def _format(value: object) -> str:
+def format_value(value: object) -> str:
+    """Compact text for a parameter value (``%g`` for floats, lists in brackets)."""
     if isinstance(value, float):
         return f"{value:g}"
     if isinstance(value, list | tuple):
-        return "[" + ", ".join(_format(v) for v in value) + "]"
+        return "[" + ", ".join(format_value(v) for v in value) + "]"
     return str(value)
