@@ -31,6 +31,8 @@ __all__ = [
     "substep",
 ]
 
+_FAILED = int(Status.FAILED)
+
 #: Newton iterations of the tangential traction control, per (sub)step.
 MAX_TRACTION_ITERATIONS = 60
 #: Relative tolerance of the traction control: |f_t - target| <= TOL * max(f_n, |target|).
@@ -68,15 +70,16 @@ def _elastic(params: SubloadingParams, name: str, n: int) -> np.ndarray:
 
 
 def _result_attempt(res: StepResult, du: np.ndarray, solves: int, iters: np.ndarray) -> Attempt:
+    ok = not np.any(res.status == _FAILED)
     return Attempt(
         state=res.state,
         du=du,
-        dissipation=np.asarray(res.dissipation, dtype=np.float64),
-        status=np.asarray(res.status, dtype=np.int8),
+        dissipation=res.dissipation,
+        status=res.status,
         iterations=iters,
         solves=solves,
-        ok=res.success,
-        reason="" if res.success else "the local solve of the law failed: " + res.message,
+        ok=ok,
+        reason="" if ok else "the local solve of the law failed: " + res.message,
     )
 
 
@@ -104,7 +107,6 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
     du = np.zeros((n, 3))
     du[:, :2] = control.du_t
     du[:, 2] = control.du_n
-    alpha_t = _elastic(params, "alpha_t", n)
     if control.fn_target is not None:
         alpha_n = _elastic(params, "alpha_n", n)
         du[:, 2] = (control.fn_target - state.traction[:, 2]) / alpha_n + state.gap
@@ -114,6 +116,7 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
         return _result_attempt(single, du, 1, iters + single.iterations)
 
     target = control.ft_target
+    alpha_t = _elastic(params, "alpha_t", n)
     fn_new = state.traction[:, 2] + _elastic(params, "alpha_n", n) * (du[:, 2] - state.gap)
     tol = TRACTION_RTOL * np.maximum(np.maximum(fn_new, np.hypot(*target.T)), 1e-300)
     du[:, :2] = (target - state.traction[:, :2]) / alpha_t[:, None]  # elastic guess
@@ -129,7 +132,7 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
         iters += res.iterations
         r = target - res.traction[:, :2]
         norm = np.hypot(r[:, 0], r[:, 1])
-        norm[res.status == Status.FAILED] = np.inf
+        norm[res.status == _FAILED] = np.inf
         done = norm <= tol
         if done.all():
             return _result_attempt(res, du.copy(), solves, iters)
@@ -152,8 +155,8 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
     return Attempt(
         state=res.state,
         du=du.copy(),
-        dissipation=np.asarray(res.dissipation, dtype=np.float64),
-        status=np.asarray(res.status, dtype=np.int8),
+        dissipation=res.dissipation,
+        status=res.status,
         iterations=iters,
         solves=solves,
         ok=False,
