@@ -252,6 +252,12 @@ def write_scenario(tmp_path: Path) -> Iterator:  # type: ignore[type-arg]
             id="invalid parameter",
         ),
         pytest.param(
+            "mu_k = 0.3",
+            "mu_k = 0.3\nalpha_t = 0.5\nkappa = 5.0",
+            "[law].alpha_t = 0.5 is invalid: allowed alpha_t > C_max f_n kappa",
+            id="snap-back",
+        ),
+        pytest.param(
             "velocity = 0.1",
             "velocity = -0.1",
             "[[program]] #1.velocity",

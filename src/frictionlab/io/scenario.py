@@ -515,7 +515,11 @@ def parse_scenario(
     n = _reraise(
         "scenario", lambda: count_points(params, program or (), init, opts.n_points, sizes)
     )
-    _reraise("[initial]", lambda: init.state(params, n))
+    try:
+        init.state(params, n)
+    except ParameterError as exc:  # the snap-back check names a [law] field
+        section = "[law]" if exc.field in LAW_KEYS else "[initial]"
+        raise ParameterError(f"{section}.{exc.field}", exc.value, exc.allowed) from None
     if program is not None:
         _reraise("[[program]]", lambda: plan_program(program, n))
     inputs: dict[str, Any] = {
