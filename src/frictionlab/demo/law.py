@@ -281,7 +281,7 @@ def anisotropy_section(ctx: DemoContext) -> Section:
     )
     sec.add_figure(
         f"{rel_r}/friction.png",
-        "Rotated cone (beta = 0.05 along e_1): sliding along +e_1 and -e_1 gives different "
+        "Rotated cone (beta = 0.05 along e_1): sliding 5 m along +e_1 and -e_1 gives different "
         "static peaks and steady values +(mu_ss + |beta|) and -(mu_ss - |beta|).",
     )
     sec.add_figure(
@@ -296,12 +296,14 @@ def anisotropy_section(ctx: DemoContext) -> Section:
         "The same runs as friction ratio |f_t|/f_n against slip distance and time: the "
         "steady friction depends on the sliding direction, from C_2 mu_ss to C_1 mu_ss.",
     )
+    before_turn = ho.segments[1].last_row
     sec.notes.append(
         f"Rotation: steady f_t1/f_n = {final[0]:+.5f} forward, {final[1]:+.5f} backward; closed "
-        f"form +{mss + beta:.5f} and -{mss - beta:.5f}. Orthotropy: steady |f_t|/f_n along e_1 "
-        f"{ho.friction_ratio[ho.segments[1].last_row, 0]:.5f} (C_1 mu_ss = {C[0] * mss:.5f}), "
-        f"along e_2 {ho.friction_ratio[ho.segments[1].last_row, 3]:.5f} "
-        f"(C_2 mu_ss = {C[1] * mss:.5f})."
+        f"form +{mss + beta:.5f} and -{mss - beta:.5f}. Orthotropy, steady |f_t|/f_n: sliding "
+        f"along e_1 {ho.friction_ratio[before_turn, 0]:.5f} before the turn and "
+        f"{ho.friction_ratio[-1, 3]:.5f} after it (C_1 mu_ss = {C[0] * mss:.5f}); along e_2 "
+        f"{ho.friction_ratio[before_turn, 3]:.5f} before and {ho.friction_ratio[-1, 0]:.5f} "
+        f"after (C_2 mu_ss = {C[1] * mss:.5f})."
     )
     sec.parameters += [("orthotropy scenario", "orthotropy = [1, 0.6], beta = 0", "-")]
     return sec
