@@ -356,3 +356,35 @@ def test_failed_computation_exits_1_and_keeps_the_history(
     # step fails, and the history keeps the complete slide (initial row + 20 steps)
     assert len(h["step"]) == 21 and h["slip_1"][-1] == pytest.approx(0.2, rel=1e-12)
     assert (out / "friction.png").exists()
+
+
+def test_orthotropy_angle_in_degrees_equals_radians(tmp_path: Path) -> None:
+    base = GOOD.replace("mu_k = 0.3", "mu_k = 0.3\northotropy = [1.0, 0.6]")
+    (tmp_path / "deg.toml").write_text(
+        base.replace("mu_k = 0.3", "mu_k = 0.3\northotropy_angle_deg = 30.0")
+    )
+    (tmp_path / "rad.toml").write_text(
+        base.replace("mu_k = 0.3", f"mu_k = 0.3\northotropy_angle = {math.radians(30.0)!r}")
+    )
+    assert simulate(tmp_path / "deg.toml", tmp_path / "deg", "--no-plots") == 0
+    assert simulate(tmp_path / "rad.toml", tmp_path / "rad", "--no-plots") == 0
+    a, b = read_history(tmp_path / "deg")[1], read_history(tmp_path / "rad")[1]
+    np.testing.assert_array_equal(a["traction_2"], b["traction_2"])
+    assert np.abs(a["traction_2"]).max() > 1e-3  # the turned axes make the response non-coaxial
+    both = base.replace(
+        "mu_k = 0.3", "mu_k = 0.3\northotropy_angle = 0.1\northotropy_angle_deg = 5.0"
+    )
+    (tmp_path / "both.toml").write_text(both)
+    assert simulate(tmp_path / "both.toml", tmp_path / "both") == 2
+    assert not (tmp_path / "both").exists()
+
+
+def test_broken_pipe_is_not_a_traceback() -> None:
+    import subprocess
+    import sys
+
+    proc = subprocess.run(
+        f"{sys.executable} -m frictionlab --help | head -c 10",
+        shell=True, capture_output=True, text=True,
+    )  # fmt: skip
+    assert "Traceback" not in proc.stderr

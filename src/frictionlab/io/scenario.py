@@ -78,7 +78,8 @@ LAW_KEYS: dict[str, Any] = {
     "n": "num",
     "rotation": "vec2",
     "orthotropy": "vec2",
-    "orthotropy_angle": "num",
+    "orthotropy_angle": "num",  # rad, as in the Python API
+    "orthotropy_angle_deg": "num",  # the same angle in degrees (give one of the two)
     "orthotropy_convention": ORTHOTROPY_CONVENTIONS,
     "tear_k": "float",
     "U_law": U_LAWS,
@@ -184,6 +185,13 @@ def _parse_law(t: TomlTable) -> tuple[SubloadingParams, dict[str, Any]]:
             values[key] = t.get(key, str, choices=kind)
         given[key] = values[key]
     t.finish()
+    if "orthotropy_angle_deg" in values:
+        if "orthotropy_angle" in values:
+            raise InputError(
+                f"{t.where}: give orthotropy_angle (rad) or orthotropy_angle_deg (deg), not both"
+            )
+        deg = values.pop("orthotropy_angle_deg")
+        values["orthotropy_angle"] = np.radians(deg).tolist()
     params = _reraise(t.where, lambda: SubloadingParams(**values))
     return params, given
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import ArrayLike
 from numba import njit
 
 from frictionlab.errors import ParameterError
@@ -220,7 +221,7 @@ def size_after(
 
 
 # ============================================================================ public closed forms
-def U_function(R: np.ndarray, u: float, law: str = "cot") -> np.ndarray:
+def U_function(R: ArrayLike, u: float, law: str = "cot") -> np.ndarray:
     """U(R) of Eq (28) (``u cot(pi R/2)``) or Eq (30) (``-u ln R``); +inf at R = 0."""
     R = np.asarray(R, dtype=np.float64)
     with np.errstate(divide="ignore"):
@@ -231,21 +232,21 @@ def U_function(R: np.ndarray, u: float, law: str = "cot") -> np.ndarray:
     raise ParameterError("law", law, "'cot' or 'ln'")
 
 
-def ratio_closed_form(R0: np.ndarray, plastic_slip: np.ndarray, u: float) -> np.ndarray:
+def ratio_closed_form(R0: ArrayLike, plastic_slip: ArrayLike, u: float) -> np.ndarray:
     """Eq (29): R after accumulated plastic sliding ``plastic_slip`` [m] from R0."""
     R0 = np.asarray(R0, dtype=np.float64)
     up = np.asarray(plastic_slip, dtype=np.float64)
     return (2.0 / np.pi) * np.arccos(np.cos(_HALF_PI * R0) * np.exp(-_HALF_PI * u * up))
 
 
-def plastic_slip_for_ratio(R0: np.ndarray, R: np.ndarray, u: float) -> np.ndarray:
+def plastic_slip_for_ratio(R0: ArrayLike, R: ArrayLike, u: float) -> np.ndarray:
     """Inverse of Eq (29): ``(2/(pi u)) ln(cos(pi R0/2) / cos(pi R/2))`` [m]."""
     R0 = np.asarray(R0, dtype=np.float64)
     R = np.asarray(R, dtype=np.float64)
     return (2.0 / (np.pi * u)) * np.log(np.cos(_HALF_PI * R0) / np.cos(_HALF_PI * R))
 
 
-def ratcheting_slip_per_cycle(R_max: np.ndarray, u: float) -> np.ndarray:
+def ratcheting_slip_per_cycle(R_max: ArrayLike, u: float) -> np.ndarray:
     """Residual slip per traction cycle 0 -> R_max -> 0 with kappa = xi = 0 [m].
 
     ``(2/(pi u)) ln sec(pi R_max/2)`` (spec A6): the hallmark of the subloading concept.
@@ -254,7 +255,7 @@ def ratcheting_slip_per_cycle(R_max: np.ndarray, u: float) -> np.ndarray:
 
 
 def hold_recovery(
-    F0: np.ndarray, F_s: float, xi: float, time: np.ndarray, n: float = 1.0
+    F0: ArrayLike, F_s: float, xi: float, time: ArrayLike, n: float = 1.0
 ) -> np.ndarray:
     """F after a hold of ``time`` [s] from F0 (no sliding), closed forms of spec §2.6."""
     F0 = np.asarray(F0, dtype=np.float64)
@@ -270,9 +271,7 @@ def hold_recovery(
     return F_s * (1.0 - np.where(base > 0, np.maximum(base, 0.0) ** (1.0 / (1.0 - n)), 0.0))
 
 
-def steady_size(
-    velocity: np.ndarray, kappa: float, xi: float, F_s: float, F_k: float
-) -> np.ndarray:
+def steady_size(velocity: ArrayLike, kappa: float, xi: float, F_s: float, F_k: float) -> np.ndarray:
     """Steady-sliding size F_ss(V) = (kappa V + xi)/(kappa V/F_k + xi/F_s), spec §2.6.
 
     For the cone this is mu_ss(V), the steady friction coefficient at sliding speed V.

@@ -271,7 +271,7 @@ class SubloadingParams:
         """Number of points the parameter arrays describe (1 when all are scalars)."""
         return self._n_points
 
-    @property
+    @functools.cached_property
     def per_point(self) -> bool:
         """True when some numeric parameter is given per point."""
         return any(

@@ -20,6 +20,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import ArrayLike
 from numba import njit
 
 from frictionlab.errors import ParameterError
@@ -105,7 +106,7 @@ def chi_max(surface: str, tear_k: float = 1.0) -> float:
     return math.inf
 
 
-def g_function(surface: str, chi: np.ndarray, tear_k: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
+def g_function(surface: str, chi: ArrayLike, tear_k: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
     """Vectorised g(chi) and g'(chi) of a closed surface (Eqs 51–54); +inf outside the domain."""
     code = _code(surface)
     if code == COULOMB:
@@ -118,7 +119,7 @@ def g_function(surface: str, chi: np.ndarray, tear_k: float = 1.0) -> tuple[np.n
     return g, dg
 
 
-def g_inverse(surface: str, G: np.ndarray, tear_k: float = 1.0) -> np.ndarray:
+def g_inverse(surface: str, G: ArrayLike, tear_k: float = 1.0) -> np.ndarray:
     """chi* with g(chi*) = G for G >= 1 (the branch chi >= 0); spec §2.10 table."""
     code = _code(surface)
     G = np.asarray(G, dtype=np.float64)
@@ -138,8 +139,8 @@ def g_inverse(surface: str, G: np.ndarray, tear_k: float = 1.0) -> np.ndarray:
 
 def friction_coefficient_on_yield(
     surface: str,
-    normal_traction: np.ndarray,
-    F: np.ndarray,
+    normal_traction: ArrayLike,
+    F: ArrayLike,
     M: float = 1.0,
     tear_k: float = 1.0,
 ) -> np.ndarray:
@@ -159,9 +160,9 @@ def friction_coefficient_on_yield(
 
 def yield_function(
     surface: str,
-    traction: np.ndarray,
-    rotation: np.ndarray | tuple[float, float] = (0.0, 0.0),
-    axis_factors: np.ndarray | tuple[float, float] = (1.0, 1.0),
+    traction: ArrayLike,
+    rotation: ArrayLike | tuple[float, float] = (0.0, 0.0),
+    axis_factors: ArrayLike | tuple[float, float] = (1.0, 1.0),
     tear_k: float = 1.0,
 ) -> np.ndarray:
     """f(f, beta) of Eqs (48)/(67)/(82)/(95) for tractions ``(..., 3) = (f_t1, f_t2, f_n)``.
