@@ -47,6 +47,19 @@ MAX_ITERATIONS = 100
 
 
 @njit(cache=True)
+def _returned(fh1t: float, fh2t: float, A1: float, A2: float, gamma: float):  # fmt: skip
+    """Backward-Euler return fhat_i = fhat_i^tr A_i^2/(A_i^2 + gamma).
+
+    Returns (d1, d2, a1, a2, fh1, fh2) with d_i = A_i^2 + gamma and a_i = A_i^2/d_i.
+    """
+    d1 = A1 * A1 + gamma
+    d2 = A2 * A2 + gamma
+    a1 = A1 * A1 / d1
+    a2 = A2 * A2 / d2
+    return d1, d2, a1, a2, fh1t * a1, fh2t * a2
+
+
+@njit(cache=True)
 def _state_at(
     q: float,
     omq: float,
@@ -68,12 +81,7 @@ def _state_at(
         return (phi - R * F, 0.0, 0.0, 0.0, dlam, R, dR, F, dF, 0.0, 0.0, 0.0, 0.0, phi,
                 dR0, 0.0, 0.0)  # fmt: skip
     gamma = Aref * Aref * q / omq
-    d1 = A1 * A1 + gamma
-    d2 = A2 * A2 + gamma
-    a1 = A1 * A1 / d1
-    a2 = A2 * A2 / d2
-    fh1 = fh1t * a1
-    fh2 = fh2t * a2
+    d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
     t1 = fh1t / d1  # = fh1 / A1^2
     t2 = fh2t / d2
     W = math.hypot(t1, t2)
@@ -340,12 +348,7 @@ def step_points(
             continue
         (r, r_gamma, phi_1, phi_2, dlam, R, _, F, _, phi_fn, gamma, W, hard, phi, dR0,
          _, _) = res  # fmt: skip
-        d1 = A1 * A1 + gamma
-        d2 = A2 * A2 + gamma
-        a1 = A1 * A1 / d1
-        a2 = A2 * A2 / d2
-        fh1 = fh1t * a1
-        fh2 = fh2t * a2
+        d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
         # 6. update (principal axes)
         tb1 = (fh1t / d1) / W  # flow direction t-bar at t_{n+1}, Eqs (87), (99)
         tb2 = (fh2t / d2) / W
