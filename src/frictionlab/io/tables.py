@@ -11,7 +11,9 @@ Layout of a file written by :func:`write_csv_atomic`::
 Comment lines start with ``#``; the units line is the last comment line and lists one
 ``name=unit`` pair per column (``1`` for dimensionless). Numbers are written with 17
 significant digits, so a read-back reproduces every float64 exactly. Non-finite values
-are refused: a table never carries NaN or infinity.
+are refused: a table never carries NaN or infinity. An undefined value is given as a
+masked entry (``numpy.ma``) and written as an empty field; :func:`read_csv` reads a
+numeric column with empty fields back as a masked array.
 """
 
 from __future__ import annotations
@@ -62,7 +64,10 @@ def format_csv(
     for name in names:
         if not name or any(ch in name for ch in ",=#\n\r") or name != name.strip():
             raise ParameterError("column name", name, "non-empty, without , = # or line breaks")
-    arrays = [np.asarray(columns[name]) for name in names]
+    arrays = [
+        columns[name] if np.ma.isMaskedArray(columns[name]) else np.asarray(columns[name])
+        for name in names
+    ]
     lengths = {a.shape for a in arrays}
     if any(a.ndim != 1 for a in arrays) or len(lengths) != 1:
         shapes = {name: a.shape for name, a in zip(names, arrays, strict=True)}
@@ -85,6 +90,11 @@ def format_csv(
 
 
 def _format_column(name: str, values: np.ndarray) -> list[str]:
+    if np.ma.isMaskedArray(values):
+        mask = np.ma.getmaskarray(values)
+        filled = _format_column(name, np.asarray(np.ma.getdata(values)[~mask]))
+        texts = iter(filled)
+        return ["" if m else next(texts) for m in mask.tolist()]
     if values.dtype.kind == "b":
         return ["true" if v else "false" for v in values.tolist()]
     if values.dtype.kind in "iu":
@@ -161,8 +171,16 @@ def read_csv(path: str | os.PathLike[str]) -> CsvTable:
     columns: dict[str, np.ndarray] = {}
     for k, name in enumerate(names):
         raw = [row[k] for row in rows]
+        empty = [v == "" for v in raw]
         try:
-            columns[name] = np.array([float(v) for v in raw], dtype=np.float64)
+            values = np.array([0.0 if e else float(v) for v, e in zip(raw, empty, strict=True)])
         except ValueError:
             columns[name] = np.array(raw, dtype=object)
+            continue
+        if any(empty) and not all(empty):
+            columns[name] = np.ma.MaskedArray(values, mask=np.array(empty))
+        elif any(empty):  # an all-empty column: undefined throughout
+            columns[name] = np.ma.masked_all(len(raw))
+        else:
+            columns[name] = values
     return CsvTable(columns, units, comments)
