@@ -90,8 +90,13 @@ def reference_friction(
             ry2 += f * y2  # Eq 9
             rz += 2.0 * f  # Eq 5: both families
         l_sum += 2.0 * sum(totals)
+    springs = 2.0 * len(points) * len(shifts)  # both families, every time sample
     return {
-        "mu_x": (rx1 + rx2) / rz,
-        "mu_y": (ry1 + ry2) / rz,
-        "mu_apparent": math.hypot(rx1 + rx2, ry1 + ry2) / l_sum,
+        "mu_x": (rx1 + rx2) / rz if rz > 0.0 else math.nan,
+        "mu_y": (ry1 + ry2) / rz if rz > 0.0 else math.nan,
+        "mu_apparent": math.hypot(rx1 + rx2, ry1 + ry2) / l_sum if l_sum != 0.0 else math.nan,
+        # time averages per spring (N): resisting force and compressive force (Eqs 5-9)
+        "force_x": (rx1 + rx2) / springs,
+        "force_y": (ry1 + ry2) / springs,
+        "compressed_force": rz / springs,
     }
