@@ -52,7 +52,9 @@ def plot_adhesion_mu(
     order = np.argsort(sweep.load)
     for k, beta in enumerate(sweep.beta_deg):
         x, y = _defined(sweep.load[order], sweep.mu_apparent[order, k] / sweep.mu0)
-        line = ax.plot(x, y, marker=".", label=f"{label}beta = {beta:g} deg")[0]
+        # two branches: mu_a diverges with opposite signs on either side of L = 0
+        line = ax.plot(x[x > 0], y[x > 0], marker=".", label=f"{label}beta = {beta:g} deg")[0]
+        ax.plot(x[x < 0], y[x < 0], marker=".", color=line.get_color())
         if sweep.mu_no_adhesion is not None:
             xn, yn = _defined(sweep.load[order], sweep.mu_no_adhesion[order, k] / sweep.mu0)
             ax.plot(xn, yn, "--", color=line.get_color(), lw=1.0)
