@@ -23,6 +23,11 @@ if TYPE_CHECKING:
 
 __all__ = [
     "adhesion_figure",
+    "fig10_adhesion",
+    "fig11_wear",
+    "fig12_hierarchy_1d",
+    "fig13_hierarchy_2d",
+    "fig14_hierarchy_wear",
     "hierarchy_figure",
     "hierarchy_wear_figure",
     "plot_adhesion_force",
@@ -208,4 +213,84 @@ def hierarchy_wear_figure(history: HierarchyWearHistory, title: str | None = Non
         plot_hierarchy_wear(history, ax=fig.add_subplot(1, min(count, 3), k + 1), beta_index=k)
     if title:
         fig.suptitle(title, fontsize=10)
+    return fig
+
+
+# --------------------------------------------------------------- figure families 10-14
+
+
+def fig10_adhesion(cases: dict[str, AdhesionSweep]) -> Figure:
+    """Fig 10: mu_a/mu0 and the stretched fraction vs load for each adhesion case."""
+    fig = new_figure(12.0, 4.5)
+    ax_mu, ax_t = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    for name, sweep in cases.items():
+        plot_adhesion_mu(sweep, ax=ax_mu, label=f"{name}, ")
+        plot_tensile_fraction(sweep, ax=ax_t, label=f"{name}, ")
+    fig.suptitle("Fig 10 family: adhesion (k_t = k_c / 2), load per spring in units of k_c A")
+    return fig
+
+
+def fig11_wear(cases: dict[str, WearHistory]) -> Figure:
+    """Fig 11: mu/mu0 vs t/T_w for each wear case."""
+    fig = new_figure(5.0 * len(cases), 4.2)
+    for k, (name, history) in enumerate(cases.items()):
+        ax = plot_wear(history, ax=fig.add_subplot(1, len(cases), k + 1))
+        ax.set_title(f"{name} ({history.method})", fontsize=9)
+    fig.suptitle("Fig 11 family: Archard wear, mu(t) down to mu0 at T_w")
+    return fig
+
+
+def fig12_hierarchy_1d(cases: dict[str, HierarchyResult]) -> Figure:
+    """Fig 12: mu_n/mu0 vs n at beta = 0 (left) and 90 deg (right), Eqs 33-34 dotted."""
+    from frictionlab.roughness.closed_forms import (
+        hierarchy_flat_on_wedge_90deg,
+        hierarchy_wedge_on_wedge_90deg,
+    )
+
+    fig = new_figure(12.0, 4.8)
+    axes = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    for name, result in cases.items():
+        n = np.arange(result.n_levels + 1)
+        for k, ax in enumerate(axes):
+            x, y = _defined(n, result.mu[:, k] / result.mu0)
+            ax.plot(x, y, marker="o", ms=3, label=name)
+        if name.startswith("sine"):  # the "red curves": Eqs 33-34 at tan(phi) = 2/pi
+            phi = float(np.degrees(np.arctan(2.0 / np.pi)))
+            closed = (
+                hierarchy_flat_on_wedge_90deg if "flat" in name else hierarchy_wedge_on_wedge_90deg
+            )
+            axes[1].plot(n, closed(result.mu0, phi, n) / result.mu0, "r:", lw=1.2)
+    for ax, beta in zip(axes, result.beta_deg[:2], strict=True):
+        ax.set_yscale("log")
+        ax.set_xlabel("number of levels n")
+        ax.set_ylabel("mu_n / mu0")
+        ax.set_title(f"beta = {beta:g} deg (red dotted: Eqs 33-34, mean slope)", fontsize=9)
+        ax.grid(True, alpha=0.3, which="both")
+    axes[1].legend(fontsize=6, ncol=2)
+    fig.suptitle("Fig 12 family: 1-D hierarchies (wedges: Eqs 15-16 recursion; sines: lattice)")
+    return fig
+
+
+def fig13_hierarchy_2d(cases: dict[str, HierarchyResult]) -> Figure:
+    """Fig 13: mu_n/mu0 vs beta for every level count, one panel per surface."""
+    fig = new_figure(5.0 * len(cases), 4.2)
+    for k, (name, result) in enumerate(cases.items()):
+        ax = fig.add_subplot(1, len(cases), k + 1)
+        for i in range(result.n_levels + 1):
+            x, y = _defined(result.beta_deg, result.mu[i] / result.mu0)
+            ax.plot(x, y, marker=".", label=f"n = {i}")
+        ax.set_xlabel("beta (deg)")
+        ax.set_ylabel("mu_n / mu0")
+        ax.set_title(f"lambda = {name.replace('l', '').replace('_', ', ')}", fontsize=9)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle("Fig 13 family: 2-D hierarchies of sin x sin y levels vs sliding direction")
+    return fig
+
+
+def fig14_hierarchy_wear(history: HierarchyWearHistory) -> Figure:
+    """Fig 14: mu_i/mu0 of every level over the life of a worn hierarchy."""
+    fig = new_figure(7.0, 4.5)
+    plot_hierarchy_wear(history, ax=fig.add_subplot())
+    fig.suptitle("Fig 14 family: hierarchy with wear (Eq 35 windows, innermost first)")
     return fig
