@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import argparse
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -138,9 +139,11 @@ def _extensions(scenario: RoughnessScenario) -> dict[str, Any]:
     s = scenario.settings
     if scenario.adhesion is not None:
         a = scenario.adhesion
+        kt = 0.5 * s.k_c if a.k_t is None else a.k_t
         out["adhesion"] = adhesion_sweep(
             scenario.lower, scenario.upper, scenario.mu0, a.loads, a.beta_deg, k_t=a.k_t,
-            compare_without_adhesion=a.compare_without_adhesion, settings=s,
+            compare_without_adhesion=a.compare_without_adhesion,
+            settings=replace(s, k_t=kt, detachment=a.detachment),
         )  # fmt: skip
     if scenario.wear is not None:
         w = scenario.wear
@@ -224,7 +227,7 @@ def _extension_summary(scenario: RoughnessScenario, results: dict[str, Any]) -> 
             "mu_apparent": [
                 [None if v is np.ma.masked else float(v) for v in row] for row in sweep.mu_apparent
             ],
-            "detachment": "none (stretched springs never detach; spec 8.7 default)",
+            "detachment_m": scenario.adhesion.detachment if scenario.adhesion else None,
         }
     if "wear" in results:
         history: WearHistory = results["wear"]

@@ -32,6 +32,7 @@ Layout (every unknown key is an error; lengths in m, angles in degrees)::
     [adhesion]                     # optional: load sweep with tensile springs (Eqs 21-22)
     loads = [2.0, 1.0, 0.5, 0.0, -0.1]   # N per spring; or { start, stop, count }
     k_t = 0.5                      # N/m, default k_c / 2
+    detachment = 0.1               # m, cut-off elongation; default: never detach
     beta_deg = [0.0, 90.0]         # default: [sliding].beta_deg
     compare_without_adhesion = true
     [wear]                         # optional: Archard wear, mu(t) (Eqs 23-28w)
@@ -120,6 +121,7 @@ class AdhesionOptions:
     k_t: float | None
     beta_deg: np.ndarray
     compare_without_adhesion: bool
+    detachment: float | None = None
 
 
 @dataclass(frozen=True)
@@ -295,9 +297,16 @@ def _adhesion(table: Table, betas: np.ndarray, settings: LatticeSettings) -> Adh
     if settings.control != "load":
         raise InputError(f"{table.where} needs [sliding].control = 'load' (a load sweep)")
     compare = table.get("compare_without_adhesion", bool, True)
+    detachment = None
+    if "detachment" in table:
+        detachment = table.get(
+            "detachment", float, check=lambda v: v > 0.0, allowed="a cut-off elongation > 0 m"
+        )
+        if kt_value == 0.0:
+            raise InputError(f"{table.where}.detachment needs tensile springs (k_t > 0)")
     directions = _own_directions(table, betas)
     table.finish()
-    return AdhesionOptions(loads, k_t, directions, compare)
+    return AdhesionOptions(loads, k_t, directions, compare, detachment)
 
 
 def _wear(table: Table, betas: np.ndarray) -> WearOptions:

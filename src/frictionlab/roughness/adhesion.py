@@ -20,9 +20,12 @@ Undefined values are **masked** (``numpy.ma``), never NaN or infinite: ``mu_appa
 L = 0 (Eq 22 singular), ``mu_compressed`` where no spring is compressed (then R = 0),
 ``mu_no_adhesion`` at L <= 0 (no equilibrium without tensile springs).
 
-Options (spec section 8.7): ``k_t`` defaults to ``k_c / 2`` (the paper's value); the
-paper gives no detachment criterion, so stretched springs never detach (no cut-off
-elongation; this is the spec's default and the only law implemented).
+Options (spec section 8.7): ``k_t`` defaults to ``k_c / 2`` (the paper's value). The
+paper gives no detachment criterion, so by default stretched springs never detach; the
+lattice option ``detachment`` (a cut-off elongation in m, off by default) lets a spring
+stretched beyond it carry no force. The load balance then has several roots and the
+largest offset is taken (pulling apart from full contact); a load below the pull-off
+force is an error.
 """
 
 from __future__ import annotations
@@ -153,6 +156,10 @@ class AdhesionSweep:
         }
 
 
+def _number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
 def _loads(loads: ArrayLike) -> FloatArray:
     try:
         arr = np.array(loads, dtype=np.float64, ndmin=1)
@@ -199,8 +206,10 @@ def adhesion_sweep(
         by the sweep; ``control`` must be ``"load"``.
     """
     if settings is None:
+        k_c = options.get("k_c", 1.0)
+        tensile = DEFAULT_TENSILE_RATIO * k_c if k_t is None and _number(k_c) else k_t
         try:
-            settings = LatticeSettings(**options)
+            settings = LatticeSettings(**{**options, "k_t": tensile})
         except TypeError as exc:
             raise ParameterError(
                 "options", sorted(options), f"fields of LatticeSettings ({exc})"
@@ -220,7 +229,7 @@ def adhesion_sweep(
         run = replace(settings, load=float(load), k_t=kt)
         polars.append(friction_polar(lower, upper, mu0, beta_deg, settings=run))
         if compare_without_adhesion and load > 0.0:
-            run = replace(settings, load=float(load), k_t=0.0)
+            run = replace(settings, load=float(load), k_t=0.0, detachment=None)
             plain.append(friction_polar(lower, upper, mu0, beta_deg, settings=run).mu)
         else:
             plain.append(None)

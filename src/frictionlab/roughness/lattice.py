@@ -104,6 +104,12 @@ class LatticeSettings:
     k_c, k_t:
         Compressive and tensile spring stiffness (N/m); ``0 <= k_t <= k_c``. Tensile springs
         carry load but no friction (spec section 3.5).
+    detachment:
+        Cut-off elongation (m) beyond which a stretched spring detaches and carries no
+        force (spec section 8.7: the paper gives no criterion). ``None`` (default): never.
+        Needs ``k_t > 0``. The load balance is then not monotone; the largest offset c
+        that carries the load is taken (the state reached by pulling apart from full
+        contact), and a load below the pull-off force is an error.
     stations:
         Stations per common period cell: an int (1-D; in 2-D the same count on both axes)
         or (nx, ny). ``None``: 2000 per shortest period (1-D), 64 per shortest period and
@@ -140,6 +146,7 @@ class LatticeSettings:
     separation: float | None = None
     k_c: float = 1.0
     k_t: float = 0.0
+    detachment: float | None = None
     stations: int | tuple[int, int] | None = None
     time_samples: int = 400
     travel: str | float = "auto"
@@ -158,6 +165,14 @@ class LatticeSettings:
             raise ParameterError("k_t", self.k_t, f"0 <= k_t <= k_c = {self.k_c}")
         object.__setattr__(self, "k_c", float(self.k_c))
         object.__setattr__(self, "k_t", float(self.k_t))
+        if self.detachment is not None:
+            if not (_finite(self.detachment) and self.detachment > 0.0):
+                raise ParameterError(
+                    "detachment", self.detachment, "None or a cut-off elongation > 0 m"
+                )
+            if self.k_t == 0.0:
+                raise ParameterError("detachment", self.detachment, "None unless k_t > 0")
+            object.__setattr__(self, "detachment", float(self.detachment))
         if self.control == "load":
             if self.separation is not None:
                 raise ParameterError("separation", self.separation, "None with control='load'")
@@ -743,6 +758,7 @@ def _direction(
     iterations = 0
     first_invalid: tuple[int, int, int] | None = None
     full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
+    detach = math.inf if settings.detachment is None else settings.detachment
     for j, (sx, sy) in enumerate(path.shifts):
         whole = _whole_stations(sx - px, sy - py, lat.spacing, lat.geometry.dimension)
         if whole is not None and full_whole is not None:
@@ -761,11 +777,18 @@ def _direction(
                 kx = ky = 0
             res = sample(
                 lat.z1, h1x, h1y, den1, z2, h2x, h2y, den2, lat.nx, lat.ny, kx, ky,
-                settings.k_c, settings.k_t, lat.mode, lat.load, c,
+                settings.k_c, settings.k_t, lat.mode, lat.load, c, detach,
             )  # fmt: skip
             if lat.mode == _kernels.MODE_FULL and whole is not None:
                 full_whole = res
         c_new, iters, fs, xs_, ys_, ft, n_comp, n_tens, n_inv, first, family = res
+        if lat.mode == _kernels.MODE_LOAD and math.isnan(c_new):
+            raise ParameterError(
+                "load",
+                settings.load,
+                f"above the pull-off load: with detachment = {settings.detachment} m the "
+                f"stretched springs cannot carry it (beta = {beta:g} deg)",
+            )
         if lat.mode == _kernels.MODE_LOAD:
             c = c_new  # warm start of the next load balance
         iterations = max(iterations, iters)

@@ -157,6 +157,8 @@ BAD = [
         "loads = [1.0e-3, 5.0e-5, 0.0, -1.0e-5]",
         "loads = { start = 1.0, stop = -1.0, count = 0 }"), "count"),
     ("k_t above k_c", SCENARIO.replace("loads = [", "k_t = 2.0\nloads = ["), r"\[adhesion\]\.k_t"),
+    ("negative detachment", SCENARIO.replace("loads = [", "detachment = -1.0\nloads = ["),
+     r"\[adhesion\]\.detachment"),
     ("levels not nested", SCENARIO.replace("ratio = 10.0", "ratio = 1.0"), "ratio"),
     ("inner level not nested", SCENARIO.split("[hierarchy]")[0] + (
         "[hierarchy]\n[[hierarchy.inner]]\n"

@@ -138,3 +138,63 @@ def test_bad_arguments() -> None:
         adhesion_sweep(SINE, SINE, 0.3, [1.0], [0.0], control="separation", separation=0.1)
     with pytest.raises(ParameterError, match="load"):  # no tension without tensile springs
         adhesion_sweep(SINE, SINE, 0.3, [0.5, -0.1], [0.0], k_t=0.0)
+
+
+class TestDetachment:
+    """Option ``detachment`` (spec 8.7, off by default): springs let go beyond a cut-off."""
+
+    @pytest.mark.parametrize("seed", range(6))
+    def test_balance_takes_the_largest_root(self, seed) -> None:
+        from frictionlab.roughness import _kernels as K
+
+        rng = np.random.default_rng(seed)
+        gap = rng.standard_normal(40)
+        detach, kt = 0.4, 0.5
+
+        def mean(c: float) -> float:
+            u = c - gap
+            return float(np.mean(np.where(u > 0, u, np.where(u >= -detach, kt * u, 0.0))))
+
+        for load in (0.3, 0.0, -0.001):
+            c, _ = K.solve_offset_detach_nb(gap, 1.0, kt, load, detach)
+            c_np, _ = K.solve_offset_detach_np(gap, 1.0, kt, load, detach)
+            assert c == pytest.approx(c_np, rel=1e-12, abs=1e-12)
+            assert mean(c) == pytest.approx(load, abs=1e-12)
+            above = c + np.geomspace(1e-9, 10.0, 400)  # no other root above it
+            assert all(mean(x) > load for x in above)
+        c, _ = K.solve_offset_detach_nb(gap, 1.0, kt, -10.0, detach)  # beyond pull-off
+        assert math.isnan(c)
+
+    @pytest.mark.parametrize("engine", ["numba", "numpy"])
+    @pytest.mark.parametrize("load", [0.0, -0.004, 0.05])
+    def test_lattice_agrees_with_the_reference_loop(self, engine, load) -> None:
+        s = gen.sinusoid(0.2, 1.0)
+        n, nt = 30, 6
+        sweep = adhesion_sweep(
+            s, s, 0.3, [load], [0.0], k_t=0.5, stations=n, time_samples=nt, engine=engine,
+            detachment=0.15, compare_without_adhesion=False,
+        )  # fmt: skip
+        xs = [(i + 0.5) / n for i in range(n)]
+        shifts = [(j / nt, 0.0) for j in range(nt)]
+        ref = reference_friction(s, s, 0.3, 0.0, xs, [0.0], shifts, load, kt=0.5, detach=0.15)
+        assert float(sweep.force_x[0, 0]) == pytest.approx(ref["force_x"], rel=1e-9, abs=1e-15)
+        assert float(sweep.compressed_force[0, 0]) == pytest.approx(
+            ref["compressed_force"], rel=1e-9
+        )
+
+    def test_limits(self) -> None:
+        loads = [0.5, 0.0, -0.01]
+        never = adhesion_sweep(SINE, SINE, 0.3, loads, [0.0], **FAST)
+        far = adhesion_sweep(SINE, SINE, 0.3, loads, [0.0], detachment=10.0, **FAST)
+        np.testing.assert_allclose(far.tangential_force, never.tangential_force, rtol=1e-12)
+        short = adhesion_sweep(SINE, SINE, 0.3, loads, [0.0], detachment=0.5, **FAST)
+        # letting go weakens adhesion: fewer springs pull, so more must be pushed apart
+        # and at L = 0 fewer springs remain compressed
+        assert short.tangential_force[1, 0] < never.tangential_force[1, 0]
+        assert np.all(short.tensile_fraction_mean <= never.tensile_fraction_mean + 1e-15)
+        with pytest.raises(ParameterError, match="pull-off"):
+            adhesion_sweep(SINE, SINE, 0.3, [-0.2], [0.0], detachment=0.05, **FAST)
+        with pytest.raises(ParameterError, match="detachment"):
+            adhesion_sweep(SINE, SINE, 0.3, [0.5], [0.0], k_t=0.0, detachment=0.1, **FAST)
+        with pytest.raises(ParameterError, match="detachment"):
+            adhesion_sweep(SINE, SINE, 0.3, [0.5], [0.0], detachment=-1.0, **FAST)
