@@ -50,7 +50,8 @@ def apply_overrides(data: dict[str, Any], overrides: Iterable[str]) -> dict[str,
     """Return a copy of ``data`` with ``section.key=value`` overrides applied.
 
     The value is parsed as a TOML value (``0.6``, ``"tear"``, ``[1.0, 0.5]``); a bare
-    word that is not valid TOML is taken as a string.
+    word that is not valid TOML is taken as a string. A numeric part selects an entry
+    of an array of tables, counted from 1 as in the messages (``program.2.steps=50``).
     """
     result = _deep_copy(data)
     for item in overrides:
@@ -64,14 +65,31 @@ def apply_overrides(data: dict[str, Any], overrides: Iterable[str]) -> dict[str,
             value = tomllib.loads(f"v = {text.strip()}")["v"]
         except tomllib.TOMLDecodeError:
             value = text.strip()
-        node = result
+        node: Any = result
         for part in parts[:-1]:
+            if isinstance(node, list):
+                node = _list_entry(node, part, item)
+                continue
             child = node.setdefault(part, {})
-            if not isinstance(child, dict):
+            if not isinstance(child, dict | list):
                 raise InputError(f"override '{item}': '{part}' is not a table")
             node = child
+        if isinstance(node, list):
+            raise InputError(f"override '{item}': '{parts[-2]}' is an array; name an entry")
         node[parts[-1]] = value
     return result
+
+
+def _list_entry(node: list[Any], part: str, item: str) -> dict[str, Any]:
+    """Entry ``part`` (1-based) of an array of tables."""
+    if not part.isdigit() or not 1 <= int(part) <= len(node):
+        raise InputError(
+            f"override '{item}': '{part}' must be an entry number from 1 to {len(node)}"
+        )
+    entry = node[int(part) - 1]
+    if not isinstance(entry, dict):
+        raise InputError(f"override '{item}': entry {part} is not a table")
+    return entry
 
 
 def _deep_copy(obj: Any) -> Any:
@@ -105,6 +123,10 @@ class Table:
 
     def keys(self) -> list[str]:
         return list(self._data)
+
+    def mapping(self) -> dict[str, Any]:
+        """A shallow copy of the table (does not mark any key as used)."""
+        return dict(self._data)
 
     def _name(self, key: str) -> str:
         return f"{self.where}.{key}" if self.where else key

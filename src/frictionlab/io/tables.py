@@ -1,19 +1,22 @@
-"""CSV tables with a units header, written atomically.
+"""CSV tables with a units header, written atomically and read back exactly.
 
 Layout of a file written by :func:`write_csv_atomic`::
 
     # <header comment line 1>
     # <header comment line 2>
-    # units: beta_deg=deg, mu_x=1, ...
-    beta_deg,mu_x,...
-    0,0.3,...
+    # units: time [s], slip_1 [m], traction_1 [Pa], status [1]
+    time,slip_1,traction_1,status
+    0.0,0.0,0.0,initial
+    ...
 
-Comment lines start with ``#``; the units line is the last comment line and lists one
-``name=unit`` pair per column (``1`` for dimensionless). Numbers are written with 17
-significant digits, so a read-back reproduces every float64 exactly. Non-finite values
-are refused: a table never carries NaN or infinity. An undefined value is given as a
-masked entry (``numpy.ma``) and written as an empty field; :func:`read_csv` reads a
-numeric column with empty fields back as a masked array.
+Comment lines start with ``#``; the units line is the last comment line and gives one
+``name [unit]`` per column (``1`` for dimensionless and text columns). Floats are written
+in the shortest form that reads back to the same float64 (``repr``), so a round trip is
+exact. Non-finite values are refused: a table never carries NaN or infinity. Booleans are
+written as ``true``/``false``; text cells may not contain commas or line breaks. An
+undefined value is given as a masked entry (``numpy.ma``) and written as an empty field.
+:func:`read_csv` reads such files (a numeric column with empty fields comes back as a
+masked array), and any plain CSV with a header row.
 """
 
 from __future__ import annotations
@@ -21,7 +24,7 @@ from __future__ import annotations
 import io
 import math
 import os
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 
 import numpy as np
@@ -34,8 +37,11 @@ __all__ = ["CsvTable", "format_csv", "read_csv", "write_csv_atomic"]
 _UNITS_PREFIX = "# units:"
 
 
-class CsvTable:
-    """A table read back by :func:`read_csv`: columns, units and comment lines."""
+class CsvTable(Mapping[str, np.ndarray]):
+    """A table read by :func:`read_csv`: a mapping column name -> array, plus units and comments.
+
+    Numeric columns are float64 arrays, other columns object arrays of strings.
+    """
 
     def __init__(
         self, columns: dict[str, np.ndarray], units: dict[str, str], comments: list[str]
@@ -47,6 +53,12 @@ class CsvTable:
     def __getitem__(self, name: str) -> np.ndarray:
         return self.columns[name]
 
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.columns)
+
+    def __len__(self) -> int:
+        return len(self.columns)
+
 
 def format_csv(
     columns: Mapping[str, np.ndarray],
@@ -56,14 +68,14 @@ def format_csv(
     """Render ``columns`` (equal-length 1-D arrays) as CSV text with a units header.
 
     Raises :class:`~frictionlab.errors.ParameterError` for ragged columns, non-finite
-    values, column names that would break the format, or units of unknown columns.
+    values, column names or text that would break the format, or units of unknown columns.
     """
     if not columns:
         raise ParameterError("columns", "{}", "at least one column")
     names = list(columns)
     for name in names:
-        if not name or any(ch in name for ch in ",=#\n\r") or name != name.strip():
-            raise ParameterError("column name", name, "non-empty, without , = # or line breaks")
+        if not name or any(ch in name for ch in ",[]#\n\r") or name != name.strip():
+            raise ParameterError("column name", name, "non-empty, without , [ ] # or line breaks")
     arrays = [
         columns[name] if np.ma.isMaskedArray(columns[name]) else np.asarray(columns[name])
         for name in names
@@ -80,7 +92,7 @@ def format_csv(
     if header_comment:
         for line in header_comment.splitlines():
             out.write(f"# {line}".rstrip() + "\n")
-    unit_items = ", ".join(f"{name}={units.get(name, '1')}" for name in names)
+    unit_items = ", ".join(f"{name} [{units.get(name, '1')}]" for name in names)
     out.write(f"{_UNITS_PREFIX} {unit_items}\n")
     out.write(",".join(names) + "\n")
     columns_text = [_format_column(name, a) for name, a in zip(names, arrays, strict=True)]
@@ -90,10 +102,9 @@ def format_csv(
 
 
 def _format_column(name: str, values: np.ndarray) -> list[str]:
-    if np.ma.isMaskedArray(values):
+    if np.ma.isMaskedArray(values):  # undefined entries: empty fields
         mask = np.ma.getmaskarray(values)
-        filled = _format_column(name, np.asarray(np.ma.getdata(values)[~mask]))
-        texts = iter(filled)
+        texts = iter(_format_column(name, np.asarray(np.ma.getdata(values)[~mask])))
         return ["" if m else next(texts) for m in mask.tolist()]
     if values.dtype.kind == "b":
         return ["true" if v else "false" for v in values.tolist()]
@@ -104,18 +115,13 @@ def _format_column(name: str, values: np.ndarray) -> list[str]:
         bad = [v for v in floats if not math.isfinite(v)]
         if bad:
             raise ParameterError(f"column {name}", bad[0], "finite numbers only")
-        return [_format_float(v) for v in floats]
+        return [repr(v) for v in floats]
     if values.dtype.kind in "UO":
         text = [str(v) for v in values.tolist()]
         if any(ch in t for t in text for ch in ",\n\r"):
             raise ParameterError(f"column {name}", text, "text without commas or line breaks")
         return text
     raise ParameterError(f"column {name}", str(values.dtype), "bool, integer, float or text")
-
-
-def _format_float(value: float) -> str:
-    text = f"{value:.17g}"
-    return "0" if text == "-0" else text
 
 
 def write_csv_atomic(
@@ -131,10 +137,9 @@ def write_csv_atomic(
     path:
         Target file; its directory is created if needed.
     columns:
-        Column name -> 1-D array (all of the same length). Floats are written with 17
-        significant digits; NaN and infinities are refused.
+        Column name -> 1-D array (all of the same length).
     units:
-        Column name -> unit string (SI, e.g. ``"m"``, ``"N"``, ``"deg"``); columns
+        Column name -> unit string (SI, e.g. ``"m"``, ``"Pa"``, ``"deg"``); columns
         without an entry are written as dimensionless (``1``).
     header_comment:
         Free text written as ``#`` comment lines above the units line.
@@ -143,44 +148,58 @@ def write_csv_atomic(
 
 
 def read_csv(path: str | os.PathLike[str]) -> CsvTable:
-    """Read a table written by :func:`write_csv_atomic` (numeric columns as float64)."""
+    """Read a CSV file with a header row; ``#`` lines are comments (the units line is parsed).
+
+    A column whose every cell is a number becomes a float64 array (a masked array when some
+    cells are empty: undefined values), any other column an object array of strings.
+    Unreadable, empty or ragged files raise :class:`~frictionlab.errors.InputError` naming
+    the file and the line.
+    """
     p = Path(path)
     try:
-        lines = p.read_text(encoding="utf-8").splitlines()
+        text = p.read_text(encoding="utf-8")
     except OSError as exc:
-        raise InputError(f"cannot read file '{p}': {exc.strerror or exc}") from None
+        raise InputError(f"cannot read table '{p}': {exc.strerror or exc}") from None
+    except UnicodeDecodeError:
+        raise InputError(f"table '{p}' is not UTF-8 text") from None
     comments: list[str] = []
     units: dict[str, str] = {}
-    body = []
-    for line in lines:
-        if line.startswith(_UNITS_PREFIX):
-            for item in line[len(_UNITS_PREFIX) :].split(","):
-                if "=" in item:
-                    key, unit = item.split("=", 1)
-                    units[key.strip()] = unit.strip()
-        elif line.startswith("#"):
-            comments.append(line[1:].strip())
-        elif line.strip():
-            body.append(line)
+    body: list[tuple[int, list[str]]] = []
+    for lineno, line in enumerate(text.splitlines(), start=1):
+        stripped = line.strip()
+        if stripped.startswith(_UNITS_PREFIX):
+            for item in stripped[len(_UNITS_PREFIX) :].split(","):
+                name, _, unit = item.strip().partition(" [")
+                if name:
+                    units[name] = unit.rstrip("]")
+        elif stripped.startswith("#"):
+            comments.append(stripped[1:].strip())
+        elif stripped:
+            body.append((lineno, [cell.strip() for cell in line.split(",")]))
     if not body:
-        raise InputError(f"file '{p}' has no header row")
-    names = body[0].split(",")
-    rows = [row.split(",") for row in body[1:]]
-    if any(len(row) != len(names) for row in rows):
-        raise InputError(f"file '{p}' has rows of different lengths")
+        raise InputError(f"table '{p}' has no header row")
+    header_line, names = body[0]
+    if any(not name for name in names) or len(set(names)) != len(names):
+        raise InputError(f"table '{p}' line {header_line}: empty or repeated column names")
+    for lineno, row in body[1:]:
+        if len(row) != len(names):
+            raise InputError(
+                f"table '{p}' line {lineno}: {len(row)} values, expected {len(names)} "
+                f"({', '.join(names)})"
+            )
     columns: dict[str, np.ndarray] = {}
     for k, name in enumerate(names):
-        raw = [row[k] for row in rows]
+        raw = [row[k] for _, row in body[1:]]
         empty = [v == "" for v in raw]
         try:
             values = np.array([0.0 if e else float(v) for v, e in zip(raw, empty, strict=True)])
         except ValueError:
             columns[name] = np.array(raw, dtype=object)
             continue
-        if any(empty) and not all(empty):
-            columns[name] = np.ma.MaskedArray(values, mask=np.array(empty))
-        elif any(empty):  # an all-empty column: undefined throughout
-            columns[name] = np.ma.masked_all(len(raw))
-        else:
+        if not any(empty):
             columns[name] = values
+        elif all(empty):  # undefined throughout
+            columns[name] = np.ma.masked_all(len(raw))
+        else:  # empty fields are undefined values: masked
+            columns[name] = np.ma.MaskedArray(values, mask=np.array(empty))
     return CsvTable(columns, units, comments)

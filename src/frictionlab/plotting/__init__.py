@@ -1,6 +1,6 @@
-"""Plots of frictionlab results. Importing this package does not import matplotlib.
+"""Plots of frictionlab results (the only package that imports matplotlib, lazily).
 
-Each plotting module imports matplotlib lazily inside its functions, builds figures with
-``matplotlib.figure.Figure`` (no pyplot state; PNG output through the Agg canvas), takes
-``ax=None`` and returns the Axes or Figure it drew on.
+Importing this package does not import matplotlib. Each plotting module imports it inside
+its functions, builds figures with :class:`matplotlib.figure.Figure` (no pyplot state, any
+backend), takes ``ax=None`` (or ``fig=None``) and returns the Axes or Figure it drew on.
 """

@@ -262,19 +262,9 @@ def step_points(
             norm = math.hypot(fh1t, fh2t)
             tb1 = fh1t / norm
             tb2 = fh2t / norm
-            g1 = fn_tr * b1
-            g2 = fn_tr * b2
-            out_dlam[i] = dlam
-            out_diss[i] = dlam * (g1 * tb1 + g2 * tb2)
-            out_vp[i, 0] = dlam * (ca * tb1 - sa * tb2)
-            out_vp[i, 1] = dlam * (sa * tb1 + ca * tb2)
-            out_traction[i, 0] = ca * g1 - sa * g2
-            out_traction[i, 1] = sa * g1 + ca * g2
-            out_traction[i, 2] = fn_tr
-            out_F[i] = end[7]
-            out_R[i] = min(R_end, 1.0)
-            out_gap[i] = 0.0
-            out_status[i] = SLIP
+            _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
+                        min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
+                        out_dlam, out_vp, out_diss, out_status)  # fmt: skip
             # f_t = f_n beta: independent of du_t
             out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
             out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
@@ -357,21 +347,11 @@ def step_points(
         fh1 = fh1t * a1
         fh2 = fh2t * a2
         # 6. update (principal axes)
-        g1 = fn_tr * b1 + fh1
-        g2 = fn_tr * b2 + fh2
         tb1 = (fh1t / d1) / W  # flow direction t-bar at t_{n+1}, Eqs (87), (99)
         tb2 = (fh2t / d2) / W
-        out_dlam[i] = dlam
-        out_diss[i] = dlam * (g1 * tb1 + g2 * tb2)
-        out_vp[i, 0] = dlam * (ca * tb1 - sa * tb2)
-        out_vp[i, 1] = dlam * (sa * tb1 + ca * tb2)
-        out_traction[i, 0] = ca * g1 - sa * g2
-        out_traction[i, 1] = sa * g1 + ca * g2
-        out_traction[i, 2] = fn_tr
-        out_F[i] = F
-        out_R[i] = R
-        out_gap[i] = 0.0
-        out_status[i] = SLIP
+        _write_slip(i, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca, sa,
+                    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss,
+                    out_status)  # fmt: skip
         # 7. consistent tangent: r(gamma; fhat^tr, f_n) = 0
         #    r_fhtr_j = Phi_j a_j - hard * d(dlam)/d(fhat^tr_j)
         ddl1 = gamma * (fh1t / (d1 * d1)) / (W * alpha_t)
@@ -415,6 +395,23 @@ def step_points(
         out_tangent[i, 0, 2] = ca * T1n - sa * T2n
         out_tangent[i, 1, 2] = sa * T1n + ca * T2n
         out_tangent[i, 2, 2] = alpha_n
+
+
+@njit(cache=True)
+def _write_slip(i, dlam, g1, g2, tb1, tb2, fn, F, R, ca, sa, out_traction, out_F, out_R,
+                out_gap, out_dlam, out_vp, out_diss, out_status):  # fmt: skip
+    """Store a plastic result given in principal axes: traction (g1, g2, fn), flow t-bar."""
+    out_dlam[i] = dlam
+    out_diss[i] = dlam * (g1 * tb1 + g2 * tb2)
+    out_vp[i, 0] = dlam * (ca * tb1 - sa * tb2)
+    out_vp[i, 1] = dlam * (sa * tb1 + ca * tb2)
+    out_traction[i, 0] = ca * g1 - sa * g2
+    out_traction[i, 1] = sa * g1 + ca * g2
+    out_traction[i, 2] = fn
+    out_F[i] = F
+    out_R[i] = R
+    out_gap[i] = 0.0
+    out_status[i] = SLIP
 
 
 @njit(cache=True)

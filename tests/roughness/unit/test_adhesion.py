@@ -124,7 +124,7 @@ def test_columns_write_undefined_as_empty_fields() -> None:
     assert [r["mu_apparent_defined"] for r in rows] == ["true", "true", "false", "false"]
     assert rows[3]["mu_compressed"] == ""  # beta = 90 at L = 0: no spring compressed
     assert "nan" not in text.lower() and "inf" not in text.lower()
-    assert "load_per_spring=N" in text
+    assert "load_per_spring [N]" in text
 
 
 def test_bad_arguments() -> None:

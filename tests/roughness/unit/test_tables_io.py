@@ -20,7 +20,7 @@ def test_round_trip_is_exact(tmp_path) -> None:
     text = path.read_text()
     lines = text.splitlines()
     assert lines[0] == "# first line" and lines[1] == "# second line"
-    assert lines[2] == "# units: beta_deg=deg, mu=1, n=1, ok=1"
+    assert lines[2] == "# units: beta_deg [deg], mu [1], n [1], ok [1]"
     assert lines[3] == "beta_deg,mu,n,ok"
     table = read_csv(path)
     np.testing.assert_array_equal(table["mu"], values)
@@ -52,4 +52,4 @@ def test_bad_tables_are_refused_and_nothing_is_written(tmp_path, columns, units,
 
 def test_format_without_comment() -> None:
     text = format_csv({"x": np.array([1.5])})
-    assert text == "# units: x=1\nx\n1.5\n"
+    assert text == "# units: x [1]\nx\n1.5\n"

@@ -1,0 +1,81 @@
+"""``frictionlab simulate SCENARIO.toml --out DIR``: run one scenario file.
+
+Writes ``DIR/history.csv``, ``DIR/summary.json``, ``DIR/friction.png`` and, for 2-D
+programmes, ``DIR/traction_path.png`` (each atomically). Bad input (a wrong key or
+type, a missing value, an unknown surface or segment kind, a physically invalid
+parameter, an unreadable file) is reported on one line with exit code 2 before
+anything is written; a failed computation exits 1 and keeps the history computed so far.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from frictionlab.commands._progress import progress_bar
+from frictionlab.errors import InputError
+
+HELP = "run a scenario file (TOML) and write history.csv, summary.json and plots"
+
+
+def add_parser(sub: argparse._SubParsersAction) -> None:
+    parser = sub.add_parser("simulate", help=HELP, description=HELP)
+    parser.add_argument("scenario", type=Path, help="scenario file (TOML)")
+    parser.add_argument("--out", type=Path, required=True, help="output directory")
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="SECTION.KEY=VALUE",
+        help="override a scenario value, e.g. --set law.mu_s=0.6 or --set program.2.steps=50",
+    )
+    parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    parser.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from frictionlab.io.results import write_results
+    from frictionlab.io.scenario import load_scenario
+
+    out: Path = args.out
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--out {out} exists and is not a directory")
+    scenario = load_scenario(args.scenario, args.set)  # every input check happens here
+    start = time.perf_counter()
+    with progress_bar(f"simulate {args.scenario.name}", enabled=not args.quiet) as progress:
+        history = scenario.run(progress=progress)
+    elapsed = time.perf_counter() - start
+    try:
+        paths = write_results(out, scenario, history, elapsed, plots=not args.no_plots)
+    except OSError as exc:
+        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+    if not args.quiet:
+        _report(scenario.labels, history, elapsed)
+        print("wrote " + ", ".join(str(p) for p in paths))
+    if not history.success:
+        print(
+            f"frictionlab: computation failed: {history.message}; the history up to the "
+            f"failure is in {out / 'history.csv'}",
+            file=sys.stderr,
+        )
+        return 1
+    return 0
+
+
+def _report(labels: tuple[str, ...], history: object, elapsed: float) -> None:
+    from frictionlab.driver import History
+
+    assert isinstance(history, History)
+    ratio = history.friction_ratio
+    n = history.n_points
+    print(f"{n} point(s), {history.n_rows - 1} steps in {elapsed:.2f} s "
+          f"({history.work['substeps']} substeps, {history.work['solves']} solves)")  # fmt: skip
+    print(f"{'point':>5} {'peak |f_t|/f_n':>15} {'final |f_t|/f_n':>16}  label")
+    for i in range(min(n, 12)):
+        label = labels[i] if i < len(labels) else ""
+        print(f"{i + 1:>5} {ratio[:, i].max():>15.5f} {ratio[-1, i]:>16.5f}  {label}")
+    if n > 12:
+        print(f"  ... {n - 12} more points in summary.json")

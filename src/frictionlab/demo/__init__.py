@@ -1,0 +1,107 @@
+"""The demo: run the bundled scenarios and write a one-page HTML report.
+
+:func:`run_demo` calls a sequence of *section builders*, each a function
+``builder(ctx: DemoContext) -> Section`` that runs what it needs, writes its files under
+``ctx.out_dir`` and returns a :class:`~frictionlab.io.report.Section` whose figure paths
+are relative to ``ctx.out_dir``. The law's sections are in
+:mod:`frictionlab.demo.law` (:data:`~frictionlab.demo.law.LAW_SECTIONS`); other parts
+of frictionlab add theirs to :func:`default_builders` (e.g. a roughness section).
+
+Bundled scenarios live in ``frictionlab/data/scenarios/*.toml`` (package data) and are
+read with :mod:`importlib.resources`.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import time
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+
+from frictionlab.io.report import Report, Section
+
+__all__ = [
+    "DemoContext",
+    "SectionBuilder",
+    "bundled_scenario",
+    "bundled_scenarios",
+    "default_builders",
+    "run_demo",
+]
+
+ProgressFactory = Callable[[str], contextlib.AbstractContextManager[Callable[[int, int], None]]]
+
+
+@contextlib.contextmanager
+def _no_progress(description: str) -> Iterator[Callable[[int, int], None]]:
+    yield lambda done, total: None
+
+
+@dataclass
+class DemoContext:
+    """What a section builder gets: where to write, how to report progress and messages."""
+
+    out_dir: Path
+    progress: ProgressFactory = _no_progress
+    log: Callable[[str], None] = lambda message: None
+    timings: dict[str, float] = field(default_factory=dict)
+
+
+SectionBuilder = Callable[[DemoContext], Section]
+
+
+def bundled_scenarios() -> list[str]:
+    """Names of the bundled scenarios (file stems)."""
+    folder = resources.files("frictionlab") / "data" / "scenarios"
+    return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
+
+
+@contextlib.contextmanager
+def bundled_scenario(name: str) -> Iterator[Path]:
+    """A filesystem path to the bundled scenario ``name`` (e.g. ``"slide_hold_slide"``)."""
+    ref = resources.files("frictionlab") / "data" / "scenarios" / f"{name}.toml"
+    with resources.as_file(ref) as path:
+        yield Path(path)
+
+
+def default_builders() -> list[SectionBuilder]:
+    """The demo's sections, in report order."""
+    from frictionlab.demo.law import LAW_SECTIONS
+
+    return [*LAW_SECTIONS]
+
+
+TITLE = "frictionlab demo: the subloading-friction law in tribometer tests"
+INTRO = (
+    "Each section runs bundled scenarios (frictionlab/data/scenarios/*.toml; a copy sits next to "
+    "its results, and `frictionlab simulate <copy> --out DIR` reruns it) through the "
+    "subloading-friction law of Hashiguchi & Ozaki (2008), shows the response and compares "
+    "it with the closed forms of the specification. SI units throughout; tractions per unit "
+    "area in Pa."
+)
+
+
+def run_demo(
+    out_dir: str | os.PathLike[str],
+    builders: Sequence[SectionBuilder] | None = None,
+    progress: ProgressFactory | None = None,
+    log: Callable[[str], None] | None = None,
+) -> Path:
+    """Run every section builder and write ``out_dir/report.html``; return its path."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    chosen = list(builders) if builders is not None else default_builders()
+    ctx = DemoContext(out, progress or _no_progress, log or (lambda message: None))
+    report = Report(TITLE, INTRO)
+    for i, build in enumerate(chosen, start=1):
+        start = time.perf_counter()
+        name = (build.__doc__ or build.__name__).strip().splitlines()[0]
+        ctx.log(f"[{i}/{len(chosen)}] {name} ...")
+        section = build(ctx)
+        report.add_section(section)
+        ctx.timings[section.title] = time.perf_counter() - start
+        ctx.log(f"[{i}/{len(chosen)}] done in {ctx.timings[section.title]:.1f} s")
+    return report.write(out / "report.html")

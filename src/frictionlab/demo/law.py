@@ -1,0 +1,423 @@
+"""Demo sections for the subloading-friction law (issue 3): one builder per tribometer test.
+
+Each builder runs bundled scenarios through the same code path as ``frictionlab
+simulate`` (outputs in ``OUT/<scenario>/``: history.csv, summary.json, plots and a copy
+of the scenario file), adds figures comparing with the closed forms of the
+specification, and returns a report section.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Sequence
+
+import numpy as np
+
+from frictionlab.demo import DemoContext, bundled_scenario
+from frictionlab.driver import (
+    History,
+    InitialConditions,
+    SpringSlider,
+    critical_stiffness,
+    friction_oscillation,
+    simulate_spring_slider,
+)
+from frictionlab.errors import FrictionlabError
+from frictionlab.io.atomic import write_text_atomic
+from frictionlab.io.report import Section, format_value
+from frictionlab.io.results import write_results
+from frictionlab.io.scenario import Scenario, load_scenario
+from frictionlab.io.tables import write_csv_atomic
+from frictionlab.plotting.law import (
+    plot_friction,
+    plot_pressure_dependence,
+    plot_ratcheting,
+    plot_restart_peaks,
+    plot_stability_map,
+    plot_steady_friction,
+    save_figure,
+)
+from frictionlab.subloading import (
+    friction_coefficient_on_yield,
+    hold_recovery,
+    ratcheting_slip_per_cycle,
+    steady_size,
+)
+
+__all__ = [
+    "LAW_SECTIONS",
+    "anisotropy_section",
+    "monotonic_section",
+    "pressure_section",
+    "reversal_section",
+    "run_bundled",
+    "slide_hold_slide_section",
+    "stick_slip_section",
+]
+
+_CONE_UNITS = {
+    "alpha_n": "Pa/m", "alpha_t": "Pa/m", "mu_s": "-", "mu_k": "-", "u": "1/m",
+    "kappa": "1/m", "xi": "1/s", "m": "-", "n": "-", "rotation": "-", "orthotropy": "-",
+    "orthotropy_angle": "rad", "tear_k": "-",
+}  # fmt: skip
+_CLOSED_UNITS = {**_CONE_UNITS, "F_s": "Pa", "F_k": "Pa", "M": "-", "kappa": "Pa/m", "xi": "Pa/s"}
+
+
+def run_bundled(
+    ctx: DemoContext, name: str, overrides: Sequence[str] = (), subdir: str | None = None
+) -> tuple[Scenario, History, str]:
+    """Run the bundled scenario ``name`` into ``OUT/<subdir or name>/``; return it, its
+    history and the directory relative to OUT."""
+    rel = subdir or name
+    with bundled_scenario(name) as path:
+        scenario = load_scenario(path, overrides)
+        text = path.read_text(encoding="utf-8")
+    start = time.perf_counter()
+    with ctx.progress(rel) as progress:
+        history = scenario.run(progress=progress)
+    elapsed = time.perf_counter() - start
+    if not history.success:
+        raise FrictionlabError(f"demo scenario '{rel}' failed: {history.message}")
+    write_results(ctx.out_dir / rel, scenario, history, elapsed)
+    header = ""
+    if overrides:
+        flags = " ".join(f"--set {o}" for o in overrides)
+        header = f"# The demo ran this scenario with: {flags}\n"
+    write_text_atomic(ctx.out_dir / rel / "scenario.toml", header + text)
+    return scenario, history, rel
+
+
+def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
+    """Parameter table rows: the law, the initial contact and the programme."""
+    law = scenario.inputs["law"]
+    units = _CONE_UNITS if scenario.params.is_cone else _CLOSED_UNITS
+    rows = [("surface", str(law["surface"]), "")]
+    for key, value in law.items():
+        if key == "surface" or value is None or key not in units:
+            continue
+        rows.append((key, format_value(value), units[key]))
+    rows.append(
+        (
+            "initial normal traction f_n",
+            format_value(scenario.inputs["initial"]["normal_traction"]),
+            "Pa",
+        )
+    )
+    if "program" in scenario.inputs:
+        for i, seg in enumerate(scenario.inputs["program"], start=1):
+            fields = ", ".join(
+                f"{k} = {format_value(v)}" for k, v in seg.items() if k != "kind" and v is not None
+            )
+            rows.append((f"segment {i}: {seg['kind']}", fields, "SI"))
+    else:
+        machine = scenario.inputs["machine"]
+        for key, unit in (("stiffness", "Pa/m"), ("velocity", "m/s"), ("mass", "kg/m^2"),
+                          ("damping", "Pa s/m"), ("duration", "s"), ("steps", "-")):  # fmt: skip
+            rows.append((f"machine {key}", format_value(machine[key]), unit))
+    return rows
+
+
+def _law(scenario: Scenario, name: str) -> float:
+    return float(np.ravel(getattr(scenario.params, name))[0])
+
+
+# --------------------------------------------------------------------------- sections
+def monotonic_section(ctx: DemoContext) -> Section:
+    """Monotonic sliding to kinetic friction"""
+    sc, h, rel = run_bundled(ctx, "monotonic")
+    V = np.asarray(h.segments[0].resolved["velocity"])
+    kappa, xi, mu_s, mu_k = (_law(sc, k) for k in ("kappa", "xi", "mu_s", "mu_k"))
+    simulated = h.friction_ratio[-1]
+    expected = steady_size(V, kappa, xi, mu_s, mu_k)
+    curve_v = np.logspace(-4.5, 1.5, 200)
+    ax = plot_steady_friction(
+        V, simulated, curve_v, steady_size(curve_v, kappa, xi, mu_s, mu_k), (mu_k, mu_s)
+    )
+    save_figure(ax.figure, ctx.out_dir / rel / "steady.png")  # type: ignore[arg-type]
+    peaks = h.friction_ratio.max(axis=0)
+    sec = Section(
+        "Monotonic sliding to kinetic friction",
+        sc.description,
+        parameters=_parameters(sc),
+    )
+    sec.add_figure(
+        f"{rel}/friction.png",
+        "Friction ratio against slip (left) and time (right) at four sliding velocities: a "
+        "smooth rise without a yield kink to a static peak below mu_s, then softening to a "
+        "steady value that is lower at higher velocity.",
+    )
+    sec.add_figure(
+        f"{rel}/steady.png",
+        "Steady friction at the end of the 5 m slide (points) on the closed form "
+        "mu_ss(V) = (kappa V + xi)/(kappa V/mu_k + xi/mu_s) (line): the law's built-in "
+        "velocity weakening between mu_s (slow) and mu_k (fast).",
+    )
+    rel_err = float(np.max(np.abs(simulated / expected - 1.0)))
+    sec.notes.append(
+        "Static peaks: " + ", ".join(f"{p:.4f}" for p in peaks) + f" (all below mu_s = {mu_s:g}). "
+        "Steady friction simulated vs closed form: "
+        + "; ".join(
+            f"V = {v:g} m/s: {s:.6f} vs {e:.6f}"
+            for v, s, e in zip(V, simulated, expected, strict=True)
+        )
+        + f" (largest relative difference {rel_err:.1e})."
+    )
+    return sec
+
+
+def slide_hold_slide_section(ctx: DemoContext) -> Section:
+    """Slide-hold-slide: recovery of static friction"""
+    sc, h, rel = run_bundled(ctx, "slide_hold_slide")
+    slide1, hold, slide2 = h.segments[:3]
+    hold_time = np.asarray(hold.resolved["duration"])
+    mu_s, xi = _law(sc, "mu_s"), _law(sc, "xi")
+    mu0 = float(h.F[slide1.last_row, 0])
+    recovered = h.F[hold.last_row]
+    peaks = h.friction_ratio[slide2.rows].max(axis=0)
+    curve_t = np.logspace(-0.5, 4.5, 200)
+    ax = plot_restart_peaks(
+        hold_time,
+        peaks,
+        recovered,
+        curve_t,
+        hold_recovery(np.asarray(mu0), mu_s, xi, curve_t),
+        mu_s,
+    )
+    save_figure(ax.figure, ctx.out_dir / rel / "restart.png")  # type: ignore[arg-type]
+    zoom = plot_friction(h, sc.labels, "Restart after the hold")
+    zoom.axes[0].set_xlim(0.9, 1.3)
+    save_figure(zoom, ctx.out_dir / rel / "restart_zoom.png")
+    sec = Section("Slide-hold-slide: recovery of static friction", sc.description,
+                  parameters=_parameters(sc))  # fmt: skip
+    sec.add_figure(
+        f"{rel}/friction.png",
+        "The whole programme for five hold times: sliding to kinetic friction, the hold "
+        "(shaded; the traction stays constant) and the restart.",
+    )
+    sec.add_figure(
+        f"{rel}/restart_zoom.png",
+        "Zoom on the restart: the longer the hold, the higher the restart peak; after the "
+        "peak the friction softens toward kinetic again.",
+    )
+    sec.add_figure(
+        f"{rel}/restart.png",
+        "mu at the end of the hold (squares) on the closed-form recovery "
+        "mu_s - (mu_s - mu_0) exp(-xi t_h/mu_s) (line), and the restart peaks (dots): they "
+        "grow with the hold time and stay below mu_s (dashed).",
+    )
+    sec.notes.append(
+        f"mu at the stop mu_0 = {mu0:.5f}. Restart peaks: "
+        + ", ".join(f"t_h = {t:g} s: {p:.4f}" for t, p in zip(hold_time, peaks, strict=True))
+        + "."
+    )
+    return sec
+
+
+def reversal_section(ctx: DemoContext) -> Section:
+    """Reversal, displacement cycles and ratcheting"""
+    sc, h, rel = run_bundled(ctx, "reversal_cycles")
+    sr, hr, rel_r = run_bundled(ctx, "ratcheting")
+    seg = hr.segments[0]
+    per_leg = int(seg.resolved["steps"]) // (2 * int(seg.resolved["cycles"]))
+    cycles = np.arange(1, int(seg.resolved["cycles"]) + 1)
+    residual = hr.slip[2 * per_leg * cycles, 0, 0]
+    fmax = float(np.hypot(*np.asarray(seg.resolved["traction"])[0]))
+    R_max = fmax / (_law(sr, "mu_s") * float(hr.traction[0, 0, 2]))
+    per_cycle = float(ratcheting_slip_per_cycle(np.asarray(R_max), _law(sr, "u")))
+    ax = plot_ratcheting(cycles, residual, per_cycle)
+    save_figure(ax.figure, ctx.out_dir / rel_r / "ratcheting.png")  # type: ignore[arg-type]
+    cyc = h.segments[2]
+    q = int(cyc.resolved["steps"]) // 4
+    rows = (
+        cyc.first_row
+        - 1
+        + np.concatenate(
+            [[q * (4 * c + 1), q * (4 * c + 3)] for c in range(int(cyc.resolved["cycles"]))]
+        )
+    )
+    tp = h.traction[rows, 0, 0] / h.traction[rows, 0, 2]
+    sec = Section("Reversal, displacement cycles and ratcheting", sc.description,
+                  parameters=_parameters(sc))  # fmt: skip
+    sec.add_figure(
+        f"{rel}/friction.png",
+        "Forward slide, reversal back to the start, then four cycles of +-0.05 m: f_t1/f_n "
+        "against slip (loops) and time. Each reversal unloads elastically and re-yields "
+        "smoothly; the turning points alternate in sign and decrease toward kinetic friction.",
+    )
+    sec.add_figure(
+        f"{rel_r}/friction.png",
+        "Traction-controlled cycles 0 -> 0.4 -> 0 Pa with kappa = xi = 0: the driver solves "
+        "for the slip; every cycle shifts the loop forward (ratcheting).",
+    )
+    sec.add_figure(
+        f"{rel_r}/ratcheting.png",
+        "Residual slip after each traction cycle (dots) against n (2/(pi u)) ln sec(pi R_max/2) "
+        f"(line, Eq 29) for R_max = {R_max:g}.",
+    )
+    sec.notes.append(
+        "Turning-point friction ratios of the displacement cycles: "
+        + ", ".join(f"{v:+.4f}" for v in tp)
+        + f". Ratcheting per cycle: simulated {np.diff(np.concatenate([[0.0], residual])).mean() * 1e3:.6f} mm, "  # noqa: E501
+        f"closed form {per_cycle * 1e3:.6f} mm."
+    )
+    sec.parameters += [("ratcheting scenario", "kappa = xi = 0, traction cycles to 0.4 Pa", "")]
+    return sec
+
+
+def anisotropy_section(ctx: DemoContext) -> Section:
+    """Rotational and orthotropic anisotropy"""
+    sr, hr, rel_r = run_bundled(ctx, "rotation")
+    so, ho, rel_o = run_bundled(ctx, "orthotropy")
+    kappa, xi, mu_s, mu_k = (_law(sr, k) for k in ("kappa", "xi", "mu_s", "mu_k"))
+    beta = float(np.ravel(sr.params.rotation)[0])
+    V = float(np.ravel(hr.segments[0].resolved["velocity"])[0])
+    mss = float(steady_size(np.asarray(V), kappa, xi, mu_s, mu_k))
+    final = hr.traction[-1, :, 0] / hr.traction[-1, :, 2]
+    C = np.asarray(so.params.orthotropy)
+    sec = Section(
+        "Rotational and orthotropic anisotropy",
+        sr.description + " " + so.description,
+        parameters=_parameters(sr),
+    )
+    sec.add_figure(
+        f"{rel_r}/friction.png",
+        "Rotated cone (beta = 0.05 along e_1): sliding 5 m along +e_1 and -e_1 gives different "
+        "static peaks and steady values +(mu_ss + |beta|) and -(mu_ss - |beta|).",
+    )
+    sec.add_figure(
+        f"{rel_o}/traction_path.png",
+        "Orthotropic cone (C_1 = 1, C_2 = 0.6): traction paths in the contact plane for six "
+        "sliding directions, then a 90 degree turn. The steady traction sits on the ellipse "
+        "of semi-axes C_i mu_ss f_n, not along the sliding direction; after the turn it "
+        "travels along the ellipse.",
+    )
+    sec.add_figure(
+        f"{rel_o}/friction.png",
+        "The same runs as friction ratio |f_t|/f_n against slip distance and time: the "
+        "steady friction depends on the sliding direction, from C_2 mu_ss to C_1 mu_ss.",
+    )
+    before_turn = ho.segments[1].last_row
+    sec.notes.append(
+        f"Rotation: steady f_t1/f_n = {final[0]:+.5f} forward, {final[1]:+.5f} backward; closed "
+        f"form +{mss + beta:.5f} and -{mss - beta:.5f}. Orthotropy, steady |f_t|/f_n: sliding "
+        f"along e_1 {ho.friction_ratio[before_turn, 0]:.5f} before the turn and "
+        f"{ho.friction_ratio[-1, 3]:.5f} after it (C_1 mu_ss = {C[0] * mss:.5f}); along e_2 "
+        f"{ho.friction_ratio[before_turn, 3]:.5f} before and {ho.friction_ratio[-1, 0]:.5f} "
+        f"after (C_2 mu_ss = {C[1] * mss:.5f})."
+    )
+    sec.parameters += [("orthotropy scenario", "orthotropy = [1, 0.6], beta = 0", "-")]
+    return sec
+
+
+_SURFACES = ("cam_clay", "modified_cam_clay", "tear", "parabola")
+
+
+def pressure_section(ctx: DemoContext) -> Section:
+    """Pressure dependence of the closed sliding-yield surfaces"""
+    results: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    curves: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    errors = []
+    main: Scenario | None = None
+    for surface in _SURFACES:
+        sc, h, _ = run_bundled(ctx, "pressure", [f'law.surface="{surface}"'], f"pressure/{surface}")
+        main = sc if surface == "modified_cam_clay" else main
+        F = _law(sc, "F_s")
+        M = _law(sc, "M")
+        fn = h.traction[0, :, 2]
+        mu = h.friction_ratio[-1]
+        results[surface] = (fn / F, mu)
+        x = np.linspace(0.01, 0.99, 200)
+        curves[surface] = (x, friction_coefficient_on_yield(surface, x * F, np.asarray(F), M))
+        expected = friction_coefficient_on_yield(surface, fn, np.asarray(F), M)
+        errors.append(f"{surface} {np.max(np.abs(mu / expected - 1.0)):.1e}")
+    assert main is not None
+    ax = plot_pressure_dependence(results, curves)
+    save_figure(ax.figure, ctx.out_dir / "pressure" / "pressure.png")  # type: ignore[arg-type]
+    sec = Section("Pressure dependence of the closed sliding-yield surfaces", main.description,
+                  parameters=_parameters(main))  # fmt: skip
+    sec.add_figure(
+        "pressure/pressure.png",
+        "Steady friction coefficient against normal traction for the four closed surfaces "
+        "(Cam-clay, modified Cam-clay, tear, parabola): simulated (points) on the closed "
+        "forms M g^-1(F/f_n) (lines); the friction coefficient falls as the pressure rises.",
+    )
+    sec.add_figure(
+        "pressure/modified_cam_clay/friction.png",
+        "Modified Cam-clay: friction ratio against slip at ten normal tractions.",
+    )
+    sec.notes.append("Largest relative difference from the closed form: " + ", ".join(errors) + ".")
+    return sec
+
+
+def stick_slip_section(ctx: DemoContext) -> Section:
+    """Stick-slip of a spring-slider"""
+    sc, h, rel = run_bundled(ctx, "stick_slip")
+    k = np.asarray(h.segments[0].resolved["stiffness"])[:2]  # the two slow machines
+    m = 10.0  # kg/m^2
+    damping = 2.0 * 0.1 * np.sqrt(k * m)  # 10 % of critical damping
+    overrides = [
+        "machine.stiffness=[" + ", ".join(f"{v:.6g}" for v in k) + "]",
+        "machine.velocity=[0.001, 0.001]",
+        "machine.duration=[20000.0, 20000.0]",
+        f"machine.mass={m}",
+        "machine.damping=[" + ", ".join(f"{c:.6g}" for c in damping) + "]",
+    ]
+    rel_i = run_bundled(ctx, "stick_slip", overrides, "stick_slip_inertial")[2]
+    # stability map: quasi-static, V = 1 mm/s, k from k_c/4 to 4 k_c
+    V = 1e-3
+    fn = float(h.traction[0, 0, 2])
+    kc = float(critical_stiffness(sc.params, V, fn)[0])
+    factors = np.array([0.25, 0.5, 0.8, 0.9, 1.1, 1.25, 2.0, 4.0])
+    with ctx.progress("stick_slip/stability_map") as progress:
+        hm = simulate_spring_slider(
+            sc.params, SpringSlider(stiffness=factors * kc, velocity=V), 20.0 / V,
+            steps=2000, initial=InitialConditions(normal_traction=fn), progress=progress,
+        )  # fmt: skip
+    if not hm.success:
+        raise FrictionlabError(f"demo stability map failed: {hm.message}")
+    osc = friction_oscillation(hm, 0.25)
+    write_csv_atomic(
+        ctx.out_dir / rel / "stability_map.csv",
+        {"k_over_kc": factors, "stiffness": factors * kc, "friction_oscillation": osc},
+        {"k_over_kc": "-", "stiffness": "Pa/m", "friction_oscillation": "-"},
+        f"quasi-static spring-slider, V = {V} m/s, k_c = {kc:.6g} Pa/m",
+    )
+    ax = plot_stability_map(factors, osc, V)
+    save_figure(ax.figure, ctx.out_dir / rel / "stability_map.png")  # type: ignore[arg-type]
+    sec = Section("Stick-slip of a spring-slider", sc.description, parameters=_parameters(sc))
+    sec.add_figure(
+        f"{rel}/friction.png",
+        "Quasi-static slider: friction ratio and slider speed against load-point travel. "
+        "Soft spring at 1 mm/s: stick (speed far below V, friction rising as mu recovers) "
+        "and sudden slips; stiff spring, or the soft spring at 1 m/s: steady sliding after "
+        "the first peak.",
+    )
+    sec.add_figure(
+        f"{rel_i}/friction.png",
+        "The two slow machines with a slider mass of 10 kg/m^2 and 10 % of critical damping "
+        "(generalized-alpha, rho_inf = 0.5): the soft machine still sticks and slips, with "
+        "slips that overshoot below kinetic friction and ring; the stiff one slides steadily.",
+    )
+    sec.add_figure(
+        f"{rel}/stability_map.png",
+        "Peak-to-peak friction in the last quarter of a 20 m pull against k/k_c: stick-slip "
+        "below the critical stiffness k_c of the linear stability analysis, steady sliding "
+        "above it.",
+    )
+    sec.notes.append(
+        f"Critical stiffness at V = {V:g} m/s: k_c = {kc:.5f} Pa/m. Oscillation amplitude: "
+        + ", ".join(f"k/k_c = {f:g}: {o:.2e}" for f, o in zip(factors, osc, strict=True))
+        + "."
+    )
+    return sec
+
+
+#: The law's demo sections, in report order.
+LAW_SECTIONS = (
+    monotonic_section,
+    slide_hold_slide_section,
+    reversal_section,
+    anisotropy_section,
+    pressure_section,
+    stick_slip_section,
+)

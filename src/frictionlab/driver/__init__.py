@@ -1,0 +1,74 @@
+"""Loading programmes and loading systems driving the subloading-friction law.
+
+Public API:
+
+* segments :class:`Slide`, :class:`Hold`, :class:`Reverse`, :class:`Turn`, :class:`Cycle`,
+  :class:`NormalStep`, :class:`TractionControl`, :class:`Table`; a :data:`Program` is a
+  tuple of them (:mod:`~frictionlab.driver.program`);
+* :func:`simulate` -> :class:`History` (:mod:`~frictionlab.driver.simulate`): N points in
+  one vectorised run, automatic substepping, work counters;
+* :class:`SpringSlider`, :func:`simulate_spring_slider`, :func:`critical_stiffness`
+  (:mod:`~frictionlab.driver.spring_slider`): stick-slip of a compliant loading system.
+
+Pure computation: no file I/O, no printing (progress through a callback).
+"""
+
+from frictionlab.driver.program import (
+    SEGMENT_KINDS,
+    Control,
+    Cycle,
+    Hold,
+    NormalStep,
+    Program,
+    Reverse,
+    Segment,
+    Slide,
+    Table,
+    TractionControl,
+    Turn,
+    plan_program,
+    slide_hold_slide,
+)
+from frictionlab.driver.simulate import (
+    History,
+    InitialConditions,
+    SegmentRecord,
+    simulate,
+    status_labels,
+)
+from frictionlab.driver.spring_slider import (
+    SpringSlider,
+    count_slip_events,
+    critical_stiffness,
+    friction_oscillation,
+    simulate_spring_slider,
+    steady_F,
+)
+
+__all__ = [
+    "SEGMENT_KINDS",
+    "Control",
+    "Cycle",
+    "History",
+    "Hold",
+    "InitialConditions",
+    "NormalStep",
+    "Program",
+    "Reverse",
+    "Segment",
+    "SegmentRecord",
+    "Slide",
+    "SpringSlider",
+    "Table",
+    "TractionControl",
+    "Turn",
+    "count_slip_events",
+    "critical_stiffness",
+    "friction_oscillation",
+    "plan_program",
+    "simulate",
+    "simulate_spring_slider",
+    "slide_hold_slide",
+    "status_labels",
+    "steady_F",
+]

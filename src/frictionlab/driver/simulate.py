@@ -1,0 +1,423 @@
+"""Run a loading programme through the law: :func:`simulate` -> :class:`History`.
+
+Every recorded step is one step of a segment's plan (see
+:mod:`frictionlab.driver.program`); inside it the driver substeps automatically where
+the local solve fails or where a requested ``accuracy`` is not met (step doubling, see
+:mod:`frictionlab.driver.stepping`). N points run together in one vectorised programme,
+with per-point parameters and per-point segment values.
+
+Array layout of :class:`History`: **time first**, ``(rows, N, ...)`` with
+``rows = steps + 1`` (row 0 is the initial state); ``History.point(i)`` gives the 1-D
+series of one point.
+
+Physics only: no file I/O and no printing; progress goes to an optional callback.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from frictionlab.driver.program import Segment, plan_program, program_points
+from frictionlab.driver.stepping import StepWork, advance
+from frictionlab.errors import ParameterError
+from frictionlab.subloading import ContactState, Status, SubloadingParams, initial_state
+
+__all__ = [
+    "STATUS_INITIAL",
+    "History",
+    "InitialConditions",
+    "ProgressCallback",
+    "SegmentRecord",
+    "count_points",
+    "simulate",
+    "status_labels",
+]
+
+#: Status code of row 0 (the initial state) in :attr:`History.status`.
+STATUS_INITIAL = -1
+_LABELS = {STATUS_INITIAL: "initial", **{int(s): s.name.lower() for s in Status}}
+
+#: ``progress(done, total)``: steps done and total steps (the total can grow when a
+#: traction-controlled segment with ``max_step`` starts).
+ProgressCallback = Callable[[int, int], None]
+
+
+def status_labels(status: np.ndarray) -> np.ndarray:
+    """Text labels (``initial``, ``stick``, ``slip``, ``open``, ``failed``) of status codes."""
+    return np.vectorize(_LABELS.__getitem__, otypes=[object])(np.asarray(status, dtype=int))
+
+
+@dataclass(frozen=True)
+class InitialConditions:
+    """The contact before the programme starts (a virgin, fully recovered contact by default).
+
+    ``normal_traction`` [Pa] > 0, scalar or (N,); ``tangential_traction`` (f_t1, f_t2) [Pa],
+    shape (2,) or (N, 2); ``F`` the initial size (mu for the cone), default the static
+    value. See :func:`frictionlab.subloading.initial_state`.
+    """
+
+    normal_traction: Any = 1.0
+    tangential_traction: Any = (0.0, 0.0)
+    F: Any = None
+
+    def sizes(self) -> set[int]:
+        out = set()
+        fn = np.asarray(self.normal_traction)
+        ft = np.asarray(self.tangential_traction)
+        if fn.ndim == 1:
+            out.add(fn.shape[0])
+        if ft.ndim == 2:
+            out.add(ft.shape[0])
+        if self.F is not None and np.ndim(self.F) == 1:
+            out.add(int(np.shape(self.F)[0]))
+        return out
+
+    def state(self, params: SubloadingParams, n_points: int) -> ContactState:
+        return initial_state(
+            params,
+            self.normal_traction,
+            self.tangential_traction,
+            F=self.F,
+            n_points=n_points,
+        )
+
+
+@dataclass(frozen=True)
+class SegmentRecord:
+    """Where a segment sits in a :class:`History`.
+
+    ``index`` is 1-based (as ``[[program]] #index``); rows ``first_row..last_row``
+    (inclusive) are its steps, row ``first_row - 1`` is the state it started from.
+    ``resolved`` holds its values with every default filled (arrays (N,)).
+    """
+
+    index: int
+    kind: str
+    first_row: int
+    last_row: int
+    resolved: dict[str, Any]
+    is_hold: bool = False
+
+    @property
+    def rows(self) -> slice:
+        """Rows of the segment including the starting row."""
+        return slice(self.first_row - 1, self.last_row + 1)
+
+
+@dataclass(frozen=True)
+class History:
+    """The recorded response of N points to a programme (time first: ``(rows, N, ...)``).
+
+    Attributes
+    ----------
+    time:
+        (rows, N) time [s] (per point: per-point velocities give per-point times).
+    slip:
+        (rows, N, 2) imposed tangential slip (counter body relative to body) in the
+        contact frame, accumulated from 0 [m].
+    approach:
+        (rows, N) accumulated normal approach [m] (positive closes).
+    traction:
+        (rows, N, 3) (f_t1, f_t2, f_n) [Pa]; f_n > 0 in compression.
+    F, R:
+        (rows, N) size of the sliding-yield surface (mu for the cone) and the normal
+        sliding-yield ratio.
+    plastic_slip:
+        (rows, N) accumulated plastic slip u^p [m].
+    dissipation:
+        (rows, N) accumulated dissipation sum of f . Delta u^p [J/m^2].
+    status:
+        (rows, N) :class:`~frictionlab.subloading.Status` code of each step (SLIP if any
+        substep slid); row 0 holds ``STATUS_INITIAL`` (-1).
+    segment:
+        (rows,) 1-based segment index of each row (0 for the initial row).
+    substeps, solves:
+        (rows,) substeps taken and calls of the law's update for each step.
+    iterations:
+        (rows, N) local Newton iterations of each step (all solves, rejected ones too).
+    segments:
+        One :class:`SegmentRecord` per segment reached.
+    final_state:
+        The :class:`~frictionlab.subloading.ContactState` after the last recorded step.
+    success, message:
+        Whether the whole programme ran; why not otherwise (the history then stops at
+        the last completed step).
+    work:
+        Totals: steps, substeps, solves, iterations, steps refined for a failed local solve
+        or for accuracy, steps where the accuracy could not be met.
+    extra, extra_units:
+        Additional (rows, N) series with their units (the spring-slider's load point,
+        slider velocity and spring force).
+    """
+
+    time: np.ndarray
+    slip: np.ndarray
+    approach: np.ndarray
+    traction: np.ndarray
+    F: np.ndarray
+    R: np.ndarray
+    plastic_slip: np.ndarray
+    dissipation: np.ndarray
+    status: np.ndarray
+    segment: np.ndarray
+    substeps: np.ndarray
+    solves: np.ndarray
+    iterations: np.ndarray
+    segments: tuple[SegmentRecord, ...]
+    final_state: ContactState
+    success: bool
+    message: str
+    work: dict[str, int]
+    extra: dict[str, np.ndarray] = field(default_factory=dict)
+    extra_units: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def n_points(self) -> int:
+        return int(self.traction.shape[1])
+
+    @property
+    def n_rows(self) -> int:
+        return int(self.traction.shape[0])
+
+    @property
+    def friction_ratio(self) -> np.ndarray:
+        """(rows, N) |f_t| / f_n (0 where the contact is open)."""
+        ft = np.hypot(self.traction[..., 0], self.traction[..., 1])
+        fn = self.traction[..., 2]
+        return np.where(fn > 0, ft / np.where(fn > 0, fn, 1.0), 0.0)
+
+    @property
+    def path_length(self) -> np.ndarray:
+        """(rows, N) tangential slip distance travelled (sum of |Delta slip|) [m]."""
+        steps = np.hypot(*np.moveaxis(np.diff(self.slip, axis=0), -1, 0))
+        return np.concatenate([np.zeros((1, self.n_points)), np.cumsum(steps, axis=0)])
+
+    @property
+    def is_planar(self) -> bool:
+        """True when slip and traction stay on the e_1 axis (a 1-D programme)."""
+        return bool(np.all(self.slip[..., 1] == 0.0) and np.all(self.traction[..., 1] == 0.0))
+
+    def point(self, i: int) -> dict[str, np.ndarray]:
+        """The series of point ``i`` as 1-D arrays (vectors split into components)."""
+        out = {
+            "time": self.time[:, i],
+            "slip_1": self.slip[:, i, 0],
+            "slip_2": self.slip[:, i, 1],
+            "approach": self.approach[:, i],
+            "traction_1": self.traction[:, i, 0],
+            "traction_2": self.traction[:, i, 1],
+            "traction_n": self.traction[:, i, 2],
+            "friction_ratio": self.friction_ratio[:, i],
+            "R": self.R[:, i],
+            "F": self.F[:, i],
+            "plastic_slip": self.plastic_slip[:, i],
+            "dissipation": self.dissipation[:, i],
+            "status": self.status[:, i],
+        }
+        for key, arr in self.extra.items():
+            out[key] = arr[:, i]
+        return out
+
+
+def count_points(
+    params: SubloadingParams,
+    program: Sequence[Segment] = (),
+    initial: InitialConditions | ContactState | None = None,
+    n_points: int | None = None,
+    extra_sizes: set[int] | None = None,
+) -> int:
+    """The number of points N implied by every per-point input (ParameterError if they disagree)."""
+    sizes = set(extra_sizes or ()) | program_points(program)
+    if params.per_point:
+        sizes.add(params.n_points)
+    if isinstance(initial, ContactState):
+        sizes.add(initial.n_points)
+    elif initial is not None:
+        sizes |= initial.sizes()
+    if n_points is not None:
+        if isinstance(n_points, bool) or not isinstance(n_points, int) or n_points < 1:
+            raise ParameterError("n_points", n_points, "an integer >= 1")
+        sizes.add(n_points)
+    if len(sizes) > 1:
+        raise ParameterError(
+            "number of points", sorted(sizes), "one common N for every per-point value"
+        )
+    return sizes.pop() if sizes else 1
+
+
+class _Recorder:
+    """Accumulates rows; stacks them into arrays at the end."""
+
+    def __init__(self, state: ContactState) -> None:
+        n = state.n_points
+        self.time = [np.zeros(n)]
+        self.slip = [np.zeros((n, 2))]
+        self.approach = [np.zeros(n)]
+        self.traction = [state.traction]
+        self.F = [state.F]
+        self.R = [state.R]
+        self.up = [state.plastic_slip]
+        self.diss = [np.zeros(n)]
+        self.status = [np.full(n, STATUS_INITIAL, dtype=np.int8)]
+        self.segment = [0]
+        self.substeps = [0]
+        self.solves = [0]
+        self.iterations = [np.zeros(n, dtype=np.int64)]
+
+    def add(self, state: ContactState, dt: np.ndarray, du: np.ndarray, diss: np.ndarray,
+            status: np.ndarray, segment: int, substeps: int, solves: int,
+            iterations: np.ndarray) -> None:  # fmt: skip
+        self.time.append(self.time[-1] + dt)
+        self.slip.append(self.slip[-1] + du[:, :2])
+        self.approach.append(self.approach[-1] + du[:, 2])
+        self.traction.append(state.traction)
+        self.F.append(state.F)
+        self.R.append(state.R)
+        self.up.append(state.plastic_slip)
+        self.diss.append(self.diss[-1] + diss)
+        self.status.append(status)
+        self.segment.append(segment)
+        self.substeps.append(substeps)
+        self.solves.append(solves)
+        self.iterations.append(iterations)
+
+    @property
+    def rows(self) -> int:
+        return len(self.time)
+
+    def history(self, **kw: Any) -> History:
+        return History(
+            time=np.array(self.time),
+            slip=np.array(self.slip),
+            approach=np.array(self.approach),
+            traction=np.array(self.traction),
+            F=np.array(self.F),
+            R=np.array(self.R),
+            plastic_slip=np.array(self.up),
+            dissipation=np.array(self.diss),
+            status=np.array(self.status),
+            segment=np.array(self.segment),
+            substeps=np.array(self.substeps),
+            solves=np.array(self.solves),
+            iterations=np.array(self.iterations),
+            **kw,
+        )
+
+
+def _count_work(work: dict[str, int], w: StepWork, completed: bool = True) -> None:
+    """Add one step's counters to the totals (a failed step counts its solves too)."""
+    work["steps"] += int(completed)
+    work["substeps"] += w.substeps
+    work["solves"] += w.solves
+    work["iterations"] += int(w.iterations.sum())
+    work["refined_for_failure"] += int(w.refined_for_failure)
+    work["refined_for_accuracy"] += int(w.refined_for_accuracy)
+    work["accuracy_unmet"] += int(w.accuracy_unmet)
+
+
+def _check_accuracy(accuracy: float | None, max_halvings: int) -> None:
+    if accuracy is not None and not (isinstance(accuracy, int | float) and accuracy > 0):
+        raise ParameterError("accuracy", accuracy, "a number > 0 (or None: no accuracy control)")
+    if isinstance(max_halvings, bool) or not isinstance(max_halvings, int) or max_halvings < 0:
+        raise ParameterError("max_halvings", max_halvings, "an integer >= 0")
+
+
+def simulate(
+    params: SubloadingParams,
+    program: Sequence[Segment],
+    initial: InitialConditions | ContactState | None = None,
+    *,
+    n_points: int | None = None,
+    accuracy: float | None = None,
+    max_halvings: int = 10,
+    progress: ProgressCallback | None = None,
+) -> History:
+    """Run ``program`` for N contact points and record every step.
+
+    Parameters
+    ----------
+    params:
+        Law parameters, shared or per point.
+    program:
+        Segments (see :mod:`frictionlab.driver.program`).
+    initial:
+        :class:`InitialConditions` (default: f_n = 1 Pa, virgin contact) or a
+        :class:`~frictionlab.subloading.ContactState` to continue from.
+    n_points:
+        N, when it does not follow from per-point inputs.
+    accuracy:
+        When given, accept a step only when one full step and two half steps agree to
+        within it (friction-ratio units for tractions, and for R and F/F_s; see
+        :func:`~frictionlab.driver.stepping.step_error`); refine otherwise.
+    max_halvings:
+        Deepest substepping: a step is cut into at most ``2**max_halvings`` substeps.
+    progress:
+        ``progress(done, total)`` after every step.
+
+    Returns
+    -------
+    History
+        ``success`` is False (with the reason in ``message``) when a step failed even at
+        the deepest substepping; the history then holds every step completed before it.
+        Invalid inputs raise :class:`~frictionlab.errors.ParameterError` before any step.
+    """
+    _check_accuracy(accuracy, max_halvings)
+    init = InitialConditions() if initial is None else initial
+    n = count_points(params, program, init, n_points)
+    state = init if isinstance(init, ContactState) else init.state(params, n)
+    plans = plan_program(program, n)
+    total = sum(p.estimated_steps for p in plans)
+    rec = _Recorder(state)
+    records: list[SegmentRecord] = []
+    work = dict.fromkeys(
+        ("steps", "substeps", "solves", "iterations", "refined_for_failure",
+         "refined_for_accuracy", "accuracy_unmet"), 0,
+    )  # fmt: skip
+    success, message = True, f"completed {len(plans)} segments"
+    for index, plan in enumerate(plans, start=1):
+        estimated = plan.estimated_steps
+        steps = plan.begin(state.traction)
+        total += steps - estimated
+        first_row = rec.rows
+        failed = False
+        for k in range(steps):
+            control = plan.control(k)
+            outcome, w = advance(
+                params, state, control, accuracy=accuracy, max_halvings=max_halvings
+            )
+            _count_work(work, w, completed=outcome.ok)
+            if not outcome.ok:
+                success, failed = False, True
+                message = (
+                    f"segment #{index} ({plan.kind}), step {k + 1} of {steps}: {outcome.reason}"
+                )
+                break
+            state = outcome.state
+            rec.add(state, control.dt, outcome.du, outcome.dissipation, outcome.status,
+                    index, w.substeps, w.solves, w.iterations)  # fmt: skip
+            if progress is not None:
+                progress(work["steps"], total)
+        if rec.rows > first_row:
+            records.append(
+                SegmentRecord(
+                    index, plan.kind, first_row, rec.rows - 1, plan.resolved, plan.is_hold
+                )
+            )
+        if failed:
+            break
+    if success and work["accuracy_unmet"]:
+        message += (
+            f"; the accuracy {accuracy} was not met in {work['accuracy_unmet']} steps "
+            f"even with 2**{max_halvings} substeps"
+        )
+    return rec.history(
+        segments=tuple(records),
+        final_state=state,
+        success=success,
+        message=message,
+        work=work,
+    )

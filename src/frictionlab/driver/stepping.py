@@ -1,0 +1,290 @@
+"""One step of a loading programme: mixed control and automatic substepping.
+
+:func:`solve_control` applies one :class:`~frictionlab.driver.program.Control` to N
+points with one call of the law's :func:`~frictionlab.subloading.update` when every
+component is slip-controlled, and with a damped Newton iteration on the consistent
+tangent when the tangential traction is prescribed. :func:`advance` wraps it with
+substepping: a step whose local solve fails is halved, and, when an ``accuracy`` is
+requested, a step is accepted only if one full step and two half steps agree to within
+it (step doubling); otherwise both halves are refined in turn, down to
+``2**-max_halvings`` of the step. All points are substepped together.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from frictionlab.driver.program import Control
+from frictionlab.subloading import ContactState, Status, StepResult, SubloadingParams, update
+
+__all__ = [
+    "Attempt",
+    "StepWork",
+    "advance",
+    "combine_attempts",
+    "solve_control",
+    "step_error",
+    "substep",
+]
+
+_FAILED = int(Status.FAILED)
+
+#: Newton iterations of the tangential traction control, per (sub)step.
+MAX_TRACTION_ITERATIONS = 60
+#: Relative tolerance of the traction control: |f_t - target| <= TOL * max(f_n, |target|).
+TRACTION_RTOL = 1e-12
+
+
+@dataclass
+class Attempt:
+    """Outcome of one increment (possibly made of substeps) for N points."""
+
+    state: ContactState
+    du: np.ndarray  #: (N, 3) slip increment actually applied [m]
+    dissipation: np.ndarray  #: (N,) f . Delta u^p summed over substeps [J/m^2]
+    status: np.ndarray  #: (N,) Status code of the step (SLIP if any substep slid)
+    iterations: np.ndarray  #: (N,) local Newton iterations summed over solves
+    solves: int  #: calls of the law's update
+    ok: bool
+    reason: str = ""
+
+
+@dataclass
+class StepWork:
+    """Work counters of one recorded step."""
+
+    substeps: int = 0
+    solves: int = 0
+    refined_for_failure: bool = False
+    refined_for_accuracy: bool = False
+    accuracy_unmet: bool = False
+    iterations: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+
+
+def _elastic(params: SubloadingParams, name: str, n: int) -> np.ndarray:
+    return np.broadcast_to(np.asarray(getattr(params, name), dtype=np.float64), (n,))
+
+
+def _result_attempt(res: StepResult, du: np.ndarray, solves: int, iters: np.ndarray) -> Attempt:
+    ok = not np.any(res.status == _FAILED)
+    return Attempt(
+        state=res.state,
+        du=du,
+        dissipation=res.dissipation,
+        status=res.status,
+        iterations=iters,
+        solves=solves,
+        ok=ok,
+        reason="" if ok else "the local solve of the law failed: " + res.message,
+    )
+
+
+def _solve2(J: np.ndarray, r: np.ndarray, fallback: np.ndarray) -> np.ndarray:
+    """Solve the (N, 2, 2) systems J d = r; where J is near-singular use ``fallback``."""
+    det = J[:, 0, 0] * J[:, 1, 1] - J[:, 0, 1] * J[:, 1, 0]
+    scale = np.maximum(np.abs(J).max(axis=(1, 2)), 1e-300)
+    good = np.abs(det) > 1e-12 * scale * scale
+    safe = np.where(good, det, 1.0)
+    d0 = (J[:, 1, 1] * r[:, 0] - J[:, 0, 1] * r[:, 1]) / safe
+    d1 = (-J[:, 1, 0] * r[:, 0] + J[:, 0, 0] * r[:, 1]) / safe
+    return np.where(good[:, None], np.column_stack([d0, d1]), fallback)
+
+
+def solve_control(params: SubloadingParams, state: ContactState, control: Control) -> Attempt:
+    """Apply one mixed-control increment (no substepping).
+
+    * prescribed normal traction: the approach is exact, ``(target - f_n)/alpha_n + gap``
+      (no plastic normal sliding, Eq 32);
+    * prescribed tangential traction: damped Newton on the (2, 2) tangential block of the
+      consistent tangent, with backtracking per point; fails if the target cannot be
+      reached (for example beyond what the contact can carry: gross sliding).
+    """
+    n = state.n_points
+    du = np.zeros((n, 3))
+    du[:, :2] = control.du_t
+    du[:, 2] = control.du_n
+    if control.fn_target is not None:
+        alpha_n = _elastic(params, "alpha_n", n)
+        du[:, 2] = (control.fn_target - state.traction[:, 2]) / alpha_n + state.gap
+    iters = np.zeros(n, dtype=np.int64)
+    if control.ft_target is None:
+        single = update(params, state, du, control.dt, raise_on_failure=False)
+        return _result_attempt(single, du, 1, iters + single.iterations)
+
+    target = control.ft_target
+    alpha_t = _elastic(params, "alpha_t", n)
+    fn_new = state.traction[:, 2] + _elastic(params, "alpha_n", n) * (du[:, 2] - state.gap)
+    tol = TRACTION_RTOL * np.maximum(np.maximum(fn_new, np.hypot(*target.T)), 1e-300)
+    du[:, :2] = (target - state.traction[:, :2]) / alpha_t[:, None]  # elastic guess
+    base = du[:, :2].copy()
+    step = np.zeros((n, 2))
+    lam = np.ones(n)
+    base_norm = np.full(n, np.inf)
+    solves = 0
+    res: StepResult | None = None
+    for _ in range(MAX_TRACTION_ITERATIONS):
+        res = update(params, state, du, control.dt, raise_on_failure=False)
+        solves += 1
+        iters += res.iterations
+        r = target - res.traction[:, :2]
+        norm = np.hypot(r[:, 0], r[:, 1])
+        norm[res.status == _FAILED] = np.inf
+        done = norm <= tol
+        if done.all():
+            return _result_attempt(res, du.copy(), solves, iters)
+        better = ~done & (norm < base_norm)
+        worse = ~done & ~better
+        if better.any():
+            J = res.tangent[:, :2, :2]
+            newton = _solve2(J, r, r / alpha_t[:, None])
+            base[better] = du[better, :2]
+            base_norm[better] = norm[better]
+            step[better] = newton[better]
+            lam[better] = 1.0
+        lam[worse] *= 0.5
+        if np.any(lam[worse] < 1e-12):
+            break
+        moving = better | worse
+        du[moving, :2] = base[moving] + lam[moving, None] * step[moving]
+    assert res is not None
+    missed = float(np.max(np.hypot(*(target - res.traction[:, :2]).T)))
+    return Attempt(
+        state=res.state,
+        du=du.copy(),
+        dissipation=res.dissipation,
+        status=res.status,
+        iterations=iters,
+        solves=solves,
+        ok=False,
+        reason=(
+            "the prescribed tangential traction could not be reached (largest miss "
+            f"{missed:.3g} Pa): the contact cannot carry it and slides away (gross "
+            "sliding), or the local solve failed"
+        ),
+    )
+
+
+def step_error(params: SubloadingParams, a: Attempt, b: Attempt) -> float:
+    """Step-doubling error between a full step ``a`` and two half steps ``b``.
+
+    The largest over points of: the difference of tangential traction and of the
+    elastic equivalent of the slip ``alpha_t |du_a - du_b|`` (both divided by the normal
+    traction: friction-ratio units), of R, and of F relative to its static value.
+    """
+    n = a.state.n_points
+    fn = np.maximum(a.state.traction[:, 2], b.state.traction[:, 2])
+    closed = fn > 0
+    dft = np.hypot(*(a.state.traction[:, :2] - b.state.traction[:, :2]).T)
+    dslip = np.hypot(*(a.du[:, :2] - b.du[:, :2]).T) * _elastic(params, "alpha_t", n)
+    ratio = np.where(closed, np.maximum(dft, dslip) / np.where(closed, fn, 1.0), 0.0)
+    dR = np.abs(a.state.R - b.state.R)
+    dF = np.abs(a.state.F - b.state.F) / np.broadcast_to(params.static, (n,))
+    return float(np.max(np.maximum(np.maximum(ratio, dR), dF)))
+
+
+def combine_attempts(first: Attempt, second: Attempt) -> Attempt:
+    """Join two consecutive attempts into one (sums; the second's state; SLIP if either slid)."""
+    slid = (first.status == Status.SLIP) | (second.status == Status.SLIP)
+    status = np.where(slid & (second.status != Status.OPEN), Status.SLIP, second.status)
+    return Attempt(
+        state=second.state,
+        du=first.du + second.du,
+        dissipation=first.dissipation + second.dissipation,
+        status=status.astype(np.int8),
+        iterations=first.iterations + second.iterations,
+        solves=first.solves + second.solves,
+        ok=first.ok and second.ok,
+        reason=second.reason or first.reason,
+    )
+
+
+def substep(
+    start: Any,
+    control: Any,
+    *,
+    solve: Callable[[Any, Any], Any],
+    halves: Callable[[Any, Any], tuple[Any, Any]],
+    combine: Callable[[Any, Any], Any],
+    error: Callable[[Any, Any], float],
+    accuracy: float | None,
+    max_halvings: int,
+    n_points: int,
+) -> tuple[Any, StepWork]:
+    """Generic substepping of one step (used by the programme driver and the spring-slider).
+
+    ``solve(start, control)`` returns an attempt with ``ok``, ``state``, ``solves`` and
+    ``iterations``; ``halves(start, control)`` splits a control in two;
+    ``combine(a, b)`` joins consecutive attempts; ``error(full, two_halves)`` measures
+    the step-doubling error. A failed attempt is halved; with ``accuracy`` a step is
+    accepted when ``error <= accuracy``, otherwise each half is refined in turn, at most
+    ``max_halvings`` times.
+    """
+    work = StepWork(iterations=np.zeros(n_points, dtype=np.int64))
+
+    def attempt(state: Any, ctl: Any) -> Any:
+        att = solve(state, ctl)
+        work.solves += att.solves
+        work.iterations += att.iterations
+        return att
+
+    def run(state: Any, ctl: Any, depth: int, full: Any) -> Any:
+        if full is None:
+            full = attempt(state, ctl)
+        if not full.ok:
+            if depth >= max_halvings:
+                return full
+            work.refined_for_failure = True
+            c1, c2 = halves(state, ctl)
+            first = run(state, c1, depth + 1, None)
+            if not first.ok:
+                return first
+            return combine(first, run(first.state, c2, depth + 1, None))
+        if accuracy is None:
+            work.substeps += 1
+            return full
+        if depth >= max_halvings:
+            work.accuracy_unmet = True
+            work.substeps += 1
+            return full
+        c1, c2 = halves(state, ctl)
+        h1 = attempt(state, c1)
+        h2 = attempt(h1.state, c2) if h1.ok else None
+        if h2 is not None and h2.ok:
+            both = combine(h1, h2)
+            if error(full, both) <= accuracy:
+                work.substeps += 2
+                return both
+        work.refined_for_accuracy = True
+        first = run(state, c1, depth + 1, h1)
+        if not first.ok:
+            return first
+        reuse = h2 if first.state is h1.state else None
+        return combine(first, run(first.state, c2, depth + 1, reuse))
+
+    return run(start, control, 0, None), work
+
+
+def advance(
+    params: SubloadingParams,
+    state: ContactState,
+    control: Control,
+    *,
+    accuracy: float | None = None,
+    max_halvings: int = 10,
+) -> tuple[Attempt, StepWork]:
+    """Advance a programme by one recorded step with automatic substepping."""
+    return substep(
+        state,
+        control,
+        solve=lambda st, ctl: solve_control(params, st, ctl),
+        halves=lambda st, ctl: ctl.halves(st.traction),
+        combine=combine_attempts,
+        error=lambda a, b: step_error(params, a, b),
+        accuracy=accuracy,
+        max_halvings=max_halvings,
+        n_points=state.n_points,
+    )

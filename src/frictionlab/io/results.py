@@ -1,0 +1,234 @@
+"""Outputs of a simulated scenario: ``history.csv``, ``summary.json`` and the plots.
+
+``history.csv`` is long format, one row per point and recorded step (point-major),
+with a ``# units:`` header line. ``summary.json`` echoes the inputs with defaults
+filled, and gives peaks, final values, per-segment values, work counters, success and
+the version. Every file is written atomically.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from frictionlab._version import __version__
+from frictionlab.driver import History, status_labels
+from frictionlab.driver.spring_slider import (
+    count_slip_events,
+    critical_stiffness,
+    friction_oscillation,
+)
+from frictionlab.errors import FrictionlabError
+from frictionlab.io.atomic import write_json_atomic
+from frictionlab.io.scenario import Scenario
+from frictionlab.io.tables import write_csv_atomic
+
+__all__ = ["HISTORY_UNITS", "history_columns", "summarise", "write_results"]
+
+#: Units of the history columns (F is in Pa for closed surfaces, see history_columns).
+HISTORY_UNITS: dict[str, str] = {
+    "point": "-",
+    "step": "-",
+    "segment": "-",
+    "kind": "-",
+    "time": "s",
+    "slip_1": "m",
+    "slip_2": "m",
+    "approach": "m",
+    "traction_1": "Pa",
+    "traction_2": "Pa",
+    "traction_n": "Pa",
+    "friction_ratio": "-",
+    "R": "-",
+    "F": "-",
+    "plastic_slip": "m",
+    "dissipation": "J/m^2",
+    "status": "-",
+    "substeps": "-",
+    "iterations": "-",
+}
+
+
+def history_columns(
+    history: History, cone: bool = True
+) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    """The history as long-format columns (point-major) and their units."""
+    rows, n = history.n_rows, history.n_points
+
+    def flat(arr: np.ndarray) -> np.ndarray:
+        return np.ascontiguousarray(np.asarray(arr).T).reshape(n * rows)
+
+    kinds = np.array(["initial"] + [""] * (rows - 1), dtype=object)
+    for seg in history.segments:
+        kinds[seg.first_row : seg.last_row + 1] = seg.kind
+    per_step = np.broadcast_to(np.arange(rows)[:, None], (rows, n))
+    cols: dict[str, np.ndarray] = {
+        "point": flat(np.broadcast_to(np.arange(1, n + 1), (rows, n))),
+        "step": flat(per_step),
+        "segment": flat(np.broadcast_to(history.segment[:, None], (rows, n))),
+        "kind": flat(np.broadcast_to(kinds[:, None], (rows, n))),
+        "time": flat(history.time),
+        "slip_1": flat(history.slip[..., 0]),
+        "slip_2": flat(history.slip[..., 1]),
+        "approach": flat(history.approach),
+        "traction_1": flat(history.traction[..., 0]),
+        "traction_2": flat(history.traction[..., 1]),
+        "traction_n": flat(history.traction[..., 2]),
+        "friction_ratio": flat(history.friction_ratio),
+        "R": flat(history.R),
+        "F": flat(history.F),
+        "plastic_slip": flat(history.plastic_slip),
+        "dissipation": flat(history.dissipation),
+        "status": flat(status_labels(history.status)),
+        "substeps": flat(np.broadcast_to(history.substeps[:, None], (rows, n))),
+        "iterations": flat(history.iterations),
+    }
+    units = dict(HISTORY_UNITS)
+    if not cone:
+        units["F"] = "Pa"
+    for key, arr in history.extra.items():
+        cols[key] = flat(arr)
+        units[key] = history.extra_units.get(key, "-")
+    return cols, units
+
+
+def _point_summary(history: History, i: int, label: str) -> dict[str, Any]:
+    ratio = history.friction_ratio[:, i]
+    k = int(np.argmax(ratio))
+    path = history.path_length[:, i]
+    return {
+        "point": i + 1,
+        "label": label,
+        "peak": {
+            "friction_ratio": float(ratio[k]),
+            "step": k,
+            "time": float(history.time[k, i]),
+            "slip_distance": float(path[k]),
+        },
+        "final": {
+            "time": float(history.time[-1, i]),
+            "slip": history.slip[-1, i].tolist(),
+            "approach": float(history.approach[-1, i]),
+            "traction": history.traction[-1, i].tolist(),
+            "friction_ratio": float(ratio[-1]),
+            "F": float(history.F[-1, i]),
+            "R": float(history.R[-1, i]),
+            "plastic_slip": float(history.plastic_slip[-1, i]),
+            "dissipation": float(history.dissipation[-1, i]),
+        },
+    }
+
+
+def _segment_summary(history: History, seg: Any) -> dict[str, Any]:
+    ratio = history.friction_ratio[seg.rows]
+    resolved = {
+        k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in seg.resolved.items()
+    }
+    return {
+        "index": seg.index,
+        "kind": seg.kind,
+        "first_step": seg.first_row,
+        "last_step": seg.last_row,
+        "resolved": resolved,
+        "start_friction_ratio": ratio[0].tolist(),
+        "peak_friction_ratio": ratio.max(axis=0).tolist(),
+        "final_friction_ratio": ratio[-1].tolist(),
+        "final_F": history.F[seg.last_row].tolist(),
+        "final_R": history.R[seg.last_row].tolist(),
+    }
+
+
+def summarise(
+    scenario: Scenario, history: History, elapsed: float, outputs: list[str]
+) -> dict[str, Any]:
+    """The content of ``summary.json``."""
+    labels = list(scenario.labels) + [""] * history.n_points
+    out: dict[str, Any] = {
+        "frictionlab": __version__,
+        "scenario": scenario.source,
+        "title": scenario.title,
+        "success": history.success,
+        "message": history.message,
+        "n_points": history.n_points,
+        "steps": history.n_rows - 1,
+        "inputs": scenario.inputs,
+        "points": [_point_summary(history, i, labels[i]) for i in range(history.n_points)],
+        "segments": [_segment_summary(history, seg) for seg in history.segments],
+        "work": dict(history.work),
+        "elapsed_seconds": round(elapsed, 3),
+        "outputs": outputs,
+    }
+    if scenario.kind == "spring_slider" and history.n_rows > 1:
+        machine = history.segments[0].resolved
+        out["stick_slip"] = {
+            "friction_oscillation_last_quarter": friction_oscillation(history, 0.25).tolist(),
+            "slip_events": count_slip_events(history).tolist(),
+            "critical_stiffness": _critical(scenario, machine),
+        }
+    return out
+
+
+def _critical(scenario: Scenario, machine: dict[str, Any]) -> list[float] | str:
+    params = scenario.params
+    if np.any(np.asarray(params.orthotropy_angle) != 0) or np.any(machine["direction_deg"] != 0):
+        return "not evaluated: the closed form holds for sliding along e*_1 = e_1"
+    try:
+        fn = np.broadcast_to(
+            np.asarray(scenario.initial.normal_traction, float), (scenario.n_points,)
+        )
+        return critical_stiffness(params, machine["velocity"], fn).tolist()
+    except FrictionlabError as exc:
+        return f"not evaluated: {exc}"
+
+
+def write_results(
+    out_dir: str | os.PathLike[str],
+    scenario: Scenario,
+    history: History,
+    elapsed: float,
+    plots: bool = True,
+) -> list[Path]:
+    """Write history.csv, the plots and summary.json (last) into ``out_dir``; return the paths."""
+    out = Path(out_dir)
+    written: list[Path] = []
+    cols, units = history_columns(history, cone=scenario.params.is_cone)
+    comment = (
+        f"frictionlab {__version__} history of '{scenario.title or scenario.source}'\n"
+        f"{history.n_points} points x {history.n_rows} rows (row 0 = initial state); "
+        f"success = {str(history.success).lower()}"
+    )
+    written.append(write_csv_atomic(out / "history.csv", cols, units, comment))
+    if plots and history.n_rows > 1:
+        written.extend(_plots(out, scenario, history))
+    names = [p.name for p in written] + ["summary.json"]
+    summary = summarise(scenario, history, elapsed, names)
+    written.append(write_json_atomic(out / "summary.json", summary))
+    return written
+
+
+def _plots(out: Path, scenario: Scenario, history: History) -> list[Path]:
+    from frictionlab.plotting.law import (
+        plot_friction,
+        plot_spring_slider,
+        plot_traction_path,
+        save_figure,
+    )
+
+    paths = []
+    labels = scenario.labels
+    if scenario.kind == "spring_slider":
+        fig = plot_spring_slider(history, labels)
+        fig.suptitle(scenario.title)
+        paths.append(save_figure(fig, out / "friction.png"))
+    else:
+        paths.append(
+            save_figure(plot_friction(history, labels, scenario.title), out / "friction.png")
+        )
+    if not history.is_planar:
+        ax = plot_traction_path(history, scenario.params, labels)
+        ax.set_title(scenario.title, fontsize=9)
+        paths.append(save_figure(ax.figure, out / "traction_path.png"))  # type: ignore[arg-type]
+    return paths

@@ -1,0 +1,336 @@
+"""Plots of the subloading-friction law driven by loading programmes and machines.
+
+Every function imports matplotlib lazily, draws on ``ax`` (or a new figure) and returns
+what it drew on. Axes labels carry SI units.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from frictionlab.io.atomic import atomic_path
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from frictionlab.driver import History
+    from frictionlab.subloading import SubloadingParams
+
+__all__ = [
+    "new_figure",
+    "plot_friction",
+    "plot_pressure_dependence",
+    "plot_ratcheting",
+    "plot_restart_peaks",
+    "plot_spring_slider",
+    "plot_stability_map",
+    "plot_steady_friction",
+    "plot_traction_path",
+    "save_figure",
+]
+
+
+def new_figure(
+    ncols: int = 1, width: float = 6.0, height: float = 4.0
+) -> tuple[Figure, list[Axes]]:
+    """A figure with ``ncols`` side-by-side axes (no pyplot state)."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(width * ncols, height), layout="constrained")
+    axes = [fig.add_subplot(1, ncols, i + 1) for i in range(ncols)]
+    return fig, axes
+
+
+def save_figure(fig: Figure, path: str | os.PathLike[str], dpi: int = 110) -> Path:
+    """Write ``fig`` as PNG to ``path`` atomically and return the path."""
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=dpi, format="png")
+    return Path(path)
+
+
+def _labels(labels: Sequence[str], n: int) -> list[str | None]:
+    return [(labels[i] if i < len(labels) and labels[i] else None) for i in range(n)]
+
+
+def _colors(n: int) -> list[Any]:
+    from matplotlib import colormaps
+
+    if n <= 10:
+        return [colormaps["tab10"](i) for i in range(n)]
+    return [colormaps["viridis"](i / max(n - 1, 1)) for i in range(n)]
+
+
+def _log_time(t: np.ndarray) -> bool:
+    """A logarithmic time axis when the run spans many decades (long holds, slow slides)."""
+    positive = t[t > 0]
+    return bool(positive.size) and float(positive.max() / positive.min()) > 1e4
+
+
+def plot_friction(
+    history: History, labels: Sequence[str] = (), title: str = "", fig: Figure | None = None
+) -> Figure:
+    """Friction ratio against slip (left) and against time (right), holds marked.
+
+    1-D programmes show the signed ratio f_t1/f_n against the slip along e_1 (loops
+    after reversals); 2-D programmes show |f_t|/f_n against the slip distance travelled.
+    Holds are shaded on the time axis and marked with a dot on the slip axis.
+    """
+    if fig is None:
+        fig, (ax_s, ax_t) = new_figure(2, 5.5, 4.0)
+    else:
+        ax_s, ax_t = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    n = history.n_points
+    planar = history.is_planar
+    fn = history.traction[..., 2]
+    ratio = (
+        np.where(fn > 0, history.traction[..., 0] / np.where(fn > 0, fn, 1.0), 0.0)
+        if planar
+        else history.friction_ratio
+    )
+    x = history.slip[..., 0] if planar else history.path_length
+    names = _labels(labels, n)
+    colors = _colors(n)
+    log_time = _log_time(history.time)
+    for i in range(n):
+        ax_s.plot(x[:, i], ratio[:, i], color=colors[i], lw=1.2, label=names[i])
+        shown = history.time[:, i] > 0 if log_time else slice(None)
+        ax_t.plot(history.time[shown, i], ratio[shown, i], color=colors[i], lw=1.2, label=names[i])
+    marked = False
+    for seg in history.segments:
+        if not seg.is_hold:
+            continue
+        for i in range(n):
+            t0, t1 = history.time[seg.first_row - 1, i], history.time[seg.last_row, i]
+            ax_t.axvspan(t0, t1, color="0.6", alpha=0.15, lw=0, label=None if marked else "hold")
+            ax_s.plot(x[seg.last_row, i], ratio[seg.last_row, i], "o", color=colors[i], ms=4,
+                      mfc="white", label=None if marked else "hold")  # fmt: skip
+            marked = True
+    if log_time:
+        ax_t.set_xscale("log")
+    y_label = "friction ratio f_t1/f_n [-]" if planar else "friction ratio |f_t|/f_n [-]"
+    ax_s.set_xlabel("slip along e_1 [m]" if planar else "slip distance [m]")
+    ax_s.set_ylabel(y_label)
+    ax_t.set_xlabel("time [s] (log scale)" if log_time else "time [s]")
+    ax_t.set_ylabel(y_label)
+    for ax in (ax_s, ax_t):
+        ax.grid(alpha=0.3)
+    if any(names) or marked:
+        ax_t.legend(fontsize=8, loc="best")
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+def _yield_curve(params: SubloadingParams, F: float, fn: float, i: int = 0) -> np.ndarray:
+    """(2, K) tangential tractions / f_n on the sliding-yield curve f(f) = F at f_n (Eq 22)."""
+    from frictionlab.subloading import g_inverse
+
+    axes = np.broadcast_to(params.axis_factors, (max(params.n_points, i + 1), 2))[i]
+    beta = np.broadcast_to(params.rotation, (max(params.n_points, i + 1), 2))[i]
+    angle = float(np.broadcast_to(params.orthotropy_angle, (max(params.n_points, i + 1),))[i])
+    if params.is_cone:
+        w = F * fn
+    else:
+        if F / fn < 1.0:
+            return np.zeros((2, 0))
+        w = float(g_inverse(params.surface, np.array(F / fn), params.tear_k)) * fn
+    s = np.linspace(0.0, 2.0 * math.pi, 241)
+    p1, p2 = w * axes[0] * np.cos(s), w * axes[1] * np.sin(s)
+    c, sn = math.cos(angle), math.sin(angle)
+    f1 = c * p1 - sn * p2 + fn * beta[0]
+    f2 = sn * p1 + c * p2 + fn * beta[1]
+    return np.vstack([f1, f2]) / fn
+
+
+def plot_traction_path(
+    history: History,
+    params: SubloadingParams | None = None,
+    labels: Sequence[str] = (),
+    ax: Axes | None = None,
+) -> Axes:
+    """Path of the tangential traction in the contact plane, (f_t1, f_t2)/f_n.
+
+    With ``params``, the static (F_s) and kinetic (F_k) sliding-yield curves of point 1
+    at its initial normal traction are drawn for reference.
+    """
+    if ax is None:
+        ax = new_figure(1, 5.5, 5.0)[1][0]
+    n = history.n_points
+    fn = history.traction[..., 2]
+    safe = np.where(fn > 0, fn, 1.0)
+    r1 = np.where(fn > 0, history.traction[..., 0] / safe, 0.0)
+    r2 = np.where(fn > 0, history.traction[..., 1] / safe, 0.0)
+    names = _labels(labels, n)
+    colors = _colors(n)
+    if params is not None and fn[0, 0] > 0:
+        for value, style, name in (
+            (float(np.ravel(params.static)[0]), "--", "static yield curve (F_s)"),
+            (float(np.ravel(params.kinetic)[0]), ":", "kinetic yield curve (F_k)"),
+        ):
+            curve = _yield_curve(params, value, float(fn[0, 0]))
+            if curve.size:
+                ax.plot(curve[0], curve[1], style, color="0.35", lw=1.0, label=name)
+    for i in range(n):
+        ax.plot(r1[:, i], r2[:, i], color=colors[i], lw=1.2, label=names[i])
+        ax.plot(r1[-1, i], r2[-1, i], "o", color=colors[i], ms=4)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.axhline(0.0, color="0.8", lw=0.8)
+    ax.axvline(0.0, color="0.8", lw=0.8)
+    ax.set_xlabel("f_t1 / f_n [-]")
+    ax.set_ylabel("f_t2 / f_n [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8, loc="best")
+    return ax
+
+
+def plot_spring_slider(
+    history: History, labels: Sequence[str] = (), fig: Figure | None = None
+) -> Figure:
+    """Spring-slider: friction ratio (left) and slider speed / V (right) against load-point travel."""  # noqa: E501
+    if fig is None:
+        fig, (ax_f, ax_v) = new_figure(2, 5.5, 4.0)
+    else:
+        ax_f, ax_v = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    n = history.n_points
+    load = history.extra["load_point"]
+    speed = history.extra["velocity"]
+    V = np.asarray(history.segments[0].resolved["velocity"]) if history.segments else np.ones(n)
+    names = _labels(labels, n)
+    colors = _colors(n)
+    ratio = history.friction_ratio
+    for i in range(n):
+        ax_f.plot(load[:, i], ratio[:, i], color=colors[i], lw=1.0, label=names[i])
+        rel = np.abs(speed[:, i]) / (V[i] if V[i] > 0 else 1.0)
+        ax_v.plot(load[:, i], np.maximum(rel, 1e-6), color=colors[i], lw=1.0, label=names[i])
+    ax_v.set_yscale("log")
+    ax_f.set_xlabel("load-point travel V t [m]")
+    ax_f.set_ylabel("friction ratio |f_t|/f_n [-]")
+    ax_v.set_xlabel("load-point travel V t [m]")
+    ax_v.set_ylabel("slider speed / V [-]")
+    for ax in (ax_f, ax_v):
+        ax.grid(alpha=0.3)
+    if any(names):
+        ax_f.legend(fontsize=8, loc="best")
+    return fig
+
+
+def plot_steady_friction(
+    velocity: np.ndarray,
+    simulated: np.ndarray,
+    curve_velocity: np.ndarray,
+    curve: np.ndarray,
+    bounds: tuple[float, float] | None = None,
+    ax: Axes | None = None,
+) -> Axes:
+    """Steady friction against sliding velocity: simulated points and the closed form mu_ss(V)."""
+    if ax is None:
+        ax = new_figure(1, 5.5, 4.0)[1][0]
+    ax.plot(curve_velocity, curve, "-", color="0.3", lw=1.2, label="closed form mu_ss(V)")
+    ax.plot(velocity, simulated, "o", color="C3", label="simulated (end of slide)")
+    if bounds is not None:
+        ax.axhline(bounds[0], color="0.6", ls=":", lw=1.0, label="mu_k")
+        ax.axhline(bounds[1], color="0.6", ls="--", lw=1.0, label="mu_s")
+    ax.set_xscale("log")
+    ax.set_xlabel("sliding velocity V [m/s]")
+    ax.set_ylabel("steady friction ratio [-]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    return ax
+
+
+def plot_restart_peaks(
+    hold_time: np.ndarray,
+    peak: np.ndarray,
+    recovered: np.ndarray,
+    curve_time: np.ndarray,
+    curve: np.ndarray,
+    mu_s: float,
+    ax: Axes | None = None,
+) -> Axes:
+    """Restart peak and mu at the end of the hold against hold time, with the closed form."""
+    if ax is None:
+        ax = new_figure(1, 5.5, 4.0)[1][0]
+    ax.plot(
+        curve_time, curve, "-", color="0.3", lw=1.2, label="closed form mu(t_h) (hold recovery)"
+    )
+    ax.plot(hold_time, recovered, "s", color="C0", mfc="white", label="mu at the end of the hold")
+    ax.plot(hold_time, peak, "o", color="C3", label="restart peak of |f_t|/f_n")
+    ax.axhline(mu_s, color="0.6", ls="--", lw=1.0, label="mu_s")
+    ax.set_xscale("log")
+    ax.set_xlabel("hold time t_h [s]")
+    ax.set_ylabel("friction ratio [-]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    return ax
+
+
+def plot_ratcheting(
+    cycle: np.ndarray, residual: np.ndarray, per_cycle: float, ax: Axes | None = None
+) -> Axes:
+    """Residual slip after each traction cycle against the closed form n * Delta u (Eq 29)."""
+    if ax is None:
+        ax = new_figure(1, 5.5, 4.0)[1][0]
+    ax.plot(
+        cycle,
+        cycle * per_cycle * 1e3,
+        "-",
+        color="0.3",
+        label="(2/(pi u)) ln sec(pi R_max/2) per cycle",
+    )
+    ax.plot(cycle, residual * 1e3, "o", color="C3", label="simulated residual slip")
+    ax.set_xlabel("cycle [-]")
+    ax.set_ylabel("residual slip [mm]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return ax
+
+
+def plot_pressure_dependence(
+    results: Mapping[str, tuple[np.ndarray, np.ndarray]],
+    curves: Mapping[str, tuple[np.ndarray, np.ndarray]],
+    ax: Axes | None = None,
+) -> Axes:
+    """Steady friction coefficient against f_n/F for each closed surface (points) and the
+    closed forms mu = M g^-1(F/f_n) (lines)."""
+    if ax is None:
+        ax = new_figure(1, 6.0, 4.5)[1][0]
+    colors = _colors(len(results))
+    for color, (name, (x, mu)) in zip(colors, results.items(), strict=True):
+        cx, cmu = curves[name]
+        ax.plot(cx, cmu, "-", color=color, lw=1.0)
+        ax.plot(x, mu, "o", color=color, ms=4, label=name)
+    ax.set_xlabel("normal traction / F [-]")
+    ax.set_ylabel("steady friction |f_t|/f_n [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8, title="points: simulated, lines: closed form")
+    return ax
+
+
+def plot_stability_map(
+    ratio: np.ndarray, oscillation: np.ndarray, velocity: float, ax: Axes | None = None
+) -> Axes:
+    """Friction oscillation in the late part of the run against k / k_c."""
+    if ax is None:
+        ax = new_figure(1, 5.5, 4.0)[1][0]
+    ax.plot(ratio, np.maximum(oscillation, 1e-16), "o-", color="C3")
+    ax.axvline(1.0, color="0.4", ls="--", lw=1.0, label="predicted boundary k = k_c")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    from matplotlib.ticker import NullFormatter, ScalarFormatter
+
+    ax.set_xticks(np.unique(np.concatenate([ratio, [1.0]])))
+    ax.xaxis.set_major_formatter(ScalarFormatter())
+    ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.set_xlabel("machine stiffness k / k_c [-]")
+    ax.set_ylabel("peak-to-peak friction ratio, last quarter [-]")
+    ax.set_title(f"V = {velocity:g} m/s", fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    return ax
