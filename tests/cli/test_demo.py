@@ -13,7 +13,7 @@ from typing import ClassVar
 import pytest
 
 from frictionlab.cli import main
-from frictionlab.demo import bundled_scenarios
+from frictionlab.demo import bundled_scenarios, default_builders
 
 
 class Page(HTMLParser):
@@ -75,7 +75,8 @@ def test_report_is_well_formed_and_complete(demo_dir: Path) -> None:
     page.feed((demo_dir / "report.html").read_text(encoding="utf-8"))
     page.close()
     assert page.errors == [] and page.stack == []
-    assert page.sections == 6 and page.tables == 6  # one parameter table per section
+    n = len(default_builders())  # the law's 6 sections and the roughness model's 2
+    assert n == 8 and page.sections == n and page.tables == n  # one parameter table each
     assert len(page.images) >= 12
     for fig in page.figures:
         assert fig["img"] and len(str(fig["caption"]).split()) >= 8  # a real sentence

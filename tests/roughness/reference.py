@@ -30,8 +30,38 @@ def local_multipliers(mu0: float, gx: float, gy: float, beta: float) -> tuple[fl
     )
 
 
-def spring_force(u: float, kc: float, kt: float) -> float:
-    return kc * u if u > 0.0 else kt * u
+def spring_force(u: float, kc: float, kt: float, detach: float = math.inf) -> float:
+    if u > 0.0:
+        return kc * u
+    return kt * u if u >= -detach else 0.0  # beyond the cut-off the spring has let go
+
+
+def balance_detach(gaps: list[float], kc: float, kt: float, load: float, detach: float) -> float:
+    """The largest c with mean spring force == load when springs detach (direct sums).
+
+    Scans the breakpoints (c = g and c = g - detach) from the top; between two of them the
+    force is continuous and increasing, so the top-most piece reaching down to the load
+    holds the root, found by bisection.
+    """
+
+    def mean(c: float) -> float:
+        return sum(spring_force(c - g, kc, kt, detach) for g in gaps) / len(gaps)
+
+    points = sorted({*gaps, *(g - detach for g in gaps)})
+    top = max(gaps) + abs(load) / kc + 1.0
+    pieces = list(zip(points, [*points[1:], top], strict=True))
+    for lo, hi in reversed(pieces):
+        eps = 1e-12 * (hi - lo)
+        if mean(lo + eps) <= load:
+            a, b = lo + eps, hi - eps
+            for _ in range(200):
+                mid = 0.5 * (a + b)
+                if mean(mid) < load:
+                    a = mid
+                else:
+                    b = mid
+            return 0.5 * (a + b)
+    raise ArithmeticError("load below the pull-off force")
 
 
 def balance(gaps: list[float], kc: float, kt: float, load: float) -> float:
@@ -60,6 +90,7 @@ def reference_friction(
     kc: float = 1.0,
     kt: float = 0.0,
     separation: float | None = None,
+    detach: float = math.inf,
 ) -> dict[str, float]:
     """mu_x, mu_y and mu_apparent over the given stations (outer grid) and shifts (m)."""
     beta = math.radians(beta_deg)
@@ -76,8 +107,13 @@ def reference_friction(
             forces = [1.0] * len(records)
             totals = forces
         else:
-            c = separation if separation is not None else balance(gaps, kc, kt, float(load))
-            totals = [spring_force(c - g, kc, kt) for g in gaps]
+            if separation is not None:
+                c = separation
+            elif detach < math.inf:
+                c = balance_detach(gaps, kc, kt, float(load), detach)
+            else:
+                c = balance(gaps, kc, kt, float(load))
+            totals = [spring_force(c - g, kc, kt, detach) for g in gaps]
             forces = [max(f, 0.0) for f in totals]
         for f, (_, g1, g2) in zip(forces, records, strict=True):
             if f <= 0.0:
@@ -90,8 +126,13 @@ def reference_friction(
             ry2 += f * y2  # Eq 9
             rz += 2.0 * f  # Eq 5: both families
         l_sum += 2.0 * sum(totals)
+    springs = 2.0 * len(points) * len(shifts)  # both families, every time sample
     return {
-        "mu_x": (rx1 + rx2) / rz,
-        "mu_y": (ry1 + ry2) / rz,
-        "mu_apparent": math.hypot(rx1 + rx2, ry1 + ry2) / l_sum,
+        "mu_x": (rx1 + rx2) / rz if rz > 0.0 else math.nan,
+        "mu_y": (ry1 + ry2) / rz if rz > 0.0 else math.nan,
+        "mu_apparent": math.hypot(rx1 + rx2, ry1 + ry2) / l_sum if l_sum != 0.0 else math.nan,
+        # time averages per spring (N): resisting force and compressive force (Eqs 5-9)
+        "force_x": (rx1 + rx2) / springs,
+        "force_y": (ry1 + ry2) / springs,
+        "compressed_force": rz / springs,
     }

@@ -13,15 +13,29 @@ after everything has been computed and rendered:
   ``plot_step_deg`` are computed for it unless ``plot_full_circle = false``), and both
   surfaces.
 
+Optional tables of the scenario add (see :mod:`frictionlab.io.roughness_scenario`):
+
+* ``[adhesion]``: ``adhesion.csv`` (one row per load and direction: tangential force,
+  mu_compressed, mu_apparent (Eq 22; an empty field at L = 0 with
+  ``mu_apparent_defined = false``), fractions of compressed and stretched springs) and
+  ``adhesion.png``;
+* ``[wear]``: ``wear.csv`` (mu(t) from 0 to T_w per direction) and ``wear.png``;
+* ``[hierarchy]``: ``hierarchy.csv`` (mu_i of every level per direction; invalid levels
+  as empty fields with ``valid = false``) and ``hierarchy.png``;
+* ``[hierarchy]`` with ``[wear]``: also ``hierarchy_wear.csv`` (B_i and mu_i of every
+  level over the whole life) and ``hierarchy_wear.png``.
+
 Bad input (unknown kind, missing key, angle outside (0, 90), unreadable file, NaN
-heights, mu0 <= 0 or beyond the validity bound of Eq 1) ends with one line on stderr and
-exit code 2; nothing is written.
+heights, mu0 <= 0 or beyond the validity bound of Eq 1, a negative wear coefficient, a
+zero hardness, levels that are not strictly nested, an empty load sweep) ends with one
+line on stderr and exit code 2; nothing is written.
 """
 
 from __future__ import annotations
 
 import argparse
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -33,9 +47,17 @@ from frictionlab.io.atomic import write_bytes_atomic, write_json_atomic, write_t
 from frictionlab.io.config import apply_overrides, load_toml
 from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
 from frictionlab.io.tables import format_csv
+from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import FlatProfile, WedgeProfile
+from frictionlab.roughness.hierarchy import (
+    HierarchyResult,
+    HierarchyWearHistory,
+    hierarchy_friction,
+    hierarchy_wear,
+)
 from frictionlab.roughness.lattice import FrictionPolar, friction_polar, merge_polars
+from frictionlab.roughness.wear import WearHistory, wear_history
 
 __all__ = ["add_parser", "run"]
 
@@ -75,23 +97,166 @@ def run(args: argparse.Namespace) -> int:
     polar = friction_polar(
         scenario.lower, scenario.upper, scenario.mu0, scenario.beta_deg, settings=scenario.settings
     )
+    if not np.all(polar.in_contact):
+        beta = float(polar.beta_deg[int(np.argmin(polar.in_contact))])
+        raise InputError(
+            f"[sliding].load = {scenario.settings.load} compresses no spring at beta = {beta:g} "
+            "deg, so mu is undefined there: allowed a load that keeps some spring compressed "
+            "(sweeps through zero and tension belong in [adhesion])"
+        )
     plot_polar = _full_circle(scenario, polar)
+    extensions = _extensions(scenario)
     seconds = time.perf_counter() - started
 
-    csv_text = _csv_text(scenario, polar, scenario_path)
+    files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, polar, scenario_path)}
+    files.update(_extension_files(scenario, extensions, scenario_path))
     summary = _summary(scenario, polar, plot_polar, scenario_path, seconds)
-    png = _png(scenario, plot_polar)
-    write_text_atomic(out_dir / "polar.csv", csv_text)
+    summary.update(_extension_summary(scenario, extensions))
+    extra = sorted(name for name in files if name != "polar.csv")
+    summary["files"] = ["polar.csv", "summary.json", "polar.png", *extra]
+    files["polar.png"] = _png(scenario, plot_polar)
+    files["summary.json"] = ""  # written below, last
+    for name, content in files.items():
+        if name == "summary.json":
+            continue
+        if isinstance(content, bytes):
+            write_bytes_atomic(out_dir / name, content)
+        else:
+            write_text_atomic(out_dir / name, content)
     write_json_atomic(out_dir / "summary.json", summary)
-    write_bytes_atomic(out_dir / "polar.png", png)
     ratio = polar.mu_over_mu0
+    names = ", ".join(str(out_dir / name) for name in summary["files"])
     print(
         f"frictionlab roughness: {polar.beta_deg.size} directions, mu/mu0 from "
-        f"{ratio.min():.6g} (beta = {polar.beta_deg[int(np.argmin(ratio))]:g} deg) to "
-        f"{ratio.max():.6g} (beta = {polar.beta_deg[int(np.argmax(ratio))]:g} deg); "
-        f"wrote {out_dir / 'polar.csv'}, {out_dir / 'summary.json'}, {out_dir / 'polar.png'}"
+        f"{np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; wrote {names}"
     )
     return 0
+
+
+def _extensions(scenario: RoughnessScenario) -> dict[str, Any]:
+    """Adhesion, wear, hierarchy and hierarchy-with-wear results (only those requested)."""
+    out: dict[str, Any] = {}
+    s = scenario.settings
+    if scenario.adhesion is not None:
+        a = scenario.adhesion
+        kt = 0.5 * s.k_c if a.k_t is None else a.k_t
+        out["adhesion"] = adhesion_sweep(
+            scenario.lower, scenario.upper, scenario.mu0, a.loads, a.beta_deg, k_t=a.k_t,
+            compare_without_adhesion=a.compare_without_adhesion,
+            settings=replace(s, k_t=kt, detachment=a.detachment),
+        )  # fmt: skip
+    if scenario.wear is not None:
+        w = scenario.wear
+        out["wear"] = wear_history(
+            scenario.lower, scenario.upper, scenario.mu0, w.beta_deg, w.settings,
+            samples=w.samples, method=w.method, settings=s,
+        )  # fmt: skip
+    if scenario.hierarchy is not None:
+        h = scenario.hierarchy
+        out["hierarchy"] = hierarchy_friction(
+            h.levels, scenario.mu0, h.beta_deg, mu_passed=h.mu_passed, on_invalid=h.on_invalid,
+            settings=s,
+        )  # fmt: skip
+        if scenario.wear is not None:
+            out["hierarchy_wear"] = hierarchy_wear(
+                h.levels, scenario.mu0, h.beta_deg, scenario.wear.settings,
+                samples_per_level=h.samples_per_level, mu_passed=h.mu_passed, settings=s,
+            )  # fmt: skip
+    return out
+
+
+def _extension_files(
+    scenario: RoughnessScenario, results: dict[str, Any], path: Path
+) -> dict[str, str | bytes]:
+    """CSV text and PNG bytes of every extension result, rendered before anything is written."""
+    from frictionlab.plotting.roughness import figure_png_bytes
+    from frictionlab.plotting.roughness_life import (
+        adhesion_figure,
+        hierarchy_figure,
+        hierarchy_wear_figure,
+        wear_figure,
+    )
+
+    title = scenario.title or path.name
+    files: dict[str, str | bytes] = {}
+    head = f"frictionlab {__version__} roughness: {title}\nmu0 = {scenario.mu0:g}"
+    if "adhesion" in results:
+        sweep: AdhesionSweep = results["adhesion"]
+        header = (
+            f"{head}, k_c = {sweep.k_c:g} N/m, k_t = {sweep.k_t:g} N/m; loads and forces per "
+            "spring (N); mu_apparent = R/L (Eq 22), empty where undefined (L = 0)"
+        )
+        files["adhesion.csv"] = format_csv(sweep.columns(), sweep.units(), header)
+        files["adhesion.png"] = figure_png_bytes(adhesion_figure(sweep, f"adhesion: {title}"))
+    if "wear" in results:
+        history: WearHistory = results["wear"]
+        header = (
+            f"{head}, wear time T_w = {history.wear_time:.9g} s, volume {history.volume:.9g} m^3, "
+            f"surfaces = {history.wear.surfaces}, method = {history.method}"
+        )
+        files["wear.csv"] = format_csv(history.columns(), history.units(), header)
+        files["wear.png"] = figure_png_bytes(wear_figure(history, f"wear: {title}"))
+    if "hierarchy" in results:
+        result: HierarchyResult = results["hierarchy"]
+        header = (
+            f"{head}, {result.n_levels} levels (level 0: the local mu0), mu passed upward: "
+            f"{result.mu_passed}; invalid levels empty with valid = false"
+        )
+        files["hierarchy.csv"] = format_csv(result.columns(), result.units(), header)
+        files["hierarchy.png"] = figure_png_bytes(hierarchy_figure(result, f"hierarchy: {title}"))
+    if "hierarchy_wear" in results:
+        life: HierarchyWearHistory = results["hierarchy_wear"]
+        drop = ", ".join(f"{t:.6g}" for t in life.dropout_time)
+        header = f"{head}, levels flat (drop out) at t = {drop} s (Eq 35 windows)"
+        files["hierarchy_wear.csv"] = format_csv(life.columns(), life.units(), header)
+        files["hierarchy_wear.png"] = figure_png_bytes(
+            hierarchy_wear_figure(life, f"hierarchy with wear: {title}")
+        )
+    return files
+
+
+def _extension_summary(scenario: RoughnessScenario, results: dict[str, Any]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    if "adhesion" in results:
+        sweep: AdhesionSweep = results["adhesion"]
+        out["adhesion"] = {
+            "k_c_N_per_m": sweep.k_c,
+            "k_t_N_per_m": sweep.k_t,
+            "loads_per_spring_N": sweep.load.tolist(),
+            "beta_deg": sweep.beta_deg.tolist(),
+            "mu_apparent": [
+                [None if v is np.ma.masked else float(v) for v in row] for row in sweep.mu_apparent
+            ],
+            "detachment_m": scenario.adhesion.detachment if scenario.adhesion else None,
+        }
+    if "wear" in results:
+        history: WearHistory = results["wear"]
+        out["wear"] = {
+            **history.wear.as_dict(),
+            "wear_time_s": history.wear_time,
+            "roughness_volume_m3": history.volume,
+            "method": history.method,
+            "mu_initial": history.mu[0].tolist(),
+            "mu_final": history.mu[-1].tolist(),
+        }
+    if "hierarchy" in results:
+        result: HierarchyResult = results["hierarchy"]
+        out["hierarchy"] = {
+            "levels": result.n_levels,
+            "mu_passed": result.mu_passed,
+            "beta_deg": result.beta_deg.tolist(),
+            "mu_outermost": [None if v is np.ma.masked else float(v) for v in result.mu[-1]],
+            "first_invalid_level": result.first_invalid_level.tolist(),
+            "messages": list(result.messages),
+        }
+    if "hierarchy_wear" in results:
+        life: HierarchyWearHistory = results["hierarchy_wear"]
+        out["hierarchy_wear"] = {
+            "wear_time_per_level_s": life.wear_time.tolist(),
+            "dropout_time_per_level_s": life.dropout_time.tolist(),
+            "volume_per_level_m3": life.volume.tolist(),
+        }
+    return out
 
 
 def _full_circle(scenario: RoughnessScenario, polar: FrictionPolar) -> FrictionPolar:

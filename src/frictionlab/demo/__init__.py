@@ -70,17 +70,23 @@ def bundled_scenario(name: str) -> Iterator[Path]:
 def default_builders() -> list[SectionBuilder]:
     """The demo's sections, in report order."""
     from frictionlab.demo.law import LAW_SECTIONS
+    from frictionlab.demo.roughness import ROUGHNESS_SECTIONS
 
-    return [*LAW_SECTIONS]
+    return [*LAW_SECTIONS, *ROUGHNESS_SECTIONS]
 
 
-TITLE = "frictionlab demo: the subloading-friction law in tribometer tests"
+TITLE = (
+    "frictionlab demo: the subloading-friction law in tribometer tests and the lattice-spring "
+    "roughness model"
+)
 INTRO = (
     "Each section runs bundled scenarios (frictionlab/data/scenarios/*.toml; a copy sits next to "
     "its results, and `frictionlab simulate <copy> --out DIR` reruns it) through the "
     "subloading-friction law of Hashiguchi & Ozaki (2008), shows the response and compares "
     "it with the closed forms of the specification. SI units throughout; tractions per unit "
-    "area in Pa."
+    "area in Pa. The last two sections compute the figure families of the lattice-spring "
+    "roughness model (mu versus sliding direction, adhesion, wear, hierarchy); their "
+    "figures and tables sit in roughness/."
 )
 
 

@@ -29,6 +29,32 @@ Layout (every unknown key is an error; lengths in m, angles in degrees)::
     [output]                       # optional
     plot_full_circle = true        # compute extra directions for the full-circle plot
     plot_step_deg = 5.0
+    [adhesion]                     # optional: load sweep with tensile springs (Eqs 21-22)
+    loads = [2.0, 1.0, 0.5, 0.0, -0.1]   # N per spring; or { start, stop, count }
+    k_t = 0.5                      # N/m, default k_c / 2
+    detachment = 0.1               # m, cut-off elongation; default: never detach
+    beta_deg = [0.0, 90.0]         # default: [sliding].beta_deg
+    compare_without_adhesion = true
+    [wear]                         # optional: Archard wear, mu(t) (Eqs 23-28w)
+    wear_coefficient = 1.0e-4      # K (dimensionless), > 0
+    hardness = 2.0e9               # Pa, > 0
+    normal_load = 10.0             # N on the nominal area (not the lattice load)
+    velocity = 0.1                 # m/s
+    nominal_area = 1.0e-4          # m^2 (1-D: depth along the ridges x length)
+    surfaces = "both"              # both | lower | upper
+    samples = 21                   # times from 0 to T_w
+    method = "auto"                # auto | lattice | closed_form
+    beta_deg = [0.0, 45.0, 90.0]   # default: [sliding].beta_deg
+    [hierarchy]                    # optional: [lower]/[upper] are the outermost level n
+    levels = 3                     # self-similar levels (Eq 28) with
+    ratio = 10.0                   # the scale factor between levels, or instead:
+    # [[hierarchy.inner]]          # inner levels, innermost first, strictly nested
+    # lower = { kind = "sinusoid", amplitude = 1.0e-6, wavelengths = [1.0e-5] }
+    # upper = { kind = "flat" }
+    mu_passed = "magnitude"        # or "projection"
+    on_invalid = "raise"           # or "mask"
+    samples_per_level = 11         # hierarchy with [wear]: times per level window
+    beta_deg = [0.0, 45.0, 90.0]   # default: [sliding].beta_deg
 
 Surface kinds and their keys:
 
@@ -54,6 +80,13 @@ import numpy as np
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.roughness import generators
+from frictionlab.roughness.hierarchy import (
+    MU_PASSED,
+    ON_INVALID,
+    HierarchyLevel,
+    check_nested,
+    self_similar_levels,
+)
 from frictionlab.roughness.lattice import (
     CONTROLS,
     ENGINES,
@@ -63,13 +96,53 @@ from frictionlab.roughness.lattice import (
 )
 from frictionlab.roughness.surface import Surface
 from frictionlab.roughness.topography import DETREND_MODES, PERIODICITY_MODES, read_surface
+from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
 
-__all__ = ["SURFACE_KINDS", "RoughnessScenario", "parse_roughness_scenario"]
+__all__ = [
+    "SURFACE_KINDS",
+    "AdhesionOptions",
+    "HierarchyOptions",
+    "RoughnessScenario",
+    "WearOptions",
+    "parse_roughness_scenario",
+]
 
 SURFACE_KINDS = ("flat", "wedge", "smooth_wedge", "sinusoid", "self_affine", "file")
 MAX_DIRECTIONS = 3601
 
 _SLIDING_FIELDS = {"load", "control", "separation", "phase"}
+
+
+@dataclass(frozen=True)
+class AdhesionOptions:
+    """The ``[adhesion]`` table: loads per spring (N), k_t (N/m; None: k_c / 2), directions."""
+
+    loads: np.ndarray
+    k_t: float | None
+    beta_deg: np.ndarray
+    compare_without_adhesion: bool
+    detachment: float | None = None
+
+
+@dataclass(frozen=True)
+class WearOptions:
+    """The ``[wear]`` table: Archard inputs, number of times, method, directions."""
+
+    settings: WearSettings
+    samples: int
+    method: str
+    beta_deg: np.ndarray
+
+
+@dataclass(frozen=True)
+class HierarchyOptions:
+    """The ``[hierarchy]`` table: levels (innermost first), options, directions."""
+
+    levels: tuple[HierarchyLevel, ...]
+    mu_passed: str
+    on_invalid: str
+    samples_per_level: int
+    beta_deg: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -84,6 +157,9 @@ class RoughnessScenario:
     title: str = ""
     plot_full_circle: bool = True
     plot_step_deg: float = 5.0
+    adhesion: AdhesionOptions | None = None
+    wear: WearOptions | None = None
+    hierarchy: HierarchyOptions | None = None
 
 
 def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessScenario:
@@ -156,6 +232,16 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
             "plot_step_deg", float, 5.0, check=lambda v: 0.0 < v <= 90.0, allowed="0 < step <= 90"
         )
         output.finish()
+    adhesion_table = top.table("adhesion")
+    adhesion = None if adhesion_table is None else _adhesion(adhesion_table, betas, settings)
+    wear_table = top.table("wear")
+    wear = None if wear_table is None else _wear(wear_table, betas)
+    hierarchy_table = top.table("hierarchy")
+    hierarchy = (
+        None
+        if hierarchy_table is None
+        else _hierarchy(hierarchy_table, lower, upper, betas, base_dir)
+    )
     top.finish()
     return RoughnessScenario(
         mu0=mu0,
@@ -166,7 +252,129 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         title=title,
         plot_full_circle=full_circle,
         plot_step_deg=step,
+        adhesion=adhesion,
+        wear=wear,
+        hierarchy=hierarchy,
     )
+
+
+def _own_directions(table: Table, default: np.ndarray) -> np.ndarray:
+    """``beta_deg`` of an optional table (same forms as [sliding]), else the default."""
+    return _directions(table) if "beta_deg" in table else default
+
+
+def _adhesion(table: Table, betas: np.ndarray, settings: LatticeSettings) -> AdhesionOptions:
+    name = f"{table.where}.loads"
+    raw = table.raw("loads")
+    if isinstance(raw, dict):
+        rng = Table(raw, name)
+        start = rng.get("start", float)
+        stop = rng.get("stop", float)
+        count = rng.get("count", int, check=lambda v: v >= 1, allowed="count >= 1 load")
+        rng.finish()
+        if count == 1 and start != stop:
+            raise InputError(f"{name}: count = 1 needs start == stop")
+        loads = np.linspace(start, stop, count)
+    else:
+        loads = np.array(table.get_list("loads", float), dtype=np.float64)
+        if loads.size == 0:
+            raise InputError(
+                f"{name} is empty: allowed a sweep of at least one load (N per spring)"
+            )
+    if loads.size > MAX_DIRECTIONS:
+        raise InputError(f"{name} has {loads.size} loads: allowed at most {MAX_DIRECTIONS}")
+    k_t = None
+    if "k_t" in table:
+        k_t = table.get(
+            "k_t",
+            float,
+            check=lambda v: 0.0 <= v <= settings.k_c,
+            allowed=f"0 <= k_t <= k_c = {settings.k_c:g} N/m",
+        )
+    kt_value = 0.5 * settings.k_c if k_t is None else k_t
+    if kt_value == 0.0 and np.any(loads <= 0.0):
+        raise InputError(f"{name}: loads <= 0 need tensile springs (k_t > 0)")
+    if settings.control != "load":
+        raise InputError(f"{table.where} needs [sliding].control = 'load' (a load sweep)")
+    compare = table.get("compare_without_adhesion", bool, True)
+    detachment = None
+    if "detachment" in table:
+        detachment = table.get(
+            "detachment", float, check=lambda v: v > 0.0, allowed="a cut-off elongation > 0 m"
+        )
+        if kt_value == 0.0:
+            raise InputError(f"{table.where}.detachment needs tensile springs (k_t > 0)")
+    directions = _own_directions(table, betas)
+    table.finish()
+    return AdhesionOptions(loads, k_t, directions, compare, detachment)
+
+
+def _wear(table: Table, betas: np.ndarray) -> WearOptions:
+    values: dict[str, Any] = {}
+    units = {
+        "wear_coefficient": "dimensionless",
+        "hardness": "Pa",
+        "normal_load": "N",
+        "velocity": "m/s",
+        "nominal_area": "m^2",
+    }
+    for key, unit in units.items():
+        values[key] = table.get(
+            key, float, check=lambda v: v > 0.0, allowed=f"a positive number ({unit})"
+        )
+    values["surfaces"] = table.get("surfaces", str, "both", choices=WEAR_SURFACES)
+    samples = table.get("samples", int, 21, check=lambda v: v >= 2, allowed="an integer >= 2")
+    method = table.get("method", str, "auto", choices=WEAR_METHODS)
+    directions = _own_directions(table, betas)
+    table.finish()
+    try:
+        settings = WearSettings(**values)
+    except ParameterError as exc:
+        raise InputError(f"{table.where}.{exc}") from None
+    return WearOptions(settings, samples, method, directions)
+
+
+def _hierarchy(
+    table: Table, lower: Surface, upper: Surface, betas: np.ndarray, base_dir: Path
+) -> HierarchyOptions:
+    has_inner = "inner" in table
+    has_self_similar = "levels" in table or "ratio" in table
+    if has_inner == has_self_similar:
+        raise InputError(
+            f"{table.where} needs either levels and ratio (self-similar, Eq 28) or "
+            "[[hierarchy.inner]] tables, not both"
+        )
+    try:
+        if has_self_similar:
+            n = table.get("levels", int, check=lambda v: v >= 1, allowed="an integer >= 1")
+            ratio = table.get("ratio", float, check=lambda v: v > 1.0, allowed="a scale factor > 1")
+            levels = self_similar_levels(lower, upper, n, ratio)
+        else:
+            raw = table.raw("inner")
+            if not isinstance(raw, list) or not all(isinstance(v, dict) for v in raw):
+                raise InputError(f"{table.where}.inner must be an array of tables")
+            inner = []
+            for i, item in enumerate(raw, 1):
+                level = Table(item, f"{table.where}.inner #{i}")
+                pair = []
+                for side in ("lower", "upper"):
+                    sub = level.table(side, required=True)
+                    assert sub is not None
+                    pair.append(_surface(sub, base_dir))
+                level.finish()
+                inner.append(HierarchyLevel(pair[0], pair[1]))
+            levels = (*inner, HierarchyLevel(lower, upper))
+            check_nested(levels)
+    except ParameterError as exc:
+        raise InputError(f"{table.where}: {exc}") from None
+    mu_passed = table.get("mu_passed", str, "magnitude", choices=MU_PASSED)
+    on_invalid = table.get("on_invalid", str, "raise", choices=ON_INVALID)
+    samples = table.get(
+        "samples_per_level", int, 11, check=lambda v: v >= 2, allowed="an integer >= 2"
+    )
+    directions = _own_directions(table, betas)
+    table.finish()
+    return HierarchyOptions(levels, mu_passed, on_invalid, samples, directions)
 
 
 def _directions(sliding: Table) -> np.ndarray:

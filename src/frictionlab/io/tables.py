@@ -13,8 +13,10 @@ Comment lines start with ``#``; the units line is the last comment line and give
 ``name [unit]`` per column (``1`` for dimensionless and text columns). Floats are written
 in the shortest form that reads back to the same float64 (``repr``), so a round trip is
 exact. Non-finite values are refused: a table never carries NaN or infinity. Booleans are
-written as ``true``/``false``; text cells may not contain commas or line breaks.
-:func:`read_csv` reads such files, and any plain CSV with a header row.
+written as ``true``/``false``; text cells may not contain commas or line breaks. An
+undefined value is given as a masked entry (``numpy.ma``) and written as an empty field.
+:func:`read_csv` reads such files (a numeric column with empty fields comes back as a
+masked array), and any plain CSV with a header row.
 """
 
 from __future__ import annotations
@@ -74,7 +76,10 @@ def format_csv(
     for name in names:
         if not name or any(ch in name for ch in ",[]#\n\r") or name != name.strip():
             raise ParameterError("column name", name, "non-empty, without , [ ] # or line breaks")
-    arrays = [np.asarray(columns[name]) for name in names]
+    arrays = [
+        columns[name] if np.ma.isMaskedArray(columns[name]) else np.asarray(columns[name])
+        for name in names
+    ]
     lengths = {a.shape for a in arrays}
     if any(a.ndim != 1 for a in arrays) or len(lengths) != 1:
         shapes = {name: a.shape for name, a in zip(names, arrays, strict=True)}
@@ -97,6 +102,10 @@ def format_csv(
 
 
 def _format_column(name: str, values: np.ndarray) -> list[str]:
+    if np.ma.isMaskedArray(values):  # undefined entries: empty fields
+        mask = np.ma.getmaskarray(values)
+        texts = iter(_format_column(name, np.asarray(np.ma.getdata(values)[~mask])))
+        return ["" if m else next(texts) for m in mask.tolist()]
     if values.dtype.kind == "b":
         return ["true" if v else "false" for v in values.tolist()]
     if values.dtype.kind in "iu":
@@ -141,9 +150,10 @@ def write_csv_atomic(
 def read_csv(path: str | os.PathLike[str]) -> CsvTable:
     """Read a CSV file with a header row; ``#`` lines are comments (the units line is parsed).
 
-    A column whose every cell is a number becomes a float64 array, any other column an
-    object array of strings. Unreadable, empty or ragged files raise
-    :class:`~frictionlab.errors.InputError` naming the file and the line.
+    A column whose every cell is a number becomes a float64 array (a masked array when some
+    cells are empty: undefined values), any other column an object array of strings.
+    Unreadable, empty or ragged files raise :class:`~frictionlab.errors.InputError` naming
+    the file and the line.
     """
     p = Path(path)
     try:
@@ -180,8 +190,16 @@ def read_csv(path: str | os.PathLike[str]) -> CsvTable:
     columns: dict[str, np.ndarray] = {}
     for k, name in enumerate(names):
         raw = [row[k] for _, row in body[1:]]
+        empty = [v == "" for v in raw]
         try:
-            columns[name] = np.array([float(v) for v in raw], dtype=np.float64)
+            values = np.array([0.0 if e else float(v) for v, e in zip(raw, empty, strict=True)])
         except ValueError:
             columns[name] = np.array(raw, dtype=object)
+            continue
+        if not any(empty):
+            columns[name] = values
+        elif all(empty):  # undefined throughout
+            columns[name] = np.ma.masked_all(len(raw))
+        else:  # empty fields are undefined values: masked
+            columns[name] = np.ma.MaskedArray(values, mask=np.array(empty))
     return CsvTable(columns, units, comments)

@@ -6,6 +6,10 @@ coefficient mu0 on the tangent plane of the surface it touches; forces are time-
 over one relative period. See ``docs/roughness.md`` for the equations, every option with
 its default, and how the specification's uncertainties were resolved.
 
+Extensions (issue 5): :func:`adhesion_sweep` (tensile springs, Eqs 21-22),
+:func:`wear_history` (Archard wear, Eqs 23-28w), :func:`hierarchy_friction` and
+:func:`hierarchy_wear` (hierarchical roughness and its wear, Eqs 28-35).
+
 Pure physics: nothing here reads files (except :func:`read_surface`, the file entry point
 of the SurfaceTopography adapter), prints or plots.
 
@@ -17,12 +21,15 @@ Quick start::
     polar.mu_over_mu0
 """
 
+from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import (
     flat_on_wedge_0deg,
     flat_on_wedge_90deg,
     h_global,
     h_local,
     h_rotated,
+    hierarchy_flat_on_wedge_90deg,
+    hierarchy_wedge_on_wedge_90deg,
     max_mu0,
     normal_force_factor,
     singular_angle_deg,
@@ -40,10 +47,21 @@ from frictionlab.roughness.generators import (
     flat,
     from_array,
     from_function,
+    scaled,
     self_affine,
     sinusoid,
     smooth_wedge,
     wedge,
+)
+from frictionlab.roughness.hierarchy import (
+    HierarchyLevel,
+    HierarchyResult,
+    HierarchyWearHistory,
+    check_nested,
+    hierarchy_friction,
+    hierarchy_wear,
+    self_similar_levels,
+    wedge_hierarchy,
 )
 from frictionlab.roughness.lattice import (
     FrictionPolar,
@@ -63,13 +81,28 @@ from frictionlab.roughness.surface import (
     Surface,
 )
 from frictionlab.roughness.topography import from_topography, read_surface
+from frictionlab.roughness.wear import (
+    WearHistory,
+    WearSettings,
+    archard_volume,
+    reduction_coefficient,
+    roughness_volume,
+    wear_history,
+    wear_time,
+    wedge_tan_phi,
+    wedge_tan_phi_rate,
+)
 
 __all__ = [
+    "AdhesionSweep",
     "FlatProfile",
     "FrictionPolar",
     "FunctionHeightMap",
     "FunctionProfile",
     "HeightMap",
+    "HierarchyLevel",
+    "HierarchyResult",
+    "HierarchyWearHistory",
     "LatticeGeometry",
     "LatticeSettings",
     "ProductSineMap",
@@ -79,7 +112,12 @@ __all__ = [
     "SineProfile",
     "SmoothWedgeProfile",
     "Surface",
+    "WearHistory",
+    "WearSettings",
     "WedgeProfile",
+    "adhesion_sweep",
+    "archard_volume",
+    "check_nested",
     "flat",
     "flat_on_wedge_0deg",
     "flat_on_wedge_90deg",
@@ -90,18 +128,31 @@ __all__ = [
     "h_global",
     "h_local",
     "h_rotated",
+    "hierarchy_flat_on_wedge_90deg",
+    "hierarchy_friction",
+    "hierarchy_wear",
+    "hierarchy_wedge_on_wedge_90deg",
     "lattice_geometry",
     "max_mu0",
     "merge_polars",
     "normal_force_factor",
     "read_surface",
+    "reduction_coefficient",
+    "roughness_volume",
+    "scaled",
     "self_affine",
+    "self_similar_levels",
     "singular_angle_deg",
     "sinusoid",
     "smooth_wedge",
+    "wear_history",
+    "wear_time",
     "wedge",
     "wedge_face_weights",
     "wedge_friction",
+    "wedge_hierarchy",
     "wedge_on_wedge_0deg",
     "wedge_on_wedge_90deg",
+    "wedge_tan_phi",
+    "wedge_tan_phi_rate",
 ]

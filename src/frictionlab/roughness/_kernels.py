@@ -7,6 +7,9 @@ Private module. :mod:`frictionlab.roughness.lattice` calls one time sample at a 
 * :func:`solve_offset_nb` / :func:`solve_offset_np`: the load balance (spec section 4,
   step 2) for the offset ``c = l0 - d``, with compressive stiffness ``k_c`` and tensile
   stiffness ``k_t`` (``k_t = 0``: no adhesion);
+* :func:`solve_offset_detach_nb` / :func:`solve_offset_detach_np`: the load balance when
+  stretched springs detach beyond a cut-off elongation (option, off by default): the
+  largest root of a non-monotone balance;
 * :func:`sample_nb` / :func:`sample_np`: one time sample: spring forces, friction
   forces of both families, validity check, sums (steps 2-5);
 * :func:`interp_periodic_nb`: bilinear periodic interpolation of sampled surfaces.
@@ -212,6 +215,86 @@ def solve_offset_np(gap: np.ndarray, kc: float, kt: float, load: float) -> tuple
     return float(c0 + (load - float(mean_force(np.array([c0]), np.array([k]))[0])) / slope), 1
 
 
+@numba.njit(cache=True)
+def _detach_force(
+    g: np.ndarray, prefix: np.ndarray, c: float, m1: int, m2: int, kc: float, kt: float
+) -> tuple[float, float]:
+    """Mean force at c and its slope, springs [0, m1) compressed and [m1, m2) attached."""
+    n = g.size
+    compressed = kc * (m1 * c - prefix[m1])
+    stretched = kt * ((m2 - m1) * c - (prefix[m2] - prefix[m1]))
+    return (compressed + stretched) / n, (kc * m1 + kt * (m2 - m1)) / n
+
+
+@numba.njit(cache=True)
+def solve_offset_detach_nb(
+    gap: np.ndarray, kc: float, kt: float, load: float, detach: float
+) -> tuple[float, int]:
+    """Load balance with detaching springs: the **largest** c with mean force == load.
+
+    Spring law: ``k_c u`` for u > 0, ``k_t u`` for ``-detach <= u <= 0``, 0 below (a spring
+    stretched beyond ``detach`` has let go). The mean force is piecewise linear and
+    increasing between breakpoints (``c = g`` and ``c = g - detach``) but drops where a
+    spring re-attaches, so it can equal the load several times. The root taken is the
+    largest one, ``sup{c : f(c) <= load}``: the state reached by pulling the surfaces apart
+    from full contact, springs letting go one by one. Gaps sorted once; prefix sums give
+    the force on every interval; the intervals are scanned from the top. Returns
+    ``(c, 1)``, or ``(nan, 1)`` when the load is below the largest adhesive force (the
+    surfaces pull off).
+    """
+    g = np.sort(gap)
+    n = g.size
+    prefix = np.zeros(n + 1)
+    for i in range(n):
+        prefix[i + 1] = prefix[i] + g[i]
+    c_full = prefix[n] / n + load / kc
+    if c_full >= g[n - 1]:
+        return c_full, 0
+    breaks = np.sort(np.concatenate((g, g - detach)))
+    for k in range(breaks.size - 2, -1, -1):
+        lo = breaks[k]
+        hi = breaks[k + 1]
+        if not hi > lo:
+            continue
+        mid = 0.5 * (lo + hi)
+        m1 = np.searchsorted(g, mid)  # g < c: compressed
+        m2 = np.searchsorted(g, mid + detach, side="right")  # g <= c + detach: attached
+        f_lo, slope = _detach_force(g, prefix, lo, m1, m2, kc, kt)
+        if f_lo <= load:
+            if slope > 0.0:
+                return min(lo + (load - f_lo) / slope, hi), 1
+            return hi, 1
+    if load >= 0.0:  # every spring detached carries exactly zero load
+        return breaks[0], 1
+    return math.nan, 1
+
+
+def solve_offset_detach_np(
+    gap: np.ndarray, kc: float, kt: float, load: float, detach: float
+) -> tuple[float, int]:
+    """NumPy twin of :func:`solve_offset_detach_nb` (all intervals evaluated at once)."""
+    g = np.sort(gap)
+    n = g.size
+    prefix = np.concatenate(([0.0], np.cumsum(g)))
+    c_full = g.mean() + load / kc
+    if c_full >= g[-1]:
+        return float(c_full), 0
+    breaks = np.sort(np.concatenate((g, g - detach)))
+    lo, hi = breaks[:-1], breaks[1:]
+    mid = 0.5 * (lo + hi)
+    m1 = np.searchsorted(g, mid)
+    m2 = np.searchsorted(g, mid + detach, side="right")
+    f_lo = (kc * (m1 * lo - prefix[m1]) + kt * ((m2 - m1) * lo - (prefix[m2] - prefix[m1]))) / n
+    slope = (kc * m1 + kt * (m2 - m1)) / n
+    ok = np.flatnonzero((hi > lo) & (f_lo <= load))
+    if ok.size == 0:
+        return (float(breaks[0]), 1) if load >= 0.0 else (math.nan, 1)
+    k = int(ok[-1])
+    if slope[k] > 0.0:
+        return float(min(lo[k] + (load - f_lo[k]) / slope[k], hi[k])), 1
+    return float(hi[k]), 1
+
+
 @numba.njit(cache=True, fastmath=_FAST)
 def _difference(
     gap: np.ndarray, z2: np.ndarray, z1: np.ndarray, p0: int, q0: int, length: int
@@ -237,6 +320,7 @@ def _accumulate_row(
     kc: float,
     kt: float,
     full: bool,
+    detach: float,
 ) -> tuple[float, float, float, float, int, int, int]:
     """Sums over stations p0 .. p0+length-1 reading surface 2 at q0 .. q0+length-1."""
     fsum = 0.0
@@ -255,7 +339,7 @@ def _accumulate_row(
         else:
             u = c - gap[p]
             fc = kc * max(u, 0.0)
-            ft = kt * min(u, 0.0)
+            ft = kt * min(u, 0.0) if u >= -detach else 0.0
         ftot += fc + ft
         fsum += fc
         xsum += fc * (h1x[p] + h2x[q])
@@ -285,6 +369,7 @@ def sample_nb(
     mode: int,
     load: float,
     c_in: float,
+    detach: float = math.inf,
 ) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
     """One time sample (spec section 4, steps 1-5) over all stations; see ``SAMPLE_FIELDS``.
 
@@ -311,7 +396,10 @@ def sample_nb(
     iterations = 0
     c = c_in
     if mode == MODE_LOAD:
-        c, iterations = solve_offset_nb(gap, kc, kt, load, c_in)
+        if detach < math.inf and kt > 0.0:
+            c, iterations = solve_offset_detach_nb(gap, kc, kt, load, detach)
+        else:
+            c, iterations = solve_offset_nb(gap, kc, kt, load, c_in)
     full = mode == MODE_FULL
     fsum = 0.0
     xsum = 0.0
@@ -332,8 +420,9 @@ def sample_nb(
             if length == 0:
                 continue
             part = _accumulate_row(
-                gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc, kt, full
-            )
+                gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc, kt, full,
+                detach,
+            )  # fmt: skip
             fsum += part[0]
             xsum += part[1]
             ysum += part[2]
@@ -381,6 +470,7 @@ def sample_np(
     mode: int,
     load: float,
     c_in: float,
+    detach: float = math.inf,
 ) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
     """NumPy twin of :func:`sample_nb` (load balance by sorting instead of Newton)."""
 
@@ -391,14 +481,17 @@ def sample_np(
     iterations = 0
     c = c_in
     if mode == MODE_LOAD:
-        c, iterations = solve_offset_np(gap, kc, kt, load)
+        if detach < math.inf and kt > 0.0:
+            c, iterations = solve_offset_detach_np(gap, kc, kt, load, detach)
+        else:
+            c, iterations = solve_offset_np(gap, kc, kt, load)
     if mode == MODE_FULL:
         fc = np.ones(gap.size)
         ft = np.zeros(gap.size)
     else:
         u = c - gap
         fc = np.where(u > 0.0, kc * u, 0.0)
-        ft = np.where(u > 0.0, 0.0, kt * u)
+        ft = np.where((u > 0.0) | (u < -detach), 0.0, kt * u)
     comp = fc > 0.0
     bad1 = den1[comp] <= 0.0
     bad = bad1 | (shifted(den2)[comp] <= 0.0)

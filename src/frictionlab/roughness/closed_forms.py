@@ -17,7 +17,9 @@ Contents
 * :func:`wedge_friction`: Eqs 15-16, (mu_x, mu_y) of two wedge profiles at any beta;
 * :func:`flat_on_wedge_0deg`, :func:`flat_on_wedge_90deg`, :func:`wedge_on_wedge_0deg`,
   :func:`wedge_on_wedge_90deg`: Eqs 17-20;
-* :func:`singular_angle_deg`: phi* = arctan(1/mu0), where Eqs 17 and 19 diverge.
+* :func:`singular_angle_deg`: phi* = arctan(1/mu0), where Eqs 17 and 19 diverge;
+* :func:`hierarchy_flat_on_wedge_90deg`, :func:`hierarchy_wedge_on_wedge_90deg`: Eqs 33-34,
+  mu_n of n self-similar levels of symmetric wedges at beta = 90 deg.
 """
 
 from __future__ import annotations
@@ -35,6 +37,8 @@ __all__ = [
     "h_global",
     "h_local",
     "h_rotated",
+    "hierarchy_flat_on_wedge_90deg",
+    "hierarchy_wedge_on_wedge_90deg",
     "max_mu0",
     "normal_force_factor",
     "singular_angle_deg",
@@ -324,3 +328,33 @@ def singular_angle_deg(mu0: float) -> float:
     """phi* = arctan(1/mu0) in degrees: Eqs 17 and 19 diverge there (spec section 7)."""
     m = _check_mu0(mu0)
     return 90.0 if m == 0.0 else math.degrees(math.atan(1.0 / m))
+
+
+def _levels(n: ArrayLike) -> FloatArray:
+    arr = np.asarray(n)
+    if arr.dtype.kind not in "iu" or np.any(arr < 0):
+        raise ParameterError("n", n, "integer numbers of levels >= 0")
+    return np.asarray(arr, dtype=np.float64)
+
+
+def hierarchy_flat_on_wedge_90deg(mu0: float, phi_deg: ArrayLike, n: ArrayLike) -> FloatArray:
+    """Eq 33: ``mu_n = mu0 / 2^n (1/cos(phi) + 1)^n``, n levels of a flat surface on a
+    symmetric wedge (phi1 = phi2 = phi, phi3 = phi4 = 0), beta = 90 deg: Eq 18 iterated.
+
+    ``phi_deg`` in [0, 90); ``n`` integer >= 0 (n = 0 gives mu0). Broadcasts.
+    """
+    m = _check_mu0(mu0)
+    _sin2(phi_deg)
+    levels = _levels(n)
+    c = np.cos(np.radians(np.asarray(phi_deg, dtype=np.float64)))
+    return np.asarray(m * (0.5 * (1.0 / c + 1.0)) ** levels, dtype=np.float64)
+
+
+def hierarchy_wedge_on_wedge_90deg(mu0: float, phi_deg: ArrayLike, n: ArrayLike) -> FloatArray:
+    """Eq 34: ``mu_n = mu0 / cos^n(phi)``, n levels of two identical symmetric wedges,
+    beta = 90 deg: Eq 20 iterated. ``phi_deg`` in [0, 90); ``n`` integer >= 0."""
+    m = _check_mu0(mu0)
+    _sin2(phi_deg)
+    levels = _levels(n)
+    c = np.cos(np.radians(np.asarray(phi_deg, dtype=np.float64)))
+    return np.asarray(m / c**levels, dtype=np.float64)

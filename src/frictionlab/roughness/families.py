@@ -6,7 +6,11 @@
 * :func:`surfaces_2d_vs_beta` (Fig 7): identical 2-D product sinusoids, symmetric and
   asymmetric wavelengths, vs beta;
 * :func:`wavelength_map` (Fig 8, scenario T4): the 25 combinations lambda_x, lambda_y in
-  {1, 1.5, 2, 2.5, 3} pi at beta = 0, 45, 90 degrees.
+  {1, 1.5, 2, 2.5, 3} pi at beta = 0, 45, 90 degrees;
+* :func:`adhesion_cases` (Fig 10, scenario AD), :func:`wear_cases` (Fig 11, T5-T6),
+  :func:`hierarchy_1d_cases` (Fig 12, T7-T8), :func:`hierarchy_2d_cases` (Fig 13, T9-T10),
+  :func:`hierarchy_wear_case` (Fig 14, T11): the adhesion, wear and hierarchy results
+  (their own result objects, with undefined values masked).
 
 Geometry the paper does not give is the specification's choice (spec section 8.5): the
 wedge angles 30/15 and 20/10 degrees, amplitude A = 1 (m) for the 2-D surfaces, and the
@@ -26,19 +30,36 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab.errors import ParameterError
+from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import flat, sinusoid, smooth_wedge, wedge
+from frictionlab.roughness.hierarchy import (
+    HierarchyResult,
+    HierarchyWearHistory,
+    hierarchy_friction,
+    hierarchy_wear,
+    self_similar_levels,
+    wedge_hierarchy,
+)
 from frictionlab.roughness.lattice import LatticeSettings, friction_polar
 from frictionlab.roughness.surface import Profile
+from frictionlab.roughness.wear import WearHistory, WearSettings, wear_history
 
 __all__ = [
+    "AD_LOADS",
+    "FAMILY_WEAR",
     "WEDGE_CASES",
     "FamilyTable",
+    "adhesion_cases",
     "case_angles",
     "generic_cases",
+    "hierarchy_1d_cases",
+    "hierarchy_2d_cases",
+    "hierarchy_wear_case",
     "surfaces_2d_vs_beta",
     "wavelength_map",
     "wavelength_matrix",
+    "wear_cases",
     "wedge_cases",
 ]
 
@@ -325,3 +346,142 @@ def wavelength_matrix(
     iy = np.searchsorted(fy, table["lambda_y_over_pi"][sel])
     matrix[ix, iy] = table[column][sel]
     return fx, fy, matrix
+
+
+# --------------------------------------------------------------------------- Figs 10-14
+
+#: Loads per spring of scenario AD (k_c = 1 N/m, A = 1 m: L in units of k_c A).
+AD_LOADS = (3.0, 2.0, 1.5, 1.0, 0.5, 0.25, 0.1, 0.0, -0.1, -0.25)
+
+
+def adhesion_cases(
+    mu0: float = 0.3,
+    loads: Sequence[float] = AD_LOADS,
+    *,
+    settings: LatticeSettings | None = None,
+) -> dict[str, AdhesionSweep]:
+    """Fig 10 / scenario AD: z = sin x (A = 1 m, lambda = 2 pi m), k_c = 1 N/m, k_t = k_c/2.
+
+    ``"sine/sine"``: identical in-phase surfaces at beta = 0 and 90 deg; ``"flat/sine"``:
+    a flat upper surface at beta = 0. ``settings`` default: 2000 stations, 200 time
+    samples (the spec's AD resolution).
+    """
+    m = _check_mu0(mu0)
+    settings = settings or LatticeSettings(stations=2000, time_samples=200)
+    sine = sinusoid(1.0, 2.0 * math.pi)
+    return {
+        "sine/sine": adhesion_sweep(sine, sine, m, loads, [0.0, 90.0], settings=settings),
+        "flat/sine": adhesion_sweep(flat(), sine, m, loads, [0.0], settings=settings),
+    }
+
+
+#: Archard inputs of the wear families (their values only set the time scale T_w).
+FAMILY_WEAR = WearSettings(
+    wear_coefficient=1e-4, hardness=2e9, normal_load=10.0, velocity=0.1, nominal_area=1e-4
+)
+
+
+def wear_cases(
+    mu0: float = 0.3,
+    samples: int = 21,
+    *,
+    wear: WearSettings = FAMILY_WEAR,
+    settings: LatticeSettings | None = None,
+) -> dict[str, WearHistory]:
+    """Fig 11 / scenarios T5-T6: mu(t) to mu0 at T_w.
+
+    ``"flat/wedge"``, ``"wedge/wedge"``: symmetric 30 deg wedges (lambda = 1 mm), beta = 0,
+    45, 90 deg, Eqs 15-16 at tan(phi) = B tan(30 deg); ``"2d"``: identical sin x sin y
+    surfaces (A = 1 m, lambda = 2 pi m) in full contact, beta = 0, 15, 30, 45 deg, on the
+    lattice (``settings`` default: 64 x 64 stations, 64 time samples).
+    """
+    m = _check_mu0(mu0)
+    settings = settings or LatticeSettings(time_samples=64)
+    w = wedge(30.0, 1e-3)
+    s = sinusoid(1.0, (2.0 * math.pi, 2.0 * math.pi))
+    betas_1d, betas_2d = (0.0, 45.0, 90.0), (0.0, 15.0, 30.0, 45.0)
+    return {
+        "flat/wedge": wear_history(w, flat(), m, betas_1d, wear, samples=samples),
+        "wedge/wedge": wear_history(w, w, m, betas_1d, wear, samples=samples),
+        "2d": wear_history(s, s, m, betas_2d, wear, samples=samples, settings=settings),
+    }
+
+
+def hierarchy_1d_cases(
+    mu0: float = 0.3, levels: int = 5, *, settings: LatticeSettings | None = None
+) -> dict[str, HierarchyResult]:
+    """Fig 12 / scenarios T7-T8: mu_n for n = 0 ... ``levels`` at beta = 0 and 90 deg.
+
+    ``"wedge <phi> flat/rough"`` and ``"wedge <phi> rough/rough"`` for phi = 10, 20, 30 deg
+    (the closed-form recursion of Eqs 15-16; Eqs 33-34 at 90 deg), and ``"sine flat/rough"``,
+    ``"sine rough/rough"``: self-similar sinusoids of slope amplitude 1 (A = 1 m,
+    lambda = 2 pi m per level, ratio 10) on the lattice (``settings`` default: 2000
+    stations, 40 time samples, full contact). Levels beyond the validity domain are masked.
+    """
+    m = _check_mu0(mu0)
+    settings = settings or LatticeSettings(stations=2000, time_samples=40)
+    out: dict[str, HierarchyResult] = {}
+    for phi in (10.0, 20.0, 30.0):
+        for name, angles in (("flat/rough", (phi, phi, 0.0, 0.0)), ("rough/rough", (phi,) * 4)):
+            out[f"wedge {phi:g} {name}"] = wedge_hierarchy(
+                m, angles, [0.0, 90.0], levels, on_invalid="mask"
+            )
+    sine = sinusoid(1.0, 2.0 * math.pi)
+    for name, upper in (("flat/rough", flat()), ("rough/rough", sine)):
+        out[f"sine {name}"] = hierarchy_friction(
+            self_similar_levels(sine, upper, levels, 10.0),
+            m,
+            [0.0, 90.0],
+            on_invalid="mask",
+            settings=settings,
+        )
+    return out
+
+
+def hierarchy_2d_cases(
+    mu0: float = 0.3,
+    levels: int = 4,
+    beta_deg: ArrayLike = (0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0),
+    *,
+    settings: LatticeSettings | None = None,
+) -> dict[str, HierarchyResult]:
+    """Fig 13 / scenarios T9-T10: self-similar identical sin sin levels (A = 1 m per level,
+    ratio 10) with wavelengths (2 pi, 2 pi), (2 pi, 3 pi) and (3 pi, 2 pi) m, vs beta, in
+    full contact (``settings`` default: 32 x 32 stations, 16 time samples)."""
+    m = _check_mu0(mu0)
+    settings = settings or LatticeSettings(stations=32, time_samples=16)
+    out: dict[str, HierarchyResult] = {}
+    for pair in ((2.0, 2.0), (2.0, 3.0), (3.0, 2.0)):
+        s = sinusoid(1.0, (pair[0] * math.pi, pair[1] * math.pi))
+        out[_label((pair[0] * math.pi, pair[1] * math.pi))] = hierarchy_friction(
+            self_similar_levels(s, s, levels, 10.0),
+            m,
+            beta_deg,
+            on_invalid="mask",
+            settings=settings,
+        )
+    return out
+
+
+def hierarchy_wear_case(
+    mu0: float = 0.3,
+    levels: int = 3,
+    samples_per_level: int = 11,
+    *,
+    wear: WearSettings = FAMILY_WEAR,
+    settings: LatticeSettings | None = None,
+) -> HierarchyWearHistory:
+    """Fig 14 / scenario T11: ``levels`` self-similar sin x sin y levels (ratio 10; A = 1 m,
+    lambda = 2 pi m outermost), identical surfaces, beta = 0, worn innermost first
+    (``settings`` default: 32 x 32 stations, 16 time samples, full contact)."""
+    m = _check_mu0(mu0)
+    settings = settings or LatticeSettings(stations=32, time_samples=16)
+    s = sinusoid(1.0, (2.0 * math.pi, 2.0 * math.pi))
+    return hierarchy_wear(
+        self_similar_levels(s, s, levels, 10.0),
+        m,
+        [0.0],
+        wear,
+        samples_per_level=samples_per_level,
+        settings=settings,
+    )

@@ -39,12 +39,15 @@ from frictionlab.roughness.surface import (
 __all__ = [
     "FlatProfile",
     "ProductSineMap",
+    "ScaledHeightMap",
+    "ScaledProfile",
     "SineProfile",
     "SmoothWedgeProfile",
     "WedgeProfile",
     "flat",
     "from_array",
     "from_function",
+    "scaled",
     "self_affine",
     "sinusoid",
     "smooth_wedge",
@@ -469,3 +472,126 @@ def self_affine(
     if dims == 1:
         return SampledProfile(heights, lengths[0], "spectral")
     return SampledHeightMap(heights, (lengths[0], lengths[1]), "spectral")
+
+
+# --------------------------------------------------------------------------- scaling
+
+
+@dataclass(frozen=True, eq=False)
+class ScaledProfile(Profile):
+    """``z(x) = v f(x / h)`` of a base profile f: heights scaled by v, lengths by h.
+
+    The slopes scale by ``v / h``. See :func:`scaled`.
+    """
+
+    kind: ClassVar[str] = "scaled"
+    base: Profile
+    vertical: float
+    horizontal: float
+
+    @property
+    def length(self) -> float | None:
+        return None if self.base.length is None else self.base.length * self.horizontal
+
+    @property
+    def max_slope(self) -> float:
+        return self.base.max_slope * self.vertical / self.horizontal
+
+    def profile(self, x: FloatArray) -> tuple[FloatArray, FloatArray]:
+        z, g = self.base.profile(np.asarray(x, dtype=np.float64) / self.horizontal)
+        return self.vertical * z, (self.vertical / self.horizontal) * g
+
+    def parameters(self) -> dict[str, Any]:
+        return {
+            "base": self.base.describe(),
+            "vertical": self.vertical,
+            "horizontal": self.horizontal,
+        }
+
+
+@dataclass(frozen=True, eq=False)
+class ScaledHeightMap(HeightMap):
+    """``z(x, y) = v f(x / h, y / h)`` of a base height map f. See :func:`scaled`."""
+
+    kind: ClassVar[str] = "scaled"
+    base: HeightMap
+    vertical: float
+    horizontal: float
+
+    @property
+    def physical_sizes(self) -> tuple[float, float]:
+        lx, ly = self.base.physical_sizes
+        return (lx * self.horizontal, ly * self.horizontal)
+
+    @property
+    def max_slope(self) -> float:
+        return self.base.max_slope * self.vertical / self.horizontal
+
+    @property
+    def grid_shape(self) -> tuple[int, ...] | None:
+        return self.base.grid_shape
+
+    def evaluate(self, x: ArrayLike, y: ArrayLike | None = None) -> Evaluation:
+        xa = _as_float_array(x, "x") / self.horizontal
+        ya = _as_float_array(0.0 if y is None else y, "y") / self.horizontal
+        z, gx, gy = self.base.evaluate(xa, ya)
+        slope = self.vertical / self.horizontal
+        return self.vertical * z, slope * gx, slope * gy
+
+    def parameters(self) -> dict[str, Any]:
+        return {
+            "base": self.base.describe(),
+            "vertical": self.vertical,
+            "horizontal": self.horizontal,
+        }
+
+
+def scaled(
+    surface: Profile | HeightMap, vertical: float = 1.0, horizontal: float = 1.0
+) -> Profile | HeightMap:
+    """The surface ``z = v f(x/h, y/h)``: heights scaled by ``vertical``, lengths by ``horizontal``.
+
+    Slopes scale by ``v / h``. Used by wear (heights scaled by the reduction coefficient
+    B, spec section 3.6: ``z(t) = B z0`` above the fixed valley) and by hierarchies
+    (self-similar levels, Eq 28: ``v = h``). ``vertical`` in [0, inf), ``horizontal`` > 0.
+    ``vertical = 0`` gives a flat surface (a :class:`FlatProfile`, or a
+    :class:`ScaledHeightMap` of zero heights keeping the map's periods). Wedges, smooth
+    wedges, sinusoids and sampled surfaces come back as their own kind (a wedge keeps its
+    face shares with angles ``arctan((v/h) tan phi)``); other surfaces are wrapped
+    (:class:`ScaledProfile`, :class:`ScaledHeightMap`).
+    """
+    try:
+        v, h = float(vertical), float(horizontal)
+    except (TypeError, ValueError):
+        raise ParameterError("vertical/horizontal", (vertical, horizontal), "numbers") from None
+    if not (math.isfinite(v) and v >= 0.0):
+        raise ParameterError("vertical", vertical, "a finite factor >= 0")
+    if not (math.isfinite(h) and h > 0.0):
+        raise ParameterError("horizontal", horizontal, "a finite factor > 0")
+    if isinstance(surface, FlatProfile) or (v == 1.0 and h == 1.0):
+        return surface
+    if v == 0.0 and isinstance(surface, Profile):
+        return FlatProfile()
+    if isinstance(surface, WedgeProfile | SmoothWedgeProfile) and v > 0.0:
+        angles = tuple(
+            math.degrees(math.atan(v / h * math.tan(math.radians(a)))) for a in surface.angles_deg
+        )
+        make = wedge if isinstance(surface, WedgeProfile) else smooth_wedge
+        return make(angles, surface.wavelength * h)
+    if isinstance(surface, SineProfile) and v > 0.0:
+        return SineProfile(surface.amplitude * v, surface.wavelength * h)
+    if isinstance(surface, ProductSineMap) and v > 0.0:
+        lx, ly = surface.wavelengths
+        return ProductSineMap(surface.amplitude * v, (lx * h, ly * h))
+    if isinstance(surface, SampledProfile) and v > 0.0:
+        return SampledProfile(surface.heights * v, surface.size * h, surface.gradient)
+    if isinstance(surface, SampledHeightMap) and v > 0.0:
+        lx, ly = surface.sizes
+        return SampledHeightMap(surface.heights * v, (lx * h, ly * h), surface.gradient)
+    if isinstance(surface, ScaledProfile | ScaledHeightMap):
+        return scaled(surface.base, surface.vertical * v, surface.horizontal * h)
+    if isinstance(surface, Profile):
+        return ScaledProfile(surface, v, h)
+    if isinstance(surface, HeightMap):
+        return ScaledHeightMap(surface, v, h)
+    raise ParameterError("surface", type(surface).__name__, "a Profile or HeightMap")

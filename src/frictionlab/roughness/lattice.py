@@ -104,6 +104,12 @@ class LatticeSettings:
     k_c, k_t:
         Compressive and tensile spring stiffness (N/m); ``0 <= k_t <= k_c``. Tensile springs
         carry load but no friction (spec section 3.5).
+    detachment:
+        Cut-off elongation (m) beyond which a stretched spring detaches and carries no
+        force (spec section 8.7: the paper gives no criterion). ``None`` (default): never.
+        Needs ``k_t > 0``. The load balance is then not monotone; the largest offset c
+        that carries the load is taken (the state reached by pulling apart from full
+        contact), and a load below the pull-off force is an error.
     stations:
         Stations per common period cell: an int (1-D; in 2-D the same count on both axes)
         or (nx, ny). ``None``: 2000 per shortest period (1-D), 64 per shortest period and
@@ -140,6 +146,7 @@ class LatticeSettings:
     separation: float | None = None
     k_c: float = 1.0
     k_t: float = 0.0
+    detachment: float | None = None
     stations: int | tuple[int, int] | None = None
     time_samples: int = 400
     travel: str | float = "auto"
@@ -158,6 +165,14 @@ class LatticeSettings:
             raise ParameterError("k_t", self.k_t, f"0 <= k_t <= k_c = {self.k_c}")
         object.__setattr__(self, "k_c", float(self.k_c))
         object.__setattr__(self, "k_t", float(self.k_t))
+        if self.detachment is not None:
+            if not (_finite(self.detachment) and self.detachment > 0.0):
+                raise ParameterError(
+                    "detachment", self.detachment, "None or a cut-off elongation > 0 m"
+                )
+            if self.k_t == 0.0:
+                raise ParameterError("detachment", self.detachment, "None unless k_t > 0")
+            object.__setattr__(self, "detachment", float(self.detachment))
         if self.control == "load":
             if self.separation is not None:
                 raise ParameterError("separation", self.separation, "None with control='load'")
@@ -168,8 +183,6 @@ class LatticeSettings:
                 raise ParameterError("load", self.load, "'full' or a finite force per spring in N")
             elif self.k_t == 0.0 and self.load <= 0.0:
                 raise ParameterError("load", self.load, "> 0 N per spring (k_t = 0: no adhesion)")
-            elif self.load == 0.0:
-                raise ParameterError("load", self.load, "non-zero (Eq 22 is singular at L = 0)")
             else:
                 object.__setattr__(self, "load", float(self.load))
         else:
@@ -319,9 +332,22 @@ class FrictionPolar:
 
     Arrays are indexed like ``beta_deg``. ``mu`` follows ``settings.mu_definition``;
     ``mu_magnitude`` and ``mu_projection`` are both always given. ``mu_apparent`` is Eq 22
-    (resultant friction over the applied load, tensile springs included); it equals
-    ``mu_magnitude`` without tensile springs. ``contact_fraction_*`` are the fractions of
-    compressed springs over the time samples (1 in full contact).
+    (resultant friction of the compressed springs over the applied load, tensile springs
+    included in the load); it equals ``mu_magnitude`` without tensile springs. It is
+    ``None`` when the applied load is zero (Eq 22 is singular there; the tangential force
+    is still in ``force_x``, ``force_y``). ``contact_fraction_*`` and
+    ``tensile_fraction_*`` are the fractions of compressed and of stretched springs over
+    the time samples (``*_min``/``*_max``: extreme sample; ``*_mean``: average over the
+    period); contact is 1 in full contact.
+
+    Forces are time averages per spring (N; both families, ``2 N_stations`` springs):
+    ``force_x``, ``force_y`` are the resisting force R^(c) of the compressed springs
+    (Eqs 6-9), ``compressed_force`` their mean compressive force (so ``mu_x = force_x /
+    compressed_force``). In the full-contact limit (``load="full"``) forces are per unit
+    spring force (``compressed_force = 1``). ``in_contact`` is False where no spring was
+    ever compressed (possible only with tensile springs at a load <= 0): there R^(c) = 0
+    and ``mu_x``, ``mu_y``, ``mu*`` are NaN (undefined; use :meth:`columns` or
+    :mod:`frictionlab.roughness.adhesion` for masked values).
     """
 
     beta_deg: FloatArray
@@ -330,11 +356,16 @@ class FrictionPolar:
     mu: FloatArray
     mu_magnitude: FloatArray
     mu_projection: FloatArray
-    mu_apparent: FloatArray
+    mu_apparent: FloatArray | None
     valid: NDArray[np.bool_]
     contact_fraction_min: FloatArray
     contact_fraction_mean: FloatArray
     tensile_fraction_max: FloatArray
+    tensile_fraction_mean: FloatArray
+    force_x: FloatArray
+    force_y: FloatArray
+    compressed_force: FloatArray
+    in_contact: NDArray[np.bool_]
     time_samples: NDArray[np.int64]
     solver_iterations_max: NDArray[np.int64]
     travel_mode: tuple[str, ...]
@@ -354,8 +385,19 @@ class FrictionPolar:
             raise ParameterError("mu0", self.mu0, "> 0 to normalise by it")
         return self.mu / self.mu0
 
+    @property
+    def tangential_force(self) -> FloatArray:
+        """|R_xy^(c)|: magnitude of the resisting force of the compressed springs (N/spring)."""
+        return np.asarray(np.hypot(self.force_x, self.force_y), dtype=np.float64)
+
     def columns(self) -> dict[str, np.ndarray]:
-        """The per-direction arrays as named columns (for tables)."""
+        """The per-direction arrays as named columns (for tables).
+
+        Undefined values (NaN coefficients of directions without contact or violating
+        Eq 1 under ``on_invalid="mask"``; ``mu_apparent`` at zero load) are masked
+        (``numpy.ma``), written as empty CSV fields by :mod:`frictionlab.io.tables`.
+        Forces are included for a numeric load (N per spring).
+        """
         out: dict[str, np.ndarray] = {
             "beta_deg": self.beta_deg,
             "mu_x": self.mu_x,
@@ -364,15 +406,28 @@ class FrictionPolar:
         }
         if self.mu0 > 0.0:
             out["mu_over_mu0"] = self.mu_over_mu0
+        apparent = (
+            np.ma.masked_all(self.beta_deg.shape) if self.mu_apparent is None else self.mu_apparent
+        )
         out.update(
             mu_magnitude=self.mu_magnitude,
             mu_projection=self.mu_projection,
-            mu_apparent=self.mu_apparent,
+            mu_apparent=apparent,
             contact_fraction_min=self.contact_fraction_min,
             contact_fraction_mean=self.contact_fraction_mean,
             time_samples=self.time_samples,
         )
-        return out
+        if not isinstance(self.settings.load, str):
+            out.update(
+                tangential_force=self.tangential_force,
+                compressed_force=self.compressed_force,
+                tensile_fraction_mean=self.tensile_fraction_mean,
+                tensile_fraction_max=self.tensile_fraction_max,
+            )
+        return {
+            k: np.ma.masked_invalid(v) if v.dtype.kind == "f" and not np.all(np.isfinite(v)) else v
+            for k, v in out.items()
+        }
 
 
 def merge_polars(first: FrictionPolar, *others: FrictionPolar) -> FrictionPolar:
@@ -574,11 +629,18 @@ def friction_polar(
         mu=_ro(mu_mag if settings.mu_definition == "magnitude" else mu_proj),
         mu_magnitude=_ro(mu_mag),
         mu_projection=_ro(mu_proj),
-        mu_apparent=_ro(np.array([r.mu_apparent for r in results])),
+        mu_apparent=None
+        if settings.load == 0.0
+        else _ro(np.array([r.mu_apparent for r in results])),
         valid=_ro(np.array([r.invalid is None for r in results])),
         contact_fraction_min=_ro(np.array([r.contact_min for r in results])),
         contact_fraction_mean=_ro(np.array([r.contact_mean for r in results])),
         tensile_fraction_max=_ro(np.array([r.tensile_max for r in results])),
+        tensile_fraction_mean=_ro(np.array([r.tensile_mean for r in results])),
+        force_x=_ro(np.array([r.force_x for r in results])),
+        force_y=_ro(np.array([r.force_y for r in results])),
+        compressed_force=_ro(np.array([r.compressed_force for r in results])),
+        in_contact=_ro(np.array([r.in_contact for r in results])),
         time_samples=_ro(np.array([r.samples for r in results], dtype=np.int64)),
         solver_iterations_max=_ro(np.array([r.iterations for r in results], dtype=np.int64)),
         travel_mode=tuple(r.travel_mode for r in results),
@@ -621,6 +683,11 @@ class _Direction:
     contact_min: float
     contact_mean: float
     tensile_max: float
+    tensile_mean: float
+    force_x: float
+    force_y: float
+    compressed_force: float
+    in_contact: bool
     samples: int
     iterations: int
     travel_mode: str
@@ -687,9 +754,11 @@ def _direction(
     f_sum = x_sum = y_sum = f_tot = 0.0
     fractions = np.empty(path.shifts.shape[0])
     t_max = 0.0
+    t_sum = 0.0
     iterations = 0
     first_invalid: tuple[int, int, int] | None = None
     full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
+    detach = math.inf if settings.detachment is None else settings.detachment
     for j, (sx, sy) in enumerate(path.shifts):
         whole = _whole_stations(sx - px, sy - py, lat.spacing, lat.geometry.dimension)
         if whole is not None and full_whole is not None:
@@ -708,11 +777,18 @@ def _direction(
                 kx = ky = 0
             res = sample(
                 lat.z1, h1x, h1y, den1, z2, h2x, h2y, den2, lat.nx, lat.ny, kx, ky,
-                settings.k_c, settings.k_t, lat.mode, lat.load, c,
+                settings.k_c, settings.k_t, lat.mode, lat.load, c, detach,
             )  # fmt: skip
             if lat.mode == _kernels.MODE_FULL and whole is not None:
                 full_whole = res
         c_new, iters, fs, xs_, ys_, ft, n_comp, n_tens, n_inv, first, family = res
+        if lat.mode == _kernels.MODE_LOAD and math.isnan(c_new):
+            raise ParameterError(
+                "load",
+                settings.load,
+                f"above the pull-off load: with detachment = {settings.detachment} m the "
+                f"stretched springs cannot carry it (beta = {beta:g} deg)",
+            )
         if lat.mode == _kernels.MODE_LOAD:
             c = c_new  # warm start of the next load balance
         iterations = max(iterations, iters)
@@ -722,8 +798,11 @@ def _direction(
         f_tot += ft
         fractions[j] = n_comp / n_st
         t_max = max(t_max, n_tens / n_st)
+        t_sum += n_tens / n_st
         if n_inv and first_invalid is None:
             first_invalid = (j, first, family)
+    n_samples = int(path.shifts.shape[0])
+    per_spring = 1.0 / (2.0 * n_st * n_samples)  # time average over both families
     outcome = _Direction(
         mu_x=math.nan,
         mu_y=math.nan,
@@ -731,7 +810,12 @@ def _direction(
         contact_min=float(fractions.min()),
         contact_mean=float(fractions.mean()),
         tensile_max=t_max,
-        samples=int(path.shifts.shape[0]),
+        tensile_mean=t_sum / n_samples,
+        force_x=x_sum * per_spring,
+        force_y=y_sum * per_spring,
+        compressed_force=2.0 * f_sum * per_spring,
+        in_contact=f_sum > 0.0,
+        samples=n_samples,
         iterations=iterations,
         travel_mode=path.mode,
         travel=path.travel,
@@ -744,6 +828,15 @@ def _direction(
         if settings.on_invalid == "raise":
             raise ValidityError(message)
         return replace(outcome, invalid=message)
+    load = settings.load if isinstance(settings.load, float) else math.nan
+    adhesive = lat.mode == _kernels.MODE_LOAD and settings.k_t > 0.0 and math.isfinite(load)
+    if adhesive and load <= 0.0 and f_sum <= 0.0:
+        # Zero or tensile load carried by stretched springs alone: no friction (Eq 21),
+        # R^(c) = 0; mu of the compressed springs undefined; Eq 22 gives 0 for L < 0.
+        return replace(outcome, mu_apparent=0.0 if load < 0.0 else math.nan)
+    if adhesive and load == 0.0 and f_sum > 0.0:
+        # L = 0: Eq 22 is singular (mu_apparent undefined), R^(c) and mu_c are defined.
+        return replace(outcome, mu_x=x_sum / (2.0 * f_sum), mu_y=y_sum / (2.0 * f_sum))
     if f_sum <= 0.0 or f_tot == 0.0:  # no compressed spring, or zero load: undefined
         name, value = (
             ("separation", settings.separation)
@@ -760,7 +853,9 @@ def _direction(
         outcome,
         mu_x=x_sum / (2.0 * f_sum),  # Eqs 5-9: both families, R_z = 2 sum F
         mu_y=y_sum / (2.0 * f_sum),
-        mu_apparent=math.hypot(x_sum, y_sum) / (2.0 * f_tot),  # Eq 22
+        # Eq 22 with the applied load (exact in load control; f_tot is its sum).
+        mu_apparent=math.hypot(x_sum, y_sum)
+        / (2.0 * (load * n_st * n_samples if adhesive else f_tot)),
     )
 
 

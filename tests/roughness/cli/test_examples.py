@@ -47,3 +47,29 @@ def test_roughness_figures_example(tmp_path) -> None:
     for (lx, ly), v in at[0.0].items():
         assert abs(at[90.0][(ly, lx)] - v) <= 1e-12 * v  # beta = 90 is the transpose
     assert "A:" in done.stdout
+
+
+def test_roughness_life_example(tmp_path) -> None:
+    done = subprocess.run(
+        [sys.executable, str(ROOT / "examples" / "roughness_life.py"), str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    out = tmp_path / "roughness_life"
+    for name in ("fig10_adhesion", "fig11_wear", "fig12_hierarchy_1d", "fig13_hierarchy_2d",
+                 "fig14_hierarchy_wear"):  # fmt: skip
+        assert (out / f"{name}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    ad = read_csv(out / "fig10_adhesion_sine_sine.csv")
+    zero = ad["load_per_spring"] == 0.0
+    assert np.all(np.ma.getmaskarray(ad["mu_apparent"]) == zero)  # undefined only at L = 0
+    assert np.all(ad["tangential_force"][zero & (ad["beta_deg"] == 0.0)] > 0.0)
+    wear = read_csv(out / "fig11_wear_wedge_wedge.csv")
+    end = wear["t_over_Tw"] == 1.0
+    np.testing.assert_allclose(wear["mu"][end], 0.3, rtol=1e-14)
+    life = read_csv(out / "fig14_hierarchy_wear.csv")
+    assert life.units["time_s"] == "s"
+    np.testing.assert_allclose(life["mu_3"][-1], 0.3, rtol=1e-14)
+    assert "drop out" in done.stdout

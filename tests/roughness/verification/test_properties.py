@@ -239,7 +239,14 @@ class TestValidityAndOptions:
         sticky = friction_polar(s, s, 0.3, [0.0], load=0.5, k_t=0.5, **kw)
         assert sticky.tensile_fraction_max[0] > 0.0
         assert float(sticky.mu_apparent[0]) > float(sticky.mu_magnitude[0]) * 1.01
-        with pytest.raises(ParameterError, match="load"):  # every spring tensile
-            friction_polar(s, s, 0.3, [90.0], load=-0.1, k_t=0.5, **kw)
-        with pytest.raises(ParameterError, match="Eq 22"):
-            friction_polar(s, s, 0.3, [0.0], load=0.0, k_t=0.5, **kw)
+        # Identical in-phase surfaces at 90 deg: constant gap, every spring stretched at
+        # L < 0: no friction (R = 0), mu of the compressed springs undefined, Eq 22 gives 0.
+        pulled = friction_polar(s, s, 0.3, [90.0], load=-0.1, k_t=0.5, **kw)
+        assert not pulled.in_contact[0] and pulled.tensile_fraction_mean[0] == 1.0
+        assert pulled.tangential_force[0] == 0.0 and math.isnan(float(pulled.mu[0]))
+        assert pulled.mu_apparent is not None and float(pulled.mu_apparent[0]) == 0.0
+        # L = 0: Eq 22 is singular, mu_apparent is None; the tangential force is defined.
+        zero = friction_polar(s, s, 0.3, [0.0], load=0.0, k_t=0.5, **kw)
+        assert zero.mu_apparent is None and zero.tangential_force[0] > 0.0
+        with pytest.raises(ParameterError, match="load"):  # no tension without k_t
+            friction_polar(s, s, 0.3, [0.0], load=0.0, **kw)

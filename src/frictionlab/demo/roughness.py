@@ -1,0 +1,27 @@
+"""The demo's roughness sections: the lattice-spring model's figure families (Figs 6-14).
+
+Thin builders around :mod:`frictionlab.io.roughness_report` (which computes the
+families, saves the figures under ``OUT/roughness/`` and writes the captions).
+"""
+
+from __future__ import annotations
+
+from frictionlab.demo import DemoContext
+from frictionlab.io.report import Section
+from frictionlab.io.roughness_report import life_section, single_level_section
+
+__all__ = ["ROUGHNESS_SECTIONS", "roughness_life_section", "roughness_single_level_section"]
+
+
+def roughness_single_level_section(ctx: DemoContext) -> Section:
+    """Roughness: case studies, 2-D surfaces and wavelengths (Figs 6-8)"""
+    return single_level_section(ctx.out_dir, ctx.progress)
+
+
+def roughness_life_section(ctx: DemoContext) -> Section:
+    """Roughness: adhesion, wear, hierarchy and hierarchy with wear (Figs 10-14)"""
+    return life_section(ctx.out_dir, ctx.progress)
+
+
+#: The roughness model's demo sections, in report order.
+ROUGHNESS_SECTIONS = (roughness_single_level_section, roughness_life_section)
