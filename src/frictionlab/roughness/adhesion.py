@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import readonly as _ro
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.lattice import LatticeSettings, friction_polar
 from frictionlab.roughness.surface import Surface
@@ -47,12 +48,6 @@ FloatArray = NDArray[np.float64]
 
 #: k_t / k_c by default (spec section 3.5: k_t = k_c / 2).
 DEFAULT_TENSILE_RATIO = 0.5
-
-
-def _ro(values: ArrayLike) -> Any:
-    arr = np.array(values, dtype=np.float64, copy=True)
-    arr.setflags(write=False)
-    return arr
 
 
 def _masked(values: FloatArray, undefined: NDArray[np.bool_]) -> np.ma.MaskedArray:

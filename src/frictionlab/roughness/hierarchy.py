@@ -44,10 +44,11 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import readonly as _ro
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import scaled
-from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+from frictionlab.roughness.lattice import LatticeSettings, check_betas, friction_polar
 from frictionlab.roughness.surface import Surface
 from frictionlab.roughness.wear import WearSettings, pair_volume, wear_time, worn_pair
 
@@ -158,12 +159,6 @@ def _masked(values: FloatArray, undefined: NDArray[np.bool_]) -> np.ma.MaskedArr
     return out
 
 
-def _ro(values: ArrayLike, dtype: Any = np.float64) -> Any:
-    arr = np.array(values, dtype=dtype, copy=True)
-    arr.setflags(write=False)
-    return arr
-
-
 @dataclass(frozen=True)
 class HierarchyResult:
     """mu_i of every level (rows i = 0 ... n; row 0 is the local mu0) per direction.
@@ -217,16 +212,6 @@ def _cos_sin(beta_deg: float) -> tuple[float, float]:
     if b in exact:
         return exact[b]
     return math.cos(math.radians(b)), math.sin(math.radians(b))
-
-
-def _betas(beta_deg: ArrayLike) -> FloatArray:
-    try:
-        betas = np.array(beta_deg, dtype=np.float64, ndmin=1)
-    except (TypeError, ValueError):
-        raise ParameterError("beta_deg", beta_deg, "sliding directions in degrees") from None
-    if betas.ndim != 1 or betas.size == 0 or not np.all(np.isfinite(betas)):
-        raise ParameterError("beta_deg", beta_deg, "a non-empty 1-D array of finite degrees")
-    return betas
 
 
 def _check_options(mu0: float, mu_passed: str, on_invalid: str) -> float:
@@ -341,7 +326,7 @@ def hierarchy_friction(
         check_nested(seq)
     lattice = settings or LatticeSettings()
     maps = [_lattice_map(level, lattice) for level in seq]
-    return _recursion(maps, m0, _betas(beta_deg), mu_passed, on_invalid)
+    return _recursion(maps, m0, check_betas(beta_deg), mu_passed, on_invalid)
 
 
 def wedge_hierarchy(
@@ -374,7 +359,7 @@ def wedge_hierarchy(
             return math.nan, math.nan, str(exc)
         return float(mx), float(my), None
 
-    return _recursion([level_map] * int(n), m0, _betas(beta_deg), mu_passed, on_invalid)
+    return _recursion([level_map] * int(n), m0, check_betas(beta_deg), mu_passed, on_invalid)
 
 
 @dataclass(frozen=True)
@@ -466,7 +451,7 @@ def hierarchy_wear(
     m0 = _check_options(mu0, mu_passed, "raise")
     seq = _as_levels(levels)
     check_nested(seq)
-    betas = _betas(beta_deg)
+    betas = check_betas(beta_deg)
     volumes = np.array([pair_volume(level.lower, level.upper, wear) for level in seq])
     tw = np.array([wear_time(float(v), wear.volume_rate) for v in volumes])
     start = np.concatenate(([0.0], np.cumsum(tw)[:-1]))

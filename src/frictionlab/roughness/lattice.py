@@ -39,6 +39,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import readonly
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness import _kernels
 from frictionlab.roughness.closed_forms import max_mu0
@@ -446,7 +447,9 @@ def merge_polars(first: FrictionPolar, *others: FrictionPolar) -> FrictionPolar:
     for f in fields(FrictionPolar):
         value = getattr(first, f.name)
         if isinstance(value, np.ndarray) and value.shape == (n,):
-            merged[f.name] = _ro(np.concatenate([getattr(p, f.name) for p in polars])[order])
+            merged[f.name] = readonly(
+                np.concatenate([getattr(p, f.name) for p in polars])[order], None
+            )
         elif isinstance(value, tuple) and len(value) == n and f.name != "invalid_messages":
             values = [v for p in polars for v in getattr(p, f.name)]
             merged[f.name] = tuple(values[i] for i in order)
@@ -560,7 +563,8 @@ def _check_mu0(mu0: Any) -> float:
     return float(mu0)
 
 
-def _check_betas(beta_deg: ArrayLike) -> FloatArray:
+def check_betas(beta_deg: ArrayLike) -> FloatArray:
+    """Sliding directions [deg] as a non-empty 1-D float64 array (ParameterError otherwise)."""
     try:
         betas = np.array(beta_deg, dtype=np.float64, ndmin=1)
     except (TypeError, ValueError):
@@ -611,7 +615,7 @@ def friction_polar(
     elif options:
         raise ParameterError("options", sorted(options), "either settings= or keyword options")
     m0 = _check_mu0(mu0)
-    betas = _check_betas(beta_deg)
+    betas = check_betas(beta_deg)
     lattice = _prepare(lower, upper, settings)
     results = [_direction(lattice, lower, upper, m0, float(b), settings) for b in betas]
     mu_x = np.array([r.mu_x for r in results])
@@ -623,26 +627,28 @@ def friction_polar(
     messages = tuple(r.invalid for r in results if r.invalid is not None)
     n_bad = len(messages)
     return FrictionPolar(
-        beta_deg=_ro(betas),
-        mu_x=_ro(mu_x),
-        mu_y=_ro(mu_y),
-        mu=_ro(mu_mag if settings.mu_definition == "magnitude" else mu_proj),
-        mu_magnitude=_ro(mu_mag),
-        mu_projection=_ro(mu_proj),
+        beta_deg=readonly(betas, None),
+        mu_x=readonly(mu_x, None),
+        mu_y=readonly(mu_y, None),
+        mu=readonly(mu_mag if settings.mu_definition == "magnitude" else mu_proj, None),
+        mu_magnitude=readonly(mu_mag, None),
+        mu_projection=readonly(mu_proj, None),
         mu_apparent=None
         if settings.load == 0.0
-        else _ro(np.array([r.mu_apparent for r in results])),
-        valid=_ro(np.array([r.invalid is None for r in results])),
-        contact_fraction_min=_ro(np.array([r.contact_min for r in results])),
-        contact_fraction_mean=_ro(np.array([r.contact_mean for r in results])),
-        tensile_fraction_max=_ro(np.array([r.tensile_max for r in results])),
-        tensile_fraction_mean=_ro(np.array([r.tensile_mean for r in results])),
-        force_x=_ro(np.array([r.force_x for r in results])),
-        force_y=_ro(np.array([r.force_y for r in results])),
-        compressed_force=_ro(np.array([r.compressed_force for r in results])),
-        in_contact=_ro(np.array([r.in_contact for r in results])),
-        time_samples=_ro(np.array([r.samples for r in results], dtype=np.int64)),
-        solver_iterations_max=_ro(np.array([r.iterations for r in results], dtype=np.int64)),
+        else readonly(np.array([r.mu_apparent for r in results]), None),
+        valid=readonly(np.array([r.invalid is None for r in results]), None),
+        contact_fraction_min=readonly(np.array([r.contact_min for r in results]), None),
+        contact_fraction_mean=readonly(np.array([r.contact_mean for r in results]), None),
+        tensile_fraction_max=readonly(np.array([r.tensile_max for r in results]), None),
+        tensile_fraction_mean=readonly(np.array([r.tensile_mean for r in results]), None),
+        force_x=readonly(np.array([r.force_x for r in results]), None),
+        force_y=readonly(np.array([r.force_y for r in results]), None),
+        compressed_force=readonly(np.array([r.compressed_force for r in results]), None),
+        in_contact=readonly(np.array([r.in_contact for r in results]), None),
+        time_samples=readonly(np.array([r.samples for r in results], dtype=np.int64), None),
+        solver_iterations_max=readonly(
+            np.array([r.iterations for r in results], dtype=np.int64), None
+        ),
         travel_mode=tuple(r.travel_mode for r in results),
         travel_m=tuple(r.travel for r in results),
         mu0=m0,
@@ -874,12 +880,6 @@ def _whole_stations(
     if abs(fy - ky) > 1e-9 * max(1.0, abs(fy)):
         return None
     return int(kx), int(ky)
-
-
-def _ro(arr: np.ndarray) -> Any:
-    arr = np.array(arr, copy=True)
-    arr.setflags(write=False)
-    return arr
 
 
 def _invalid_message(

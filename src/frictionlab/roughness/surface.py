@@ -30,6 +30,7 @@ from typing import Any, ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import readonly as _readonly
 from frictionlab.errors import ParameterError
 from frictionlab.roughness import _kernels
 
@@ -154,12 +155,6 @@ def _as_float_array(value: ArrayLike, name: str) -> FloatArray:
     return arr
 
 
-def _readonly(arr: FloatArray) -> FloatArray:
-    out = np.array(arr, dtype=np.float64, copy=True)
-    out.setflags(write=False)
-    return out
-
-
 def _check_positive(name: str, value: Any) -> float:
     try:
         v = float(value)
@@ -168,6 +163,15 @@ def _check_positive(name: str, value: Any) -> float:
     if not (math.isfinite(v) and v > 0.0):
         raise ParameterError(name, value, "a positive finite length in m")
     return v
+
+
+def _check_sizes(value: Any) -> tuple[float, float]:
+    """Two positive lengths (Lx, Ly) in m."""
+    try:
+        lx, ly = value
+    except (TypeError, ValueError):
+        raise ParameterError("physical_sizes", value, "two lengths (Lx, Ly) in m") from None
+    return (_check_positive("physical_sizes[0]", lx), _check_positive("physical_sizes[1]", ly))
 
 
 def _check_heights(heights: ArrayLike, ndim: int, name: str = "heights") -> FloatArray:
@@ -298,13 +302,7 @@ class SampledHeightMap(HeightMap):
 
     def __post_init__(self) -> None:
         h = _check_heights(self.heights, 2)
-        try:
-            lx, ly = self.sizes
-        except (TypeError, ValueError):
-            raise ParameterError(
-                "physical_sizes", self.sizes, "two lengths (Lx, Ly) in m"
-            ) from None
-        sizes = (_check_positive("physical_sizes[0]", lx), _check_positive("physical_sizes[1]", ly))
+        sizes = _check_sizes(self.sizes)
         gx, gy = _grid_gradient(h, (sizes[0] / h.shape[0], sizes[1] / h.shape[1]), self.gradient)
         object.__setattr__(self, "heights", _readonly(h))
         object.__setattr__(self, "sizes", sizes)
@@ -449,13 +447,7 @@ class FunctionHeightMap(HeightMap):
     _max_slope: float = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        try:
-            lx, ly = self.sizes
-        except (TypeError, ValueError):
-            raise ParameterError(
-                "physical_sizes", self.sizes, "two lengths (Lx, Ly) in m"
-            ) from None
-        sizes = (_check_positive("physical_sizes[0]", lx), _check_positive("physical_sizes[1]", ly))
+        sizes = _check_sizes(self.sizes)
         object.__setattr__(self, "sizes", sizes)
         n = 64
         x = ((np.arange(n) + 0.5) * sizes[0] / n)[:, None]

@@ -36,6 +36,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import readonly as _ro
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import (
@@ -367,12 +368,6 @@ class WearHistory:
     @staticmethod
     def units() -> dict[str, str]:
         return {"time_s": "s", "beta_deg": "deg"}
-
-
-def _ro(values: ArrayLike) -> Any:
-    arr = np.array(values, dtype=np.float64, copy=True)
-    arr.setflags(write=False)
-    return arr
 
 
 def wear_history(

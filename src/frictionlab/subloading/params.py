@@ -19,6 +19,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from frictionlab._arrays import readonly as _readonly
 from frictionlab.errors import ParameterError
 
 __all__ = [
@@ -306,12 +307,6 @@ class SubloadingParams:
                 value = value.tolist()
             out[f.name] = value
         return out
-
-
-def _readonly(arr: np.ndarray) -> np.ndarray:
-    arr = np.array(arr, dtype=np.float64, copy=True)
-    arr.setflags(write=False)
-    return arr
 
 
 def _as_float_array(name: str, value: Any, ndim_max: int) -> np.ndarray:

@@ -1,0 +1,21 @@
+"""Small array helpers shared by the physics packages."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, DTypeLike
+
+__all__ = ["readonly"]
+
+
+def readonly(values: ArrayLike, dtype: DTypeLike | None = np.float64) -> Any:
+    """A read-only copy of ``values`` (as ``dtype``; ``dtype=None`` keeps the input's dtype).
+
+    Results and parameters hand out such copies, so that neither the caller's arrays nor
+    the object's own can be changed afterwards.
+    """
+    arr = np.array(values, dtype=dtype, copy=True)
+    arr.setflags(write=False)
+    return arr
