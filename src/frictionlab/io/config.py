@@ -15,9 +15,11 @@ from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
+import tomli_w
+
 from frictionlab.errors import InputError
 
-__all__ = ["REQUIRED", "Table", "apply_overrides", "load_toml"]
+__all__ = ["REQUIRED", "Table", "apply_overrides", "format_toml", "load_toml"]
 
 
 class _Required:
@@ -44,6 +46,23 @@ def load_toml(path: str | os.PathLike[str]) -> dict[str, Any]:
         raise InputError(f"file '{p}' is not UTF-8 text") from None
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"file '{p}' is not valid TOML: {exc}") from None
+
+
+def format_toml(data: dict[str, Any]) -> str:
+    """TOML text of ``data`` (nested mappings, lists, numbers, strings, booleans).
+
+    ``None`` values are left out (TOML has no null). Floats keep their exact repr, so a
+    file written here and read back with :func:`load_toml` gives the same numbers.
+    """
+    return tomli_w.dumps(_drop_none(data))
+
+
+def _drop_none(obj: Any) -> Any:
+    if isinstance(obj, dict):
+        return {k: _drop_none(v) for k, v in obj.items() if v is not None}
+    if isinstance(obj, list | tuple):
+        return [_drop_none(v) for v in obj]
+    return obj
 
 
 def apply_overrides(data: dict[str, Any], overrides: Iterable[str]) -> dict[str, Any]:

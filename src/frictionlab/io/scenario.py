@@ -56,7 +56,15 @@ from frictionlab.subloading.params import (
     U_LAWS,
 )
 
-__all__ = ["LAW_KEYS", "MachineRun", "RunOptions", "Scenario", "load_scenario", "parse_scenario"]
+__all__ = [
+    "LAW_KEYS",
+    "MachineRun",
+    "RunOptions",
+    "Scenario",
+    "law_table",
+    "load_scenario",
+    "parse_scenario",
+]
 
 _PARAM_DEFAULTS = {f.name: f.default for f in fields(SubloadingParams) if f.init}
 
@@ -194,6 +202,29 @@ def _parse_law(t: TomlTable) -> tuple[SubloadingParams, dict[str, Any]]:
         values["orthotropy_angle"] = np.radians(deg).tolist()
     params = _reraise(t.where, lambda: SubloadingParams(**values))
     return params, given
+
+
+def law_table(params: SubloadingParams) -> dict[str, Any]:
+    """The ``[law]`` table that :func:`parse_scenario` reads back as ``params``.
+
+    Every parameter is written explicitly (defaults included), per-point values as
+    lists; the orthotropy angle in degrees (``orthotropy_angle_deg``) and the orthotropy
+    in the stored "divide" convention. Used by commands that write a runnable scenario
+    (fitted laws). Round trip: ``_parse_law(law_table(p))`` equals ``p`` to round-off of
+    the degree conversion.
+    """
+    table: dict[str, Any] = {}
+    for key in LAW_KEYS:
+        if key in ("orthotropy_angle", "orthotropy_angle_deg"):
+            angle = np.degrees(np.asarray(params.orthotropy_angle, dtype=float))
+            table["orthotropy_angle_deg"] = angle.tolist()
+            continue
+        value = getattr(params, key)
+        if value is None:
+            continue
+        table[key] = np.asarray(value).tolist() if isinstance(value, np.ndarray) else value
+    table["orthotropy_convention"] = "divide"
+    return table
 
 
 def _parse_initial(t: TomlTable) -> tuple[InitialConditions, dict[str, Any]]:
