@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from frictionlab.io.config import Table, format_toml, load_toml
-from frictionlab.io.scenario import _parse_law, law_table
+from frictionlab.io.config import format_toml, load_toml
+from frictionlab.io.scenario import law_table, parse_law_table
 from frictionlab.subloading import SubloadingParams
 
 CASES = [
@@ -39,7 +39,7 @@ def _equal(a: SubloadingParams, b: SubloadingParams) -> None:
 def test_round_trip_through_toml_text(params: SubloadingParams, tmp_path) -> None:
     path = tmp_path / "law.toml"
     path.write_text(format_toml({"law": law_table(params)}))
-    back, _ = _parse_law(Table(load_toml(path)["law"], "[law]"))
+    back, _ = parse_law_table(load_toml(path)["law"])
     _equal(params, back)
 
 
@@ -51,3 +51,10 @@ def test_format_toml_drops_none_and_keeps_floats_exact() -> None:
     data = tomllib.loads(text)
     assert data["a"]["x"] == 0.1 + 0.2
     assert data["a"]["z"] == [1e-300, 3.0]
+
+
+def test_parse_law_table_names_the_table_in_errors() -> None:
+    from frictionlab.errors import InputError
+
+    with pytest.raises(InputError, match=r"\[fit.law\]\.mu_k"):
+        parse_law_table({"mu_s": 0.5}, where="[fit.law]")

@@ -62,6 +62,7 @@ __all__ = [
     "RunOptions",
     "Scenario",
     "law_table",
+    "parse_law_table",
     "load_scenario",
     "parse_scenario",
 ]
@@ -202,6 +203,17 @@ def _parse_law(t: TomlTable) -> tuple[SubloadingParams, dict[str, Any]]:
         values["orthotropy_angle"] = np.radians(deg).tolist()
     params = _reraise(t.where, lambda: SubloadingParams(**values))
     return params, given
+
+
+def parse_law_table(
+    data: dict[str, Any], where: str = "[law]"
+) -> tuple[SubloadingParams, dict[str, Any]]:
+    """Validate a ``[law]`` mapping -> (params, the keys given with their values).
+
+    The public form of the scenario's ``[law]`` parser, for commands that read a law
+    from a table of their own (bridge, calibration). Errors name ``where.key``.
+    """
+    return _parse_law(TomlTable(data, where))
 
 
 def law_table(params: SubloadingParams) -> dict[str, Any]:
