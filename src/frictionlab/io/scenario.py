@@ -62,8 +62,8 @@ __all__ = [
     "RunOptions",
     "Scenario",
     "law_table",
-    "parse_law_table",
     "load_scenario",
+    "parse_law_table",
     "parse_scenario",
 ]
 
