@@ -67,6 +67,24 @@ def test_closed_parameters_rejected(changes: dict[str, object], field: str) -> N
     assert info.value.field == field
 
 
+def test_rotation_bound_uses_the_principal_axes_of_orthotropy() -> None:
+    # C = (1, 0.2), mu_k = 0.3: the kinetic cone has radius 0.3 along e*_1 and 0.06 along
+    # e*_2. beta = 0.1 along e*_2 puts the origin outside it (friction against the sliding
+    # direction when sliding along -beta), whichever contact-frame axis e*_2 is.
+    with pytest.raises(ParameterError) as info:
+        set_a(orthotropy=(1.0, 0.2), rotation=(0.0, 0.1))  # e*_2 = e_2
+    assert info.value.field == "rotation"
+    with pytest.raises(ParameterError) as info:  # e*_1 = e_2, so e*_2 = -e_1
+        set_a(orthotropy=(1.0, 0.2), orthotropy_angle=np.pi / 2, rotation=(0.1, 0.0))
+    assert info.value.field == "rotation"
+    # beta = 0.1 along e*_1 (radius 0.3) is inside, with the axes turned or not
+    set_a(orthotropy=(1.0, 0.2), rotation=(0.1, 0.0))
+    set_a(orthotropy=(1.0, 0.2), orthotropy_angle=np.pi / 2, rotation=(0.0, 0.1))
+    # per-point angles: the second point is turned so that beta lies along e*_2
+    with pytest.raises(ParameterError):
+        set_a(orthotropy=(1.0, 0.2), orthotropy_angle=[0.0, np.pi / 2], rotation=(0.1, 0.0))
+
+
 def test_snap_back_condition_rejected_for_the_cone() -> None:
     # alpha_t <= f_n kappa (mu_s/mu_k - 1): 10 <= 20 * 1 * (0.5/0.3 - 1) = 13.3
     params = set_a(alpha_t=10.0)

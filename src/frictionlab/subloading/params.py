@@ -232,8 +232,13 @@ class SubloadingParams:
             _check_positive("M", self.M)
         # |beta| measured in the elliptic norm of the surface must stay inside the
         # kinetic cone (cone) or below the top ratio M (closed surfaces): spec §2.4.
+        # The norm acts on the components along the principal axes e*_i (Eqs 83, 95),
+        # so beta (given in the contact frame) is first turned by -orthotropy_angle.
         axes = self.axis_factors
-        beta_norm = np.sqrt(np.sum((self.rotation / axes) ** 2, axis=-1))
+        c, s = np.cos(self.orthotropy_angle), np.sin(self.orthotropy_angle)
+        b1, b2 = self.rotation[..., 0], self.rotation[..., 1]
+        beta_principal = np.stack(np.broadcast_arrays(c * b1 + s * b2, c * b2 - s * b1), axis=-1)
+        beta_norm = np.sqrt(np.sum((beta_principal / axes) ** 2, axis=-1))
         limit = kinetic if self.is_cone else np.ones_like(beta_norm)
         over = np.broadcast_to(beta_norm >= limit, np.broadcast(beta_norm, limit).shape)
         if over.any():
