@@ -142,7 +142,7 @@ def steady_size_at(params: SubloadingParams, velocity: float | None) -> float:
         x = Fs / F - 1.0 if params.recovery_form == "ratio" else 1.0 - F / Fs
         return xi * max(x, 0.0) ** n - kappa * V * max(F / Fk - 1.0, 0.0) ** m
 
-    return float(brentq(rate, Fk, Fs, xtol=1e-15 * Fs, rtol=4.5e-16, maxiter=200))
+    return float(brentq(rate, Fk, Fs, xtol=1e-15 * Fs, rtol=1e-15, maxiter=200))
 
 
 def steady_coefficient(

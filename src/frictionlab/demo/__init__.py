@@ -69,10 +69,11 @@ def bundled_scenario(name: str) -> Iterator[Path]:
 
 def default_builders() -> list[SectionBuilder]:
     """The demo's sections, in report order."""
+    from frictionlab.demo.bridge import BRIDGE_SECTIONS
     from frictionlab.demo.law import LAW_SECTIONS
     from frictionlab.demo.roughness import ROUGHNESS_SECTIONS
 
-    return [*LAW_SECTIONS, *ROUGHNESS_SECTIONS]
+    return [*LAW_SECTIONS, *ROUGHNESS_SECTIONS, *BRIDGE_SECTIONS]
 
 
 TITLE = (
@@ -84,9 +85,10 @@ INTRO = (
     "its results, and `frictionlab simulate <copy> --out DIR` reruns it) through the "
     "subloading-friction law of Hashiguchi & Ozaki (2008), shows the response and compares "
     "it with the closed forms of the specification. SI units throughout; tractions per unit "
-    "area in Pa. The last two sections compute the figure families of the lattice-spring "
+    "area in Pa. Two sections compute the figure families of the lattice-spring "
     "roughness model (mu versus sliding direction, adhesion, wear, hierarchy); their "
-    "figures and tables sit in roughness/."
+    "figures and tables sit in roughness/. The last section bridges the two: a law fitted "
+    "to a roughness polar (frictionlab bridge; its files sit in bridge/)."
 )
 
 

@@ -41,7 +41,7 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
 from frictionlab.io.scenario import parse_law_table
-from frictionlab.subloading import SubloadingParams
+from frictionlab.subloading import SubloadingParams, initial_state
 
 __all__ = ["BridgeOptions", "BridgeScenario", "parse_bridge_scenario"]
 
@@ -119,6 +119,14 @@ def parse_bridge_scenario(data: dict[str, Any], base_dir: Path) -> BridgeScenari
         raise InputError(
             f"[bridge].normal_traction = {options.normal_traction:g} is invalid: allowed "
             f"{exc.allowed}"
+        ) from None
+    try:  # the law must hold at f_n before any fit (domain and snap-back, pitfalls 3, 7)
+        initial_state(law, options.normal_traction)
+    except ParameterError as exc:
+        if exc.field == "normal_traction":
+            raise InputError(f"[bridge].{exc}") from None
+        raise InputError(
+            f"[law].{exc} (at [bridge].normal_traction = {options.normal_traction:g} Pa)"
         ) from None
     circle = np.arange(0.0, 360.0 - 1e-9, options.step_deg)
     extra = np.mod(roughness.beta_deg, 360.0)
