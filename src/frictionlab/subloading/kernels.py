@@ -215,9 +215,13 @@ def step_points(
                         ds2 = -alpha_t * k2
                         dsn = alpha_n * (k1 * b1 + k2 * b2)
                         if ws > 0.0:
-                            dw1 = s * alpha_t * q1 / (A1 * A1 * ws)
-                            dw2 = s * alpha_t * q2 / (A2 * A2 * ws)
-                            dwn = -s * alpha_n * (q1 * b1 / (A1 * A1) + q2 * b2 / (A2 * A2)) / ws
+                            # q_i / ws first: |q_i / ws| <= A_i, while A_i^2 ws can
+                            # underflow to 0 for subnormal ws (|beta| ~ 1e-308)
+                            u1 = q1 / ws
+                            u2 = q2 / ws
+                            dw1 = s * alpha_t * u1 / (A1 * A1)
+                            dw2 = s * alpha_t * u2 / (A2 * A2)
+                            dwn = -s * alpha_n * (u1 * b1 / (A1 * A1) + u2 * b2 / (A2 * A2))
                         else:
                             dw1 = 0.0
                             dw2 = 0.0
