@@ -98,6 +98,10 @@ def _recovery_rate(F: float, Fs: float, n: float, form: int) -> tuple[float, flo
     return x**n, -n * x ** (n - 1.0) * Fs / (F * F)
 
 
+#: Public name of the recovery function for the kernels (psi, psi').
+recovery_rate = _recovery_rate
+
+
 @njit(cache=True)
 def _softening_rate(F: float, Fk: float, m: float) -> tuple[float, float]:
     """phi(F) and phi'(F) of the softening term of Eq (25) (rate = -kappa * phi * |v^p|)."""
@@ -182,6 +186,267 @@ def _backward_euler(
     return F, dF
 
 
+# Gauss-Kronrod 7-15 nodes and weights on [-1, 1] (symmetric half, centre last).
+_GK_X = np.array([0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+                  0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+                  0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+                  0.207784955007898467600689403773245, 0.0])  # fmt: skip
+_GK_WK = np.array([0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+                   0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+                   0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+                   0.204432940075298892414161999234649,
+                   0.209482141084727828012999174891714])  # fmt: skip
+_GK_WG = np.array([0.0, 0.129484966168869693270611432679082, 0.0,
+                   0.279705391489276667901467771423780, 0.0,
+                   0.381830050505118944950369775488975, 0.0,
+                   0.417959183673469387755102040816327])  # fmt: skip
+
+#: Relative tolerance of the exact (constant-rate) F integration for general exponents.
+RTOL_EXACT = 1e-14
+
+
+@njit(cache=True)
+def _drift(F: float, Fs: float, Fk: float, a: float, b: float, m: float, n: float,
+           form: int) -> float:  # fmt: skip
+    """G(F) = b psi(F) - a phi(F), the rate dF/dtau over a step (tau in [0, 1])."""
+    return b * _recovery_rate(F, Fs, n, form)[0] - a * _softening_rate(F, Fk, m)[0]
+
+
+@njit(cache=True)
+def _power_change(base: float, delta: float, p: float) -> float:
+    """(base + delta)^p - base^p without cancellation (base >= 0, base + delta >= 0)."""
+    if base <= 0.0:
+        return max(delta, 0.0) ** p
+    return base**p * math.expm1(p * math.log1p(delta / base))
+
+
+@njit(cache=True)
+def _integrand(z: float, F_hi: float, F_lo: float, D0: float, sigma: float, Fs: float,
+               Fk: float, a: float, b: float, m: float, n: float,
+               form: int) -> tuple[float, float]:  # fmt: skip
+    """Integrands in z = ln(|F - F_inf|/D0) of tau and of the a-sensitivity (both >= 0).
+
+    The attractor is carried as ``F_inf = F_hi + F_lo`` (F_lo the sub-ulp Newton
+    correction), and G is formed as ``G(F) - G(F_inf)`` from differences of powers
+    (``expm1``/``log1p``) with bases taken without cancellation. So the integrand is a
+    smooth function of z with full relative precision down to the attractor: the direct
+    ``b psi - a phi`` cancels there, and a rounded F or F_inf would add a jitter of
+    ulp/|F - F_inf| or an offset |G'(F_inf)| ulp (large for an exponent below 1 near a
+    bound).
+    """
+    d = D0 * math.exp(z)
+    F = F_hi + (F_lo - sigma * d)
+    F_inf = F_hi + F_lo
+    d_soft = _power_change(((F_hi - Fk) + F_lo) / Fk, -sigma * d / Fk, m)
+    if form == ONE_MINUS:
+        d_rec = _power_change(((Fs - F_hi) - F_lo) / Fs, sigma * d / Fs, n)
+    else:
+        d_rec = _power_change(((Fs - F_hi) - F_lo) / F_inf, sigma * d * Fs / (F_inf * F), n)
+    G = abs(b * d_rec - a * d_soft)
+    if not G > 0.0:
+        return math.inf, math.inf
+    phi = _softening_rate(F, Fk, m)[0]
+    ratio = d / G
+    return ratio, phi * ratio / G
+
+
+@njit(cache=True)
+def _gk15(lo: float, hi: float, F_hi: float, F_lo: float, D0: float, sigma: float,
+          Fs: float, Fk: float, a: float, b: float, m: float, n: float,
+          form: int) -> tuple[float, float, float, float]:  # fmt: skip
+    """Kronrod-15 estimates of both integrals over [lo, hi] and their error estimates."""
+    c = 0.5 * (lo + hi)
+    h = 0.5 * (hi - lo)
+    k0 = 0.0
+    g0 = 0.0
+    k1 = 0.0
+    g1 = 0.0
+    for j in range(8):
+        if j == 7:
+            v0, v1 = _integrand(c, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n, form)
+        else:
+            x = h * _GK_X[j]
+            p0, p1 = _integrand(c - x, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n, form)
+            q0, q1 = _integrand(c + x, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n, form)
+            v0 = p0 + q0
+            v1 = p1 + q1
+        k0 += _GK_WK[j] * v0
+        g0 += _GK_WG[j] * v0
+        k1 += _GK_WK[j] * v1
+        g1 += _GK_WG[j] * v1
+    return k0 * h, k1 * h, abs(k0 - g0) * h, abs(k1 - g1) * h
+
+
+@njit(cache=True)
+def _quad(z_lo: float, z_hi: float, F_hi: float, F_lo: float, D0: float, sigma: float, Fs: float,
+          Fk: float, a: float, b: float, m: float, n: float, form: int,
+          tol: float) -> tuple[float, float]:  # fmt: skip
+    """Adaptive Gauss-Kronrod 7-15 of both integrands over [z_lo, z_hi] (z_lo <= z_hi).
+
+    The range is first cut into pieces at most 2 long (the integrands vary on the scale
+    of one unit of z, where |F - F_inf| changes by e: a single rule over a long range
+    can agree with its own error estimate while missing that variation). A piece is
+    accepted when its error estimate is below ``tol`` times its value (both integrands
+    are positive, so this bounds the relative error of the sum); explicit stack, at most
+    200 bisections per piece (the integrands are smooth: a handful suffice).
+    """
+    if z_hi <= z_lo:
+        return 0.0, 0.0
+    total0 = 0.0
+    total1 = 0.0
+    pieces = math.ceil((z_hi - z_lo) / 2.0)
+    stack_lo = np.empty(64)
+    stack_hi = np.empty(64)
+    for p in range(pieces):
+        stack_lo[0] = z_lo + (z_hi - z_lo) * p / pieces
+        stack_hi[0] = z_hi if p == pieces - 1 else z_lo + (z_hi - z_lo) * (p + 1) / pieces
+        top = 1
+        count = 0
+        while top > 0:
+            top -= 1
+            lo = stack_lo[top]
+            hi = stack_hi[top]
+            k0, k1, d0, d1 = _gk15(lo, hi, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n,
+                                   form)  # fmt: skip
+            count += 1
+            ok = d0 <= tol * k0 and d1 <= tol * k1
+            if ok or top >= 62 or count >= 200 or hi - lo <= 1e-9:
+                total0 += k0
+                total1 += k1
+            else:
+                c = 0.5 * (lo + hi)
+                stack_lo[top] = lo
+                stack_hi[top] = c
+                stack_lo[top + 1] = c
+                stack_hi[top + 1] = hi
+                top += 2
+    return total0, total1
+
+
+@njit(cache=True)
+def _fixed_point(Fs: float, Fk: float, a: float, b: float, m: float, n: float,
+                 form: int) -> float:  # fmt: skip
+    """F_inf in [F_k, F_s] with G(F_inf) = 0 (G decreasing: G(F_k) >= 0 >= G(F_s))."""
+    lo, hi = Fk, Fs
+    if _drift(hi, Fs, Fk, a, b, m, n, form) >= 0.0:
+        return hi
+    if _drift(lo, Fs, Fk, a, b, m, n, form) <= 0.0:
+        return lo
+    F = 0.5 * (lo + hi)
+    for _ in range(200):
+        G = _drift(F, Fs, Fk, a, b, m, n, form)
+        if G > 0.0:
+            lo = F
+        elif G < 0.0:
+            hi = F
+        else:
+            return F
+        dG = b * _recovery_rate(F, Fs, n, form)[1] - a * _softening_rate(F, Fk, m)[1]
+        F_new = F - G / dG if math.isfinite(dG) and dG < 0.0 else 0.5 * (lo + hi)
+        if not lo < F_new < hi:
+            F_new = 0.5 * (lo + hi)
+        if F_new == F or hi - lo <= 4.4e-16 * hi:
+            return F_new
+        F = F_new
+    return F
+
+
+@njit(cache=True)
+def _attractor_sensitivity(F_inf: float, Fs: float, Fk: float, a: float, b: float,
+                           m: float, n: float, form: int) -> float:  # fmt: skip
+    """dF_inf/da = phi(F_inf) / G'(F_inf) (F reached its attractor within the step)."""
+    phi, dphi = _softening_rate(F_inf, Fk, m)
+    dpsi = _recovery_rate(F_inf, Fs, n, form)[1]
+    dG = b * dpsi - a * dphi
+    if not math.isfinite(dG) or dG >= 0.0:
+        return 0.0
+    return phi / dG
+
+
+@njit(cache=True)
+def constant_rate_size(
+    F0: float, Fs: float, Fk: float, a: float, b: float, m: float, n: float, form: int
+) -> tuple[float, float]:
+    """Exact F after one step of constant rates, and dF/da (spec §4.3, §6 Q1/Q10).
+
+    Over the step, with pseudo-time tau in [0, 1], ``dF/dtau = G(F) = b psi(F) - a phi(F)``
+    where ``a = kappa dlam``, ``b = xi dt``, ``phi = (F/F_k - 1)^m`` and ``psi`` the
+    recovery function (``(1 - F/F_s)^n`` or ``(F_s/F - 1)^n``). G is decreasing with one
+    root F_inf in [F_k, F_s]; F moves monotonically towards it and the end value solves
+    ``int_{F0}^{F1} dF / G(F) = 1``. In ``z = ln(|F - F_inf| / |F0 - F_inf|)`` the
+    integrand is bounded (Lipschitz rates) or vanishes (exponents below 1, where F_inf is
+    reached in finite time), so adaptive Gauss-Kronrod with a safeguarded Newton iteration
+    in z solves it to ``RTOL_EXACT``. The sensitivity is
+    ``dF1/da = -|G(F1)| int phi |F - F_inf| / G^2 dz``.
+    Composition holds: two half steps equal one step (the equation is autonomous).
+    """
+    F0 = min(max(F0, Fk), Fs)
+    if a == 0.0 and b == 0.0:
+        return F0, 0.0
+    F_hi = _fixed_point(Fs, Fk, a, b, m, n, form)
+    F_lo = 0.0
+    if Fk < F_hi < Fs:  # sub-ulp correction of the attractor (one Newton step)
+        dG = b * _recovery_rate(F_hi, Fs, n, form)[1] - a * _softening_rate(F_hi, Fk, m)[1]
+        if math.isfinite(dG) and dG < 0.0:
+            F_lo = -_drift(F_hi, Fs, Fk, a, b, m, n, form) / dG
+            if not abs(F_lo) <= 4.4e-16 * F_hi:
+                F_lo = 0.0
+    F_inf = F_hi + F_lo
+    D0 = abs((F0 - F_hi) - F_lo)
+    z_min = math.log(max(4.4e-16 * F_inf, 1e-300) / D0) if D0 > 0.0 else 0.0
+    if z_min >= 0.0:
+        return F_inf, _attractor_sensitivity(F_inf, Fs, Fk, a, b, m, n, form)
+    sigma = 1.0 if (F_hi - F0) + F_lo > 0.0 else -1.0
+    # safeguarded Newton in z on tau(z) = 1, tau decreasing in z; tau(0) = 0
+    z = 0.0
+    tau = 0.0
+    sens = 0.0
+    lo = z_min  # tau(lo) >= 1 not yet known
+    hi = 0.0  # tau(hi) <= 1
+    lo_known = False
+    for _ in range(100):
+        h = _integrand(z, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n, form)[0]
+        e = 1.0 - tau
+        if abs(e) <= RTOL_EXACT:
+            break
+        z_new = z - e / h if h > 0.0 and math.isfinite(h) else 0.5 * (lo + hi)
+        if not lo < z_new < hi:
+            z_new = 0.5 * (lo + hi) if lo_known else max(z_min, 0.5 * (lo + hi), z_new)
+        if z_new <= z_min:
+            z_new = z_min
+        if z_new < z:
+            d_tau, d_sens = _quad(z_new, z, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n, form,
+                                  RTOL_EXACT)  # fmt: skip
+            tau += d_tau
+            sens += d_sens
+        else:
+            d_tau, d_sens = _quad(z, z_new, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n, form,
+                                  RTOL_EXACT)  # fmt: skip
+            tau -= d_tau
+            sens -= d_sens
+        z = z_new
+        if tau >= 1.0:
+            lo = z
+            lo_known = True
+        else:
+            hi = z
+            if z <= z_min:  # reaches F_inf (to round-off) within the step
+                return F_inf, _attractor_sensitivity(F_inf, Fs, Fk, a, b, m, n, form)
+        if hi - lo <= 1e-15 * max(1.0, abs(z)) and lo_known:
+            break
+    d = D0 * math.exp(z)
+    F1 = F_hi + (F_lo - sigma * d)
+    h1 = _integrand(z, F_hi, F_lo, D0, sigma, Fs, Fk, a, b, m, n, form)[0]
+    g_end = d / h1 if h1 > 0.0 and math.isfinite(h1) else 0.0
+    F1 = min(max(F1, Fk), Fs)
+    scale = b * _recovery_rate(F1, Fs, n, form)[0] + a * _softening_rate(F1, Fk, m)[0]
+    if g_end <= 1e-9 * scale:
+        # F1 sits at its attractor to within the rounding of G: -g_end * sens is 0 * inf
+        # there, while dF1/da -> dF_inf/da (linear regime, relative error ~ 1e-9)
+        return F1, _attractor_sensitivity(F_inf, Fs, Fk, a, b, m, n, form)
+    return F1, -g_end * sens
+
+
 @njit(cache=True)
 def size_after(
     F0: float, Fs: float, Fk: float, kappa: float, xi: float, m: float, n: float,
@@ -189,16 +454,19 @@ def size_after(
 ) -> tuple[float, float]:  # fmt: skip
     """F (or mu) and dF/d(dlam) after plastic sliding ``dlam`` and time ``dt``, Eq (25)/(69).
 
-    ``integrator == EXPONENTIAL`` (default, spec §4.3, §6 Q10):
+    ``integrator == EXPONENTIAL`` (default, spec §4.3, §6 Q10): exact for constant rates
+    over the step (plastic rate dlam/dt and time rate both constant), for every option:
 
-    * m = n = 1 and the default recovery form: exact for constant rates,
+    * m = n = 1 and the default recovery form: closed form,
       ``a = kappa dlam/F_k + xi dt/F_s``, ``F_inf = (kappa dlam + xi dt)/a``,
       ``F = F_inf + (F0 - F_inf) e^-a``;
-    * otherwise a split: exact recovery over dt (closed forms of §2.6; backward Euler for
-      the "ratio" form, which has none), then exact softening by dlam.
+    * pure softening (dt = 0 or xi = 0), or pure recovery in the default form: the closed
+      forms of spec §2.6;
+    * otherwise :func:`constant_rate_size`, the monotone scalar equation solved to
+      ``RTOL_EXACT`` — so a few large steps give the answer of many small ones.
 
-    ``integrator == BACKWARD_EULER``: the monotone scalar equation of §4.3.
-    The result always lies in [F_k, F_s] (convex combinations; pitfall 4).
+    ``integrator == BACKWARD_EULER``: the monotone scalar equation of §4.3 (first order).
+    The result always lies in [F_k, F_s] (pitfall 4).
     """
     if integrator == BACKWARD_EULER:
         return _backward_euler(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, form)
@@ -213,11 +481,41 @@ def size_after(
         F = F_inf + (F0 - F_inf) * e
         dF = kappa * (1.0 - F_inf / Fk) * one_minus_e_over_a + (F_inf - F0) * e * kappa / Fk
         return min(max(F, Fk), Fs), dF
+    b = xi * dt
+    a = kappa * dlam
+    F0 = min(max(F0, Fk), Fs)
+    # a rate that cannot move F by one rounding unit over the step is dropped (exact
+    # closed forms of the other mechanism; keeps G^2 and the integrals in range)
+    recovery_max = 1.0 if form == ONE_MINUS else (Fs / Fk - 1.0) ** n
+    if b * recovery_max <= 1e-17 * Fk:
+        return _soften_exactly(F0, Fk, kappa, m, dlam)
+    if a * (Fs / Fk - 1.0) ** m <= 1e-17 * Fk:
+        F1 = recovered_size(F0, Fs, Fk, xi, m, n, dt, integrator, form)
+        return F1, -kappa * _softening_rate(F1, Fk, m)[0]
+    F1, dF_da = constant_rate_size(F0, Fs, Fk, kappa * dlam, b, m, n, form)
+    return F1, kappa * dF_da
+
+
+@njit(cache=True)
+def recovered_size(
+    F0: float, Fs: float, Fk: float, xi: float, m: float, n: float, dt: float,
+    integrator: int, form: int,
+) -> float:  # fmt: skip
+    """F after the time ``dt`` with no plastic sliding (recovery only, spec §4.2 step 2).
+
+    Closed forms of spec §2.6 for the default form ``1 - F/F_s`` (any n); the exact
+    constant-rate solution for the ``F_s/F - 1`` form; backward Euler when chosen.
+    """
+    if integrator == BACKWARD_EULER:
+        return _backward_euler(F0, Fs, Fk, 0.0, xi, m, n, 0.0, dt, form)[0]
+    F0 = min(max(F0, Fk), Fs)
+    if xi == 0.0 or dt == 0.0:
+        return F0
     if form == ONE_MINUS:
-        F1 = _recover_exactly(F0, Fs, xi, n, dt)
-    else:
-        F1 = _backward_euler(F0, Fs, Fk, 0.0, xi, m, n, 0.0, dt, form)[0]
-    return _soften_exactly(F1, Fk, kappa, m, dlam)
+        return _recover_exactly(F0, Fs, xi, n, dt)
+    if xi * dt * (Fs / Fk - 1.0) ** n <= 1e-17 * Fk:  # cannot move F by one rounding unit
+        return F0
+    return constant_rate_size(F0, Fs, Fk, 0.0, xi * dt, m, n, form)[0]
 
 
 # ============================================================================ public closed forms
