@@ -55,6 +55,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.quiet:
         _report(scenario.labels, history, elapsed)
         print("wrote " + ", ".join(str(p) for p in paths))
+    for warning in history.warnings:
+        print(f"frictionlab: warning: {warning}", file=sys.stderr)
     if not history.success:
         print(
             f"frictionlab: computation failed: {history.message}; the history up to the "

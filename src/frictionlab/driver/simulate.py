@@ -21,10 +21,23 @@ from typing import Any
 
 import numpy as np
 
-from frictionlab.driver.program import Segment, plan_program, program_points
+from frictionlab.driver.program import (
+    NormalStep,
+    Segment,
+    Table,
+    plan_program,
+    program_points,
+)
 from frictionlab.driver.stepping import StepWork, advance
 from frictionlab.errors import ParameterError
-from frictionlab.subloading import ContactState, Status, SubloadingParams, initial_state
+from frictionlab.subloading import (
+    ContactState,
+    Status,
+    SubloadingParams,
+    check_snap_back,
+    initial_state,
+    snap_back_violations,
+)
 
 __all__ = [
     "STATUS_INITIAL",
@@ -152,6 +165,10 @@ class History:
     extra, extra_units:
         Additional (rows, N) series with their units (the spring-slider's load point,
         slider velocity and spring force).
+    warnings:
+        One line per segment that reached, by approach or sliding, a normal traction at
+        which the no-snap-back condition (spec pitfall 7) fails: the local solution may
+        not be unique there.
     """
 
     time: np.ndarray
@@ -174,6 +191,7 @@ class History:
     work: dict[str, int]
     extra: dict[str, np.ndarray] = field(default_factory=dict)
     extra_units: dict[str, str] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
 
     @property
     def n_points(self) -> int:
@@ -289,6 +307,10 @@ class _Recorder:
     def rows(self) -> int:
         return len(self.time)
 
+    def max_normal_traction(self, first_row: int) -> np.ndarray:
+        """(N,) largest normal traction of each point in the rows from ``first_row`` on."""
+        return np.max(np.array([t[:, 2] for t in self.traction[first_row:]]), axis=0)
+
     def history(self, **kw: Any) -> History:
         return History(
             time=np.array(self.time),
@@ -370,7 +392,9 @@ def simulate(
     n = count_points(params, program, init, n_points)
     state = init if isinstance(init, ContactState) else init.state(params, n)
     plans = plan_program(program, n)
+    _check_prescribed_normal_tractions(params, program)
     total = sum(p.estimated_steps for p in plans)
+    warnings: list[str] = []
     rec = _Recorder(state)
     records: list[SegmentRecord] = []
     work = dict.fromkeys(
@@ -381,6 +405,9 @@ def simulate(
     for index, plan in enumerate(plans, start=1):
         estimated = plan.estimated_steps
         steps = plan.begin(state.traction)
+        target = getattr(plan, "target", None)
+        if target is not None:  # a normal traction prescribed by a change: check it now
+            check_snap_back(params, target, f"program[{index}].traction_change")
         total += steps - estimated
         first_row = rec.rows
         failed = False
@@ -402,6 +429,15 @@ def simulate(
             if progress is not None:
                 progress(work["steps"], total)
         if rec.rows > first_row:
+            reached = rec.max_normal_traction(first_row)
+            reasons = snap_back_violations(params, reached)
+            bad = [i for i, r in enumerate(reasons) if r]
+            if bad:
+                warnings.append(
+                    f"segment #{index} ({plan.kind}) reached f_n = {reached[bad[0]]:.6g} Pa "
+                    f"at point {bad[0] + 1} ({len(bad)} point(s) in all), where "
+                    f"{reasons[bad[0]]} fails: the local solution may not be unique"
+                )
             records.append(
                 SegmentRecord(
                     index, plan.kind, first_row, rec.rows - 1, plan.resolved, plan.is_hold
@@ -420,4 +456,21 @@ def simulate(
         success=success,
         message=message,
         work=work,
+        warnings=tuple(warnings),
     )
+
+
+def _check_prescribed_normal_tractions(
+    params: SubloadingParams, program: Sequence[Segment]
+) -> None:
+    """The no-snap-back check (spec pitfall 7) at every normal traction a segment prescribes.
+
+    Raises :class:`~frictionlab.errors.ParameterError` naming the segment, before any step
+    (as ``initial_state`` does for the initial normal traction).
+    """
+    for index, seg in enumerate(program, start=1):
+        if isinstance(seg, NormalStep) and seg.traction is not None:
+            check_snap_back(params, seg.traction, f"program[{index}].traction")
+        elif isinstance(seg, Table) and seg.normal_traction is not None:
+            values = np.asarray(seg.normal_traction, dtype=np.float64)
+            check_snap_back(params, values[values > 0], f"program[{index}].normal_traction")

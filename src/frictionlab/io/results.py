@@ -152,6 +152,7 @@ def summarise(
         "title": scenario.title,
         "success": history.success,
         "message": history.message,
+        "warnings": list(history.warnings),
         "n_points": history.n_points,
         "steps": history.n_rows - 1,
         "inputs": scenario.inputs,

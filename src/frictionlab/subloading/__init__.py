@@ -27,6 +27,7 @@ from frictionlab.subloading.state import (
     initial_state,
     local_increment,
     rotate_frame,
+    snap_back_violations,
 )
 from frictionlab.subloading.surfaces import (
     friction_coefficient_on_yield,
@@ -54,6 +55,7 @@ __all__ = [
     "ratcheting_slip_per_cycle",
     "ratio_closed_form",
     "rotate_frame",
+    "snap_back_violations",
     "steady_size",
     "update",
     "yield_function",

@@ -28,6 +28,7 @@ __all__ = [
     "initial_state",
     "local_increment",
     "rotate_frame",
+    "snap_back_violations",
 ]
 
 
@@ -211,14 +212,15 @@ def ratio_of(params: SubloadingParams, traction: np.ndarray, F: np.ndarray) -> n
     return out
 
 
-def check_snap_back(params: SubloadingParams, normal_traction: Any) -> None:
-    """Reject parameters that allow snap-back in softening (pitfall 7, Eq 44).
+def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list[str]:
+    """Per point: "" where the no-snap-back condition holds at ``normal_traction``, else why.
 
-    Near R = 1 the local problem has a unique root only if the elastic stiffness
-    exceeds the softening slope: cone ``alpha_t > A_max f_n kappa (mu/mu_k - 1)^m`` for
-    all mu in [mu_k, mu_s]; closed surfaces ``alpha_t g'(chi*)/A_i > kappa (F/F_k - 1)^m``
-    on the yield surface ``f_n g(chi*) = F`` for F in [F_k, F_s] (checked on a grid of
-    65 values of F, the end points included).
+    Pitfall 7, Eq 44: near R = 1 the local problem has a unique root only if the elastic
+    stiffness exceeds the softening slope: cone ``alpha_t > A_max f_n kappa (mu/mu_k - 1)^m``
+    for all mu in [mu_k, mu_s]; closed surfaces ``alpha_t g'(chi*)/A_max > kappa (F/F_k -
+    1)^m`` on the yield surface ``f_n g(chi*) = F`` for F in [F_k, F_s] (checked on a grid
+    of 65 values of F, the end points included). Normal tractions at or above F_k on a
+    closed surface are left to the domain checks.
     """
     fn = np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))
     n = fn.shape[0]
@@ -228,40 +230,57 @@ def check_snap_back(params: SubloadingParams, normal_traction: Any) -> None:
     static = np.broadcast_to(params.static, (n,))
     kinetic = np.broadcast_to(params.kinetic, (n,))
     a_max = np.max(np.broadcast_to(params.axis_factors, (n, 2)), axis=1)
-    a_min = np.min(np.broadcast_to(params.axis_factors, (n, 2)), axis=1)
+    out = [""] * n
     if params.is_cone:
         slope = a_max * fn * kappa * (static / kinetic - 1.0) ** m
-        bad = ~(alpha_t > slope)
-        if bad.any():
-            i = int(np.flatnonzero(bad)[0])
-            raise ParameterError(
-                "alpha_t",
-                float(alpha_t[i]),
-                f"alpha_t > C_max f_n kappa (mu_s/mu_k - 1)^m = {slope[i]:.6g} "
-                "(no snap-back in softening, spec pitfall 7)",
+        for i in np.flatnonzero(~(alpha_t > slope)):
+            out[i] = (
+                f"alpha_t > C_max f_n kappa (mu_s/mu_k - 1)^m = {slope[i]:.6g} at f_n = "
+                f"{fn[i]:.6g} Pa (no snap-back in softening, spec pitfall 7)"
             )
-        return
-    code = SURFACE_CODES[params.surface]
-    from frictionlab.subloading.surfaces import g_inverse, g_value
+        return out
+    from frictionlab.subloading.surfaces import g_function, g_inverse
 
-    for i in range(n):
-        if fn[i] >= kinetic[i]:
-            continue  # reported by the domain check of the caller
-        grid = np.linspace(kinetic[i], static[i], 65)
-        chi = g_inverse(params.surface, grid / fn[i], params.tear_k)
-        for F_val, c in zip(grid, chi, strict=True):
-            dg = g_value(code, params.tear_k, float(c))[1]
-            softening = kappa[i] * max(F_val / kinetic[i] - 1.0, 0.0) ** m[i]
-            # the worst axis is the one with the largest factor A_i (smallest g'/A_i)
-            stiffness = alpha_t[i] * dg / (a_max[i] if a_max[i] > 0 else a_min[i])
-            if not stiffness > softening:
-                raise ParameterError(
-                    "alpha_t",
-                    float(alpha_t[i]),
-                    f"alpha_t g'(chi*)/M_max > kappa (F/F_k - 1)^m on the yield surface "
-                    f"(no snap-back in softening; fails at F = {F_val:.6g}, f_n = {fn[i]:.6g}; "
-                    "spec pitfall 7)",
-                )
+    inside = (fn > 0.0) & (fn < kinetic)
+    if not inside.any():
+        return out
+    idx = np.flatnonzero(inside)
+    grid = kinetic[idx, None] + (static - kinetic)[idx, None] * np.linspace(0.0, 1.0, 65)
+    chi = g_inverse(params.surface, grid / fn[idx, None], params.tear_k)
+    dg = g_function(params.surface, chi, params.tear_k)[1]
+    softening = kappa[idx, None] * np.maximum(grid / kinetic[idx, None] - 1.0, 0.0) ** m[idx, None]
+    # the worst axis is the one with the largest factor A_i (smallest g'/A_i)
+    stiffness = alpha_t[idx, None] * dg / a_max[idx, None]
+    bad = ~(stiffness > softening)
+    for row in np.flatnonzero(bad.any(axis=1)).tolist():
+        point = int(idx[row])
+        F_val = float(grid[row, int(np.argmax(bad[row]))])
+        out[point] = (
+            f"alpha_t g'(chi*)/M_max > kappa (F/F_k - 1)^m on the yield surface "
+            f"(no snap-back in softening; fails at F = {F_val:.6g}, f_n = {fn[point]:.6g}; "
+            "spec pitfall 7)"
+        )
+    return out
+
+
+def check_snap_back(
+    params: SubloadingParams, normal_traction: Any, field_name: str = "alpha_t"
+) -> None:
+    """Raise ParameterError unless the no-snap-back condition holds at ``normal_traction``.
+
+    See :func:`snap_back_violations`; ``field_name`` names the input that set the normal
+    traction in the message when it is not the law (e.g. a programme segment).
+    """
+    reasons = snap_back_violations(params, normal_traction)
+    for i, reason in enumerate(reasons):
+        if reason:
+            alpha_t = float(np.broadcast_to(params.alpha_t, (len(reasons),))[i])
+            if field_name == "alpha_t":
+                raise ParameterError("alpha_t", alpha_t, reason)
+            fn = float(np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))[i])
+            raise ParameterError(
+                field_name, fn, f"a normal traction at which alpha_t = {alpha_t:.6g} keeps {reason}"
+            )
 
 
 def _check_rotation(name: str, Q: np.ndarray) -> None:
