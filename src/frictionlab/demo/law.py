@@ -38,6 +38,7 @@ from frictionlab.plotting.law import (
     save_figure,
 )
 from frictionlab.subloading import (
+    Status,
     friction_coefficient_on_yield,
     hold_recovery,
     ratcheting_slip_per_cycle,
@@ -236,13 +237,28 @@ def reversal_section(ctx: DemoContext) -> Section:
         )
     )
     tp = h.traction[rows, 0, 0] / h.traction[rows, 0, 2]
+    # the elastic branch right after the reversal: consecutive STICK steps and their slope
+    rev = h.segments[1]
+    after = np.arange(rev.first_row, rev.last_row + 1)
+    stick = after[: int(np.argmax(h.status[after, 0] != int(Status.STICK)))]
+    slope = (
+        float(np.polyfit(h.slip[stick, 0, 0], h.traction[stick, 0, 0], 1)[0])
+        if stick.size >= 2
+        else float("nan")
+    )
+    elastic_range = (
+        float(h.slip[stick[0] - 1, 0, 0] - h.slip[stick[-1], 0, 0]) if stick.size else 0.0
+    )
     sec = Section("Reversal, displacement cycles and ratcheting", sc.description,
                   parameters=_parameters(sc))  # fmt: skip
     sec.add_figure(
         f"{rel}/friction.png",
         "Forward slide, reversal back to the start, then four cycles of +-0.05 m: f_t1/f_n "
         "against slip (loops) and time. Each reversal unloads elastically and re-yields "
-        "smoothly; the turning points alternate in sign and decrease toward kinetic friction.",
+        "smoothly; the turning points alternate in sign and decrease toward kinetic friction. "
+        f"Steps of 1e-4 m resolve the elastic unloading: after the first reversal "
+        f"{stick.size} steps ({elastic_range:.2g} m of slip) are elastic, with slope "
+        f"{slope:.4g} Pa/m (alpha_t = {_law(sc, 'alpha_t'):.4g} Pa/m).",
     )
     sec.add_figure(
         f"{rel_r}/friction.png",
