@@ -59,8 +59,8 @@ def test_cli_refuses_a_prescribed_traction_and_reports_a_reached_one(
                     for k, v in LAW.items()).replace("'", '"')  # fmt: skip
     head = f"[law]\n{law}\n[initial]\nnormal_traction = 1.0\n"
     refused = tmp_path / "refused.toml"
-    refused.write_text(head + '[[program]]\nkind = "normal"\ntraction = 3001.0\n'
-                       '[[program]]\nkind = "slide"\nvelocity = 0.1\ndistance = 0.01\n')  # fmt: skip
+    slide = '[[program]]\nkind = "slide"\nvelocity = 0.1\ndistance = 0.01\n'
+    refused.write_text(head + '[[program]]\nkind = "normal"\ntraction = 3001.0\n' + slide)
     assert main(["simulate", str(refused), "--out", str(tmp_path / "a"), "--quiet"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "program[1].traction" in err[0]
