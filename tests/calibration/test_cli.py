@@ -140,3 +140,30 @@ def test_data_a_hair_past_the_end_are_accepted(tmp_path) -> None:
     data["data"][0]["units"] = {"time": "s", "slip": "mm"}
     code, _ = _bad(tmp_path, data, lines)
     assert code == 0
+
+
+_HEAD = [",Time,Displacement,COF", ",min,mm,-"]
+_OK = [f"{i},{0.01 * i},{0.001 * i},0.3" for i in range(6)]
+
+
+@pytest.mark.parametrize(
+    ("lines", "needle"),
+    [
+        ([*_HEAD, _OK[0], _OK[2], _OK[1], *_OK[3:]], "not strictly increasing"),
+        ([*_HEAD, _OK[0], "1,0.01,0.001,nan", *_OK[2:]], "empty or NaN"),
+        (_HEAD + _OK[:3], "only 3 samples"),
+        ([",Time,Displacement,mu", ",min,mm,-", *_OK], "missing column 'COF'"),
+        ([",Time,Time,Displacement,COF", ",min,min,mm,-"]
+         + [f"{i},{0.01 * i},{0.01 * i},0.0,0.3" for i in range(6)], "appears 2 times"),
+        ([*_HEAD, "0,-0.01,0.0,0.3", *_OK[1:]], "is negative"),
+        ([*_HEAD, _OK[0], "1,0.01,0.001,-0.3", *_OK[2:]], "is negative"),
+    ],
+)  # fmt: skip
+def test_bad_data_corpus_exits_2_with_one_line_and_writes_nothing(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], lines: list[str], needle: str
+) -> None:
+    code, out = _bad(tmp_path, _base(), lines)
+    err = capsys.readouterr().err.strip()
+    assert code == 2 and not out.exists()
+    assert len(err.splitlines()) == 1, err
+    assert "[[data]] #1.file 'run.csv'" in err and needle in err, err
