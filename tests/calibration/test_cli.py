@@ -167,3 +167,20 @@ def test_bad_data_corpus_exits_2_with_one_line_and_writes_nothing(
     assert code == 2 and not out.exists()
     assert len(err.splitlines()) == 1, err
     assert "[[data]] #1.file 'run.csv'" in err and needle in err, err
+
+
+def test_two_curves_give_two_runnable_scenarios(tmp_path: Path) -> None:
+    write_export(tmp_path / "a.csv", make_curve(0.002, seed=6))
+    write_export(tmp_path / "b.csv", make_curve(0.002, seed=7))
+    data = config("a.csv", ["mu_k", "xi"], {"mu_k": 0.25, "xi": 1e-2}, profile=False)
+    second = dict(data["data"][0], file="b.csv", weight=0.5)
+    data["data"].append(second)
+    cfg = write_config(tmp_path / "two.toml", data)
+    out = tmp_path / "out"
+    assert main(["calibrate", str(cfg), "--out", str(out), "--quiet"]) == 0
+    fit = json.loads((out / "fit.json").read_text())
+    assert [c["file"] for c in fit["curves"]] == ["a.csv", "b.csv"]
+    assert fit["n_points"] == 2 * 3401 and (out / "curve_2.png").is_file()
+    for name in ("fitted.toml", "fitted_2.toml"):
+        assert main(["simulate", str(out / name), "--out", str(tmp_path / name), "--quiet",
+                     "--no-plots"]) == 0  # fmt: skip

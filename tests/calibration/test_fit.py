@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -129,3 +131,14 @@ def test_bad_fit_specification_names_the_field(names, bounds, field) -> None:
     with pytest.raises(ParameterError) as info:
         make_space(true_params(), names, bounds)
     assert info.value.field == field
+
+
+def test_weight_two_equals_the_curve_given_twice() -> None:
+    curve = make_curve(NOISE, seed=5)
+    heavy = dataclasses.replace(curve, weight=2.0)
+    start = true_params(mu_k=0.25, xi=1e-2)
+    twice = fit_law(start, [curve, curve], ["mu_k", "xi"])
+    weighted = fit_law(start, [heavy], ["mu_k", "xi"])
+    # Same cost function: equal optima up to the optimiser's stopping tolerance (xtol 1e-10).
+    np.testing.assert_allclose(weighted.values, twice.values, rtol=1e-8)
+    assert weighted.cost == pytest.approx(twice.cost, rel=1e-8)
