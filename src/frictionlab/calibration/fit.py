@@ -194,20 +194,56 @@ class Objective:
         return h
 
     def jac(self, theta: np.ndarray) -> np.ndarray:
-        """(n, p) Jacobian of the residuals with respect to theta."""
+        """(n, p) Jacobian of the residuals with respect to theta.
+
+        When the batched run fails (one perturbed law does not run), the columns run one by
+        one and a failing perturbation is taken in the opposite direction.
+        """
         h = self.steps(theta)
+        p = theta.size
+        blocks = []
+        for w, curve in zip(self.sqrt_w, self.curves, strict=True):
+            columns = self._columns(theta, h)
+            values = None
+            if self.jacobian == "batched":
+                try:
+                    values = self._run(columns, curve)
+                except FrictionlabError:
+                    values = None
+            if values is None:
+                base = self._run(columns[:, [0]], curve)[0]
+                rows = [base]
+                for k in range(1, p + 1):
+                    rows.append(self._column_or_flip(theta, h, k - 1, curve))
+                values = np.stack(rows)
+            blocks.append(w * (values[1:] - values[0]).T / h)
+        return np.vstack(blocks)
+
+    def _columns(self, theta: np.ndarray, h: np.ndarray) -> np.ndarray:
+        """(p, p + 1) physical values: the base, then theta + h_j e_j for each j."""
         p = theta.size
         thetas = np.repeat(theta[:, None], p + 1, axis=1)
         thetas[np.arange(p), np.arange(1, p + 1)] += h
-        columns = self.space.from_theta(thetas.T).T  # (p, p + 1)
-        blocks = []
-        for w, curve in zip(self.sqrt_w, self.curves, strict=True):
-            if self.jacobian == "batched":
-                values = self._run(columns, curve)
-            else:
-                values = np.stack([self._run(columns[:, [k]], curve)[0] for k in range(p + 1)])
-            blocks.append(w * (values[1:] - values[0]).T / h)
-        return np.vstack(blocks)
+        return self.space.from_theta(thetas.T).T
+
+    def _column_or_flip(self, theta: np.ndarray, h: np.ndarray, j: int, curve: Curve) -> np.ndarray:
+        """Model of perturbation j; on failure the opposite step (``h[j]`` is flipped)."""
+        for attempt in range(2):
+            trial = theta.copy()
+            trial[j] += h[j]
+            x = self.space.from_theta(trial)
+            try:
+                return self._run(x[:, None], curve)[0]
+            except FrictionlabError as exc:
+                if attempt == 1:
+                    raise ConvergenceError(
+                        f"curve '{curve.name}': the driver fails on both sides of "
+                        f"{self.space.names[j]} = {self.space.from_theta(theta)[j]:.6g} "
+                        f"({exc})",
+                        mask=np.ones(1, dtype=bool),
+                    ) from None
+                h[j] = -h[j]
+        raise AssertionError("unreachable")  # pragma: no cover
 
 
 @dataclass(frozen=True)
