@@ -26,7 +26,7 @@ from frictionlab.calibration import (
 from frictionlab.io.atomic import write_json_atomic, write_text_atomic
 from frictionlab.io.calibration_config import CalibrationConfig
 from frictionlab.io.config import format_toml
-from frictionlab.io.report import Report, Section
+from frictionlab.io.report import Report, Section, format_value
 from frictionlab.io.scenario import law_table
 from frictionlab.io.tables import write_csv_atomic
 
@@ -60,14 +60,18 @@ def identifiability(fit: FitResult, profiles: dict[str, Profile]) -> list[str]:
     """Sentences on which parameters the data pin down and which they do not."""
     out = []
     for a, b, c in fit.strong_correlations():
+        way = "raising" if c > 0 else "lowering"
+        rel_a = fit.relative_stderr[fit.names.index(a)]
+        rel_b = fit.relative_stderr[fit.names.index(b)]
+        still = (
+            f" Both are still determined to {rel_a:.1%} and {rel_b:.1%} by these data."
+            if max(rel_a, rel_b) <= RELATIVE_STDERR_LIMIT
+            else ""
+        )
         out.append(
             f"{a} and {b} are strongly correlated (r = {c:+.2f}): the data fix a combination "
-            f"of the two better than either one, so "
-            + (
-                "raising one can be compensated by raising the other."
-                if c > 0
-                else "raising one can be compensated by lowering the other."
-            )
+            f"of the two better than either one, so raising one can be compensated by {way} "
+            f"the other.{still}"
         )
     for j, name in enumerate(fit.names):
         rel = fit.relative_stderr[j]
@@ -218,6 +222,13 @@ def write_calibration(
         sec.parameters.append(
             (name, f"{text} (start {fit.start[j]:.4g})", parameter_unit(name, cone))
         )
+    fixed = [
+        f"{k} = {format_value(v)}"
+        for k, v in cfg.law_given.items()
+        if k not in fit.names and k != "surface"
+    ]
+    if fixed:
+        sec.notes.append("Fixed at their [law] values: " + ", ".join(fixed) + ".")
     sec.notes.append(
         f"Cost {fit.cost:.6g} (half the weighted sum of squared residuals), residual standard "
         f"deviation {np.sqrt(fit.residual_variance):.3g} in friction ratio, {fit.nfev} "
