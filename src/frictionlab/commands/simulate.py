@@ -81,3 +81,15 @@ def _report(labels: tuple[str, ...], history: object, elapsed: float) -> None:
         print(f"{i + 1:>5} {ratio[:, i].max():>15.5f} {ratio[-1, i]:>16.5f}  {label}")
     if n > 12:
         print(f"  ... {n - 12} more points in summary.json")
+    from frictionlab.driver.healing import healing_analysis
+
+    healing = healing_analysis(history)
+    if healing is None:
+        return
+    print(f"restart peaks after holds ({len(healing.records)}; all in healing.csv):")
+    print(f"{'point':>5} {'hold [s]':>10} {'before':>9} {'peak':>9} {'delta mu':>9}")
+    for r in healing.records[:12]:
+        print(f"{r.point:>5} {r.hold_time:>10.4g} {r.friction_before:>9.5f} "
+              f"{r.restart_peak:>9.5f} {r.delta_mu:>9.5f}")  # fmt: skip
+    if healing.rate_per_decade is not None:
+        print(f"healing rate d(delta mu)/d log10(t_h) = {healing.rate_per_decade:.5g} per decade")

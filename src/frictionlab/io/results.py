@@ -16,6 +16,7 @@ import numpy as np
 
 from frictionlab._version import __version__
 from frictionlab.driver import History, status_labels
+from frictionlab.driver.healing import Healing, healing_analysis
 from frictionlab.driver.spring_slider import (
     count_slip_events,
     critical_stiffness,
@@ -142,7 +143,11 @@ def _segment_summary(history: History, seg: Any) -> dict[str, Any]:
 
 
 def summarise(
-    scenario: Scenario, history: History, elapsed: float, outputs: list[str]
+    scenario: Scenario,
+    history: History,
+    elapsed: float,
+    outputs: list[str],
+    healing: Healing | None = None,
 ) -> dict[str, Any]:
     """The content of ``summary.json``."""
     labels = list(scenario.labels) + [""] * history.n_points
@@ -162,6 +167,8 @@ def summarise(
         "elapsed_seconds": round(elapsed, 3),
         "outputs": outputs,
     }
+    if healing is not None:
+        out["healing"] = healing.as_dict()
     if scenario.kind == "spring_slider" and history.n_rows > 1:
         machine = history.segments[0].resolved
         out["stick_slip"] = {
@@ -202,12 +209,56 @@ def write_results(
         f"success = {str(history.success).lower()}"
     )
     written.append(write_csv_atomic(out / "history.csv", cols, units, comment))
+    healing = healing_analysis(history) if scenario.kind == "program" else None
+    if healing is not None:
+        written.append(_write_healing(out, healing))
     if plots and history.n_rows > 1:
         written.extend(_plots(out, scenario, history))
+        if healing is not None:
+            written.append(_plot_healing(out, scenario, healing))
     names = [p.name for p in written] + ["summary.json"]
-    summary = summarise(scenario, history, elapsed, names)
+    summary = summarise(scenario, history, elapsed, names, healing)
     written.append(write_json_atomic(out / "summary.json", summary))
     return written
+
+
+def _write_healing(out: Path, healing: Healing) -> Path:
+    """healing.csv: one row per hold and point."""
+    r = healing.records
+    cols = {
+        "point": np.array([x.point for x in r]),
+        "hold_segment": np.array([x.hold_segment for x in r]),
+        "hold_time": np.array([x.hold_time for x in r]),
+        "friction_before": np.array([x.friction_before for x in r]),
+        "restart_peak": np.array([x.restart_peak for x in r]),
+        "delta_mu": np.array([x.delta_mu for x in r]),
+        "peak_time": np.array([x.peak_time for x in r]),
+    }
+    units = {"point": "-", "hold_segment": "-", "hold_time": "s", "friction_before": "-",
+             "restart_peak": "-", "delta_mu": "-", "peak_time": "s"}  # fmt: skip
+    rate = healing.rate_per_decade
+    comment = "slide-hold-slide analysis: restart peak after each hold\n" + (
+        f"healing rate d(delta_mu)/d log10(t_h) = {rate!r} per decade (least squares)"
+        if rate is not None
+        else "healing rate: needs at least two distinct hold times"
+    )
+    return write_csv_atomic(out / "healing.csv", cols, units, comment)
+
+
+def _plot_healing(out: Path, scenario: Scenario, healing: Healing) -> Path:
+    from frictionlab.plotting.law import plot_healing, save_figure
+
+    r = healing.records
+    ax = plot_healing(
+        np.array([x.hold_time for x in r]),
+        np.array([x.delta_mu for x in r]),
+        np.array([x.point for x in r]),
+        healing.rate_per_decade,
+        healing.intercept,
+        scenario.labels,
+    )
+    ax.set_title(scenario.title, fontsize=9)
+    return save_figure(ax.figure, out / "healing.png")  # type: ignore[arg-type]
 
 
 def _plots(out: Path, scenario: Scenario, history: History) -> list[Path]:

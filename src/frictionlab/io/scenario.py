@@ -63,7 +63,9 @@ __all__ = [
     "Scenario",
     "law_table",
     "load_scenario",
+    "parse_initial_table",
     "parse_law_table",
+    "parse_program_tables",
     "parse_scenario",
 ]
 
@@ -247,6 +249,36 @@ def _parse_initial(t: TomlTable) -> tuple[InitialConditions, dict[str, Any]]:
     t.finish()
     init = InitialConditions(normal_traction=fn, tangential_traction=ft, F=F)
     return init, {"normal_traction": fn, "tangential_traction": ft, "F": F}
+
+
+def parse_initial_table(
+    data: dict[str, Any], where: str = "[initial]"
+) -> tuple[InitialConditions, dict[str, Any]]:
+    """Validate an ``[initial]`` mapping -> (initial conditions, the values as given).
+
+    The public form of the scenario's ``[initial]`` parser (used by the calibration's
+    ``[data.initial]``). Errors name ``where.key``.
+    """
+    return _parse_initial(TomlTable(data, where))
+
+
+def parse_program_tables(
+    tables: Sequence[dict[str, Any]],
+    base_dir: str | os.PathLike[str] = ".",
+    where: str = "[[program]]",
+) -> Program:
+    """Validate ``[[program]]`` mappings (segments, in order) -> a :data:`Program`.
+
+    The public form of the scenario's segment parser (used by the calibration's
+    ``[[data.program]]``). Errors name ``where #i.key``; table files are read relative to
+    ``base_dir``.
+    """
+    if not tables:
+        raise InputError(f"{where} must hold at least one segment")
+    return tuple(
+        _parse_segment(TomlTable(t, f"{where} #{i + 1}"), Path(base_dir))
+        for i, t in enumerate(tables)
+    )
 
 
 @dataclass(frozen=True)

@@ -26,6 +26,7 @@ if TYPE_CHECKING:
 __all__ = [
     "new_figure",
     "plot_friction",
+    "plot_healing",
     "plot_pressure_dependence",
     "plot_ratcheting",
     "plot_restart_peaks",
@@ -266,6 +267,40 @@ def plot_restart_peaks(
     ax.set_xscale("log")
     ax.set_xlabel("hold time t_h [s]")
     ax.set_ylabel("friction ratio [-]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    return ax
+
+
+def plot_healing(
+    hold_time: np.ndarray,
+    delta_mu: np.ndarray,
+    point: np.ndarray,
+    rate: float | None,
+    intercept: float | None,
+    labels: Sequence[str] = (),
+    ax: Axes | None = None,
+) -> Axes:
+    """Restart peak minus friction before the hold against log10 hold time, with the fit line."""
+    if ax is None:
+        ax = new_figure(1, 5.5, 4.0)[1][0]
+    points = np.unique(point)
+    colors = _colors(points.size)
+    many = points.size > 1 and points.size == hold_time.size  # one hold per point
+    if many:
+        ax.plot(hold_time, delta_mu, "o", color="C3", label="restart peak - friction before")
+    else:
+        for c, p in zip(colors, points, strict=True):
+            mine = point == p
+            name = labels[p - 1] if p - 1 < len(labels) and labels[p - 1] else f"point {p}"
+            ax.plot(hold_time[mine], delta_mu[mine], "o", color=c, label=name)
+    if rate is not None and intercept is not None:
+        t = np.geomspace(hold_time[hold_time > 0].min(), hold_time.max(), 50)
+        ax.plot(t, intercept + rate * np.log10(t), "-", color="0.3", lw=1.0,
+                label=f"least squares: {rate:.4g} per decade")  # fmt: skip
+    ax.set_xscale("log")
+    ax.set_xlabel("hold time t_h [s]")
+    ax.set_ylabel("delta mu = restart peak - friction before [-]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
     return ax

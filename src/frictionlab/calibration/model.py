@@ -1,0 +1,195 @@
+"""The law seen by the calibration: measured curves, fitted parameters, the driver in the loop.
+
+A :class:`Curve` is one tribometer record (time [s], friction ratio |f_t|/f_n, optionally
+slip [m]) together with the loading programme and initial contact that produced it. The
+model value at a sample is the driver's friction ratio interpolated linearly in time
+between its recorded steps, so the data may be sampled more or less densely than the
+programme's steps.
+
+:func:`evaluate_columns` runs K parameter sets ("columns") of one curve as K contact
+points of ONE vectorised driver run: the law takes every parameter per point, so the
+K - 1 finite-difference perturbations of a Jacobian cost about one run.
+
+Pure computation: no file I/O, no printing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from frictionlab.driver import History, InitialConditions, Program, simulate
+from frictionlab.errors import ConvergenceError, ParameterError
+from frictionlab.subloading import SubloadingParams
+
+__all__ = [
+    "FITTABLE",
+    "Curve",
+    "FitSpace",
+    "evaluate_columns",
+    "model_at_samples",
+    "program_duration",
+]
+
+#: Parameters that can be fitted -> True when fitted in log space (rate constants and
+#: moduli, which span decades and must stay positive).
+FITTABLE: dict[str, bool] = {
+    "mu_s": False,
+    "mu_k": False,
+    "F_s": False,
+    "F_k": False,
+    "M": False,
+    "m": False,
+    "n": False,
+    "u": True,
+    "kappa": True,
+    "xi": True,
+    "alpha_n": True,
+    "alpha_t": True,
+}
+
+
+@dataclass(frozen=True)
+class Curve:
+    """One measured curve and the loading that produced it.
+
+    Attributes
+    ----------
+    name:
+        How the curve is named in messages and reports (e.g. the file name).
+    time:
+        (n,) sample times [s] from the start of ``program``, increasing.
+    friction_ratio:
+        (n,) measured |f_t|/f_n [-].
+    program, initial:
+        The loading programme and initial contact, as in a simulate scenario (one point).
+    weight:
+        Weight of the curve's squared residuals (default 1).
+    slip:
+        (n,) measured slip [m], or None (used for plots only).
+    """
+
+    name: str
+    time: np.ndarray
+    friction_ratio: np.ndarray
+    program: Program
+    initial: InitialConditions = field(default_factory=InitialConditions)
+    weight: float = 1.0
+    slip: np.ndarray | None = None
+
+    @property
+    def n_samples(self) -> int:
+        return int(self.time.size)
+
+
+@dataclass(frozen=True)
+class FitSpace:
+    """The fitted parameters and the space the optimiser works in.
+
+    ``theta = ln(x)`` for the parameters of :data:`FITTABLE` marked True, ``theta = x``
+    otherwise. ``lower`` and ``upper`` are the physical bounds (``upper`` may be inf).
+    """
+
+    names: tuple[str, ...]
+    lower: np.ndarray
+    upper: np.ndarray
+
+    @property
+    def log(self) -> np.ndarray:
+        return np.array([FITTABLE[n] for n in self.names], dtype=bool)
+
+    def to_theta(self, x: Any) -> np.ndarray:
+        x = np.asarray(x, dtype=np.float64)
+        with np.errstate(divide="ignore"):
+            return np.where(self.log, np.log(np.where(self.log, x, 1.0)), x)
+
+    def from_theta(self, theta: Any) -> np.ndarray:
+        theta = np.asarray(theta, dtype=np.float64)
+        with np.errstate(over="ignore"):  # a huge trial step gives inf: an invalid law
+            return np.where(self.log, np.exp(np.where(self.log, theta, 0.0)), theta)
+
+    def theta_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        return self.to_theta(self.lower), self.to_theta(self.upper)
+
+    def jacobian_factor(self, x: Any) -> np.ndarray:
+        """dx/dtheta at ``x`` (x for log parameters, 1 otherwise)."""
+        return np.where(self.log, np.asarray(x, dtype=np.float64), 1.0)
+
+
+def with_values(
+    base: SubloadingParams, names: Sequence[str], values: np.ndarray
+) -> SubloadingParams:
+    """``base`` with ``names`` set to ``values``: shape (p,) (shared) or (p, K) (per point)."""
+    return base.replace(**{name: values[j] for j, name in enumerate(names)})
+
+
+def model_at_samples(history: History, time: np.ndarray) -> np.ndarray:
+    """(K, n) friction ratio of each point of ``history`` interpolated at ``time`` [s]."""
+    ratio = history.friction_ratio
+    return np.stack(
+        [np.interp(time, history.time[:, k], ratio[:, k]) for k in range(history.n_points)]
+    )
+
+
+def evaluate_columns(
+    base: SubloadingParams,
+    names: Sequence[str],
+    columns: np.ndarray,
+    curve: Curve,
+    *,
+    accuracy: float | None = None,
+    max_halvings: int = 10,
+) -> np.ndarray:
+    """(K, n) model friction ratio at the curve's samples for K parameter sets.
+
+    ``columns`` is (p, K): column k gives the values of ``names`` for contact point k;
+    the K points run together in one driver run. Raises
+    :class:`~frictionlab.errors.ParameterError` when a column is not a valid law and
+    :class:`~frictionlab.errors.ConvergenceError` when the run fails.
+    """
+    columns = np.asarray(columns, dtype=np.float64)
+    k = columns.shape[1]
+    params = with_values(base, names, columns) if k > 1 else with_values(base, names, columns[:, 0])
+    history = simulate(
+        params,
+        curve.program,
+        curve.initial,
+        n_points=k,
+        accuracy=accuracy,
+        max_halvings=max_halvings,
+    )
+    if not history.success:
+        raise ConvergenceError(
+            f"curve '{curve.name}': the driver failed ({history.message})",
+            mask=np.ones(k, dtype=bool),
+        )
+    return model_at_samples(history, curve.time)
+
+
+def valid_column(base: SubloadingParams, names: Sequence[str], values: np.ndarray) -> bool:
+    """True when ``values`` (p,) make a valid law (physical bounds of SubloadingParams)."""
+    try:
+        with_values(base, names, values)
+    except ParameterError:
+        return False
+    return True
+
+
+def program_duration(program: Program) -> float:
+    """Total time [s] of a one-point programme (the sum of its segments' durations)."""
+    from frictionlab.driver.program import Table, plan_program
+
+    total = 0.0
+    for seg, plan in zip(program, plan_program(program, 1), strict=True):
+        resolved = plan.resolved
+        if isinstance(seg, Table):
+            total += float(seg.time[-1] - seg.time[0])
+        elif "duration" in resolved:
+            total += float(np.max(resolved["duration"]))
+        elif plan.kind == "cycle":
+            amplitude, velocity = resolved["amplitude"], resolved["velocity"]
+            total += float(np.max(4.0 * amplitude * resolved["cycles"] / velocity))
+    return total

@@ -1,0 +1,271 @@
+"""Outputs of a calibration: ``fitted.toml``, ``fit.json``, ``curves.csv``, figures, report.
+
+``fitted.toml`` is a simulate scenario (the fitted law with the first curve's initial
+contact and programme) that ``frictionlab simulate`` runs as it is; further curves get
+``fitted_2.toml``, ... ``fit.json`` holds ``parameters`` (name -> value, stderr, ...), the
+``correlation`` matrix, ``cost``, ``n_points``, the identifiability in words and the
+profiles. Every file is written atomically, ``fit.json`` last.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from frictionlab._version import __version__
+from frictionlab.calibration import (
+    CORRELATION_LIMIT,
+    RELATIVE_STDERR_LIMIT,
+    FitResult,
+    Profile,
+)
+from frictionlab.io.atomic import write_json_atomic, write_text_atomic
+from frictionlab.io.calibration_config import CalibrationConfig
+from frictionlab.io.config import format_toml
+from frictionlab.io.report import Report, Section, format_value
+from frictionlab.io.scenario import law_table
+from frictionlab.io.tables import write_csv_atomic
+
+__all__ = ["CalibrationRun", "identifiability", "parameter_unit", "write_calibration"]
+
+_CONE_UNITS = {"mu_s": "-", "mu_k": "-", "u": "1/m", "kappa": "1/m", "xi": "1/s"}
+_CLOSED_UNITS = {"F_s": "Pa", "F_k": "Pa", "M": "-", "u": "1/m", "kappa": "Pa/m", "xi": "Pa/s"}
+
+
+def parameter_unit(name: str, cone: bool) -> str:
+    """The unit of a law parameter (``-`` for dimensionless ones)."""
+    table = _CONE_UNITS if cone else _CLOSED_UNITS
+    return table.get(name, "Pa/m" if name.startswith("alpha") else "-")
+
+
+@dataclass(frozen=True)
+class CalibrationRun:
+    """What ``frictionlab calibrate`` computed: the fit, the profiles and the start's model."""
+
+    config: CalibrationConfig
+    fit: FitResult
+    start_models: tuple[np.ndarray, ...]
+    profiles: dict[str, Profile] = field(default_factory=dict)
+
+
+def _finite(v: float) -> float | None:
+    return float(v) if np.isfinite(v) else None
+
+
+def identifiability(fit: FitResult, profiles: dict[str, Profile]) -> list[str]:
+    """Sentences on which parameters the data pin down and which they do not."""
+    out = []
+    for a, b, c in fit.strong_correlations():
+        way = "raising" if c > 0 else "lowering"
+        rel_a = fit.relative_stderr[fit.names.index(a)]
+        rel_b = fit.relative_stderr[fit.names.index(b)]
+        still = (
+            f" Both are still determined to {rel_a:.1%} and {rel_b:.1%} by these data."
+            if max(rel_a, rel_b) <= RELATIVE_STDERR_LIMIT
+            else ""
+        )
+        out.append(
+            f"{a} and {b} are strongly correlated (r = {c:+.2f}): the data fix a combination "
+            f"of the two better than either one, so raising one can be compensated by {way} "
+            f"the other.{still}"
+        )
+    for j, name in enumerate(fit.names):
+        rel = fit.relative_stderr[j]
+        if not np.isfinite(fit.stderr[j]):
+            out.append(f"{name} is not determined by these data (the Jacobian has no component "
+                       "along it); fix it in [law] or add data that depend on it.")  # fmt: skip
+        elif rel > RELATIVE_STDERR_LIMIT:
+            out.append(
+                f"{name} is poorly identified: its standard error is {rel:.0%} of its value."
+            )
+        if name in profiles:
+            low, high = profiles[name].interval
+            lo = f"{low:.4g}" if low is not None else "open (below the profiled range)"
+            hi = f"{high:.4g}" if high is not None else "open (above the profiled range)"
+            out.append(f"Profile likelihood of {name}: 95 % range from {lo} to {hi} "
+                       f"(fitted {fit.values[j]:.4g}).")  # fmt: skip
+    if not out:
+        out.append(
+            f"Every fitted parameter is well identified: relative standard errors below "
+            f"{RELATIVE_STDERR_LIMIT:.0%} and correlations below {CORRELATION_LIMIT} in magnitude."
+        )
+    return out
+
+
+def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
+    """The content of ``fit.json``."""
+    fit, cfg = run.fit, run.config
+    cone = fit.params.is_cone
+    params = {}
+    for j, name in enumerate(fit.names):
+        params[name] = {
+            "value": float(fit.values[j]),
+            "stderr": _finite(fit.stderr[j]),
+            "relative_stderr": _finite(fit.relative_stderr[j]),
+            "start": float(fit.start[j]),
+            "bounds": [_finite(fit.space.lower[j]), _finite(fit.space.upper[j])],
+            "fitted_as": "ln" if fit.space.log[j] else "linear",
+            "unit": parameter_unit(name, cone),
+        }
+    corr = [[_finite(v) for v in row] for row in fit.correlation]
+    curves = []
+    for c, r, echo in zip(cfg.curves, fit.residuals, cfg.data_echo, strict=True):
+        curves.append({
+            "file": echo["file"], "samples": c.n_samples, "weight": c.weight,
+            "units": echo["units"], "rms_residual": float(np.sqrt(np.mean(r**2))),
+            "max_abs_residual": float(np.max(np.abs(r))),
+        })  # fmt: skip
+    profiles = {
+        name: {
+            "values": p.values.tolist(),
+            "delta_chi2": [_finite(v) for v in p.delta_chi2],
+            "interval_95": [p.interval[0], p.interval[1]],
+        }
+        for name, p in run.profiles.items()
+    }
+    return {
+        "frictionlab": __version__,
+        "config": cfg.source,
+        "title": cfg.title,
+        "success": fit.success,
+        "message": fit.message,
+        "parameters": params,
+        "correlation": {"names": list(fit.names), "matrix": corr},
+        "cost": fit.cost,
+        "n_points": fit.n_points,
+        "dof": fit.dof,
+        "residual_std": _finite(np.sqrt(fit.residual_variance)),
+        "poorly_identified": fit.poorly_identified(),
+        "identifiability": identifiability(fit, run.profiles),
+        "profiles": profiles,
+        "curves": curves,
+        "work": {
+            "nfev": fit.nfev,
+            "njev": fit.njev,
+            "driver_runs": fit.runs,
+            "seconds": round(fit.seconds, 3),
+        },
+        "outputs": outputs,
+    }
+
+
+def _program_tables(echo: dict[str, Any], base: Path) -> list[dict[str, Any]]:
+    """The curve's programme tables with table files made absolute (run from anywhere)."""
+    out = []
+    for seg in echo["program"]:
+        seg = dict(seg)
+        if seg.get("kind") == "table" and not Path(seg["file"]).is_absolute():
+            seg["file"] = str((base / seg["file"]).resolve())
+        out.append(seg)
+    return out
+
+
+def fitted_scenario(run: CalibrationRun, k: int, base: Path) -> str:
+    """The TOML text of the simulate scenario of curve ``k`` with the fitted law."""
+    echo = run.config.data_echo[k]
+    data = {
+        "title": f"Fitted law: {echo['file']}",
+        "description": (
+            f"The law fitted by frictionlab calibrate ({', '.join(run.fit.names)}) run "
+            f"through the loading programme of {echo['file']}."
+        ),
+        "law": law_table(run.fit.params),
+        "initial": echo["initial"],
+        "program": _program_tables(echo, base),
+    }
+    return format_toml(data)
+
+
+def _curve_columns(run: CalibrationRun) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    cols: dict[str, list[Any]] = {k: [] for k in ("curve", "time", "data", "model", "residual")}
+    for i, (c, m) in enumerate(zip(run.config.curves, run.fit.models, strict=True)):
+        cols["curve"].append(np.full(c.n_samples, i + 1))
+        cols["time"].append(c.time)
+        cols["data"].append(c.friction_ratio)
+        cols["model"].append(m)
+        cols["residual"].append(m - c.friction_ratio)
+    arrays = {k: np.concatenate(v) for k, v in cols.items()}
+    units = {"curve": "-", "time": "s", "data": "-", "model": "-", "residual": "-"}
+    return arrays, units
+
+
+def write_calibration(
+    out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path
+) -> list[Path]:
+    """Write every output into ``out_dir`` (fit.json last); returns the paths written."""
+    from frictionlab.plotting.calibration import plot_correlation, plot_curve_fit, plot_profile
+    from frictionlab.plotting.law import save_figure
+
+    out = Path(out_dir)
+    fit, cfg = run.fit, run.config
+    written: list[Path] = []
+    for k in range(len(cfg.curves)):
+        name = "fitted.toml" if k == 0 else f"fitted_{k + 1}.toml"
+        written.append(write_text_atomic(out / name, fitted_scenario(run, k, base)))
+    cols, units = _curve_columns(run)
+    comment = "frictionlab calibrate: data and fitted model per curve"
+    written.append(write_csv_atomic(out / "curves.csv", cols, units, comment))
+    report = Report(
+        cfg.title or "Calibration of the subloading-friction law",
+        f"{len(cfg.curves)} curve(s), {fit.n_points} samples; fitted "
+        f"{', '.join(fit.names)} by bounded least squares with the driver in the loop.",
+    )
+    sec = report.add_section(Section("Fitted parameters", anchor="parameters"))
+    cone = fit.params.is_cone
+    for j, name in enumerate(fit.names):
+        se = fit.stderr[j]
+        text = f"{fit.values[j]:.6g} ± {se:.3g}" if np.isfinite(se) else f"{fit.values[j]:.6g} ± ∞"
+        sec.parameters.append(
+            (name, f"{text} (start {fit.start[j]:.4g})", parameter_unit(name, cone))
+        )
+    fixed = [
+        f"{k} = {format_value(v)}"
+        for k, v in cfg.law_given.items()
+        if k not in fit.names and k != "surface"
+    ]
+    if fixed:
+        sec.notes.append("Fixed at their [law] values: " + ", ".join(fixed) + ".")
+    sec.notes.append(
+        f"Cost {fit.cost:.6g} (half the weighted sum of squared residuals), residual standard "
+        f"deviation {np.sqrt(fit.residual_variance):.3g} in friction ratio, {fit.nfev} "
+        f"evaluations, {fit.runs} driver runs, {fit.seconds:.2f} s. Optimiser: {fit.message}"
+    )
+    data_sec = report.add_section(Section("Data and model", anchor="curves"))
+    for k, (c, m) in enumerate(zip(cfg.curves, fit.models, strict=True)):
+        rel = f"curve_{k + 1}.png"
+        written.append(save_figure(plot_curve_fit(c, m, run.start_models[k]), out / rel))
+        rms = float(np.sqrt(np.mean((m - c.friction_ratio) ** 2)))
+        data_sec.add_figure(
+            rel,
+            f"{c.name}: measured friction ratio (dots), the start law (dashed) and the fitted "
+            f"law (line); residuals below (rms {rms:.3g}).",
+        )
+    unc = report.add_section(Section("Uncertainty and identifiability", anchor="uncertainty"))
+    unc.intro = (
+        "Standard errors from the linearisation at the optimum, cov = s^2 (J^T J)^-1 with the "
+        "residual variance s^2, mapped from the fitted space (ln x for u, kappa, xi, alpha) by "
+        "the delta method. They assume independent residuals of equal variance."
+    )
+    unc.notes.extend(identifiability(fit, run.profiles))
+    if len(fit.names) > 1:
+        ax = plot_correlation(fit.names, fit.correlation)
+        written.append(save_figure(ax.figure, out / "correlation.png"))  # type: ignore[arg-type]
+        unc.add_figure("correlation.png", "Correlation matrix of the fitted parameters.")
+    for name, prof in run.profiles.items():
+        j = fit.names.index(name)
+        ax = plot_profile(prof, float(fit.values[j]), float(fit.stderr[j]), bool(fit.space.log[j]))
+        rel = f"profile_{name}.png"
+        written.append(save_figure(ax.figure, out / rel))  # type: ignore[arg-type]
+        unc.add_figure(
+            rel,
+            f"Profile likelihood of {name}: delta chi^2 with every other parameter re-fitted "
+            "(dots) and the linearised parabola (dashed).",
+        )
+    written.append(report.write(out / "report.html"))
+    names = [p.name for p in written] + ["fit.json"]
+    written.append(write_json_atomic(out / "fit.json", fit_summary(run, names)))
+    return written

@@ -1,0 +1,96 @@
+"""Figures of a calibration: data vs model, residuals, correlations, profile likelihoods.
+
+Every function imports matplotlib lazily (through :func:`~frictionlab.plotting.law.new_figure`)
+and returns the Figure or Axes it drew on.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from frictionlab.plotting.law import new_figure
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from frictionlab.calibration import Curve, Profile
+
+__all__ = ["plot_correlation", "plot_curve_fit", "plot_profile"]
+
+
+def plot_curve_fit(
+    curve: Curve, model: np.ndarray, start_model: np.ndarray | None = None
+) -> Figure:
+    """Measured friction ratio (dots) and the fitted model (line) against time, residuals below."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(9.0, 5.5), layout="constrained")
+    ax, ax_r = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
+    t = curve.time
+    stride = max(1, t.size // 4000)
+    ax.plot(t[::stride], curve.friction_ratio[::stride], ".", ms=2, color="0.55", label="data")
+    if start_model is not None:
+        ax.plot(t, start_model, "--", lw=1.0, color="C1", label="start law")
+    ax.plot(t, model, "-", lw=1.3, color="C0", label="fitted law")
+    ax.set_ylabel("friction ratio |f_t|/f_n [-]")
+    ax.set_title(f"{curve.name}: {curve.n_samples} samples", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    residual = model - curve.friction_ratio
+    ax_r.plot(t[::stride], residual[::stride], ".", ms=2, color="C3")
+    ax_r.axhline(0.0, color="0.3", lw=0.8)
+    ax_r.set_xlabel("time [s]")
+    ax_r.set_ylabel("model - data [-]")
+    ax_r.grid(alpha=0.3)
+    return fig
+
+
+def plot_correlation(names: Sequence[str], correlation: np.ndarray, ax: Axes | None = None) -> Axes:
+    """The correlation matrix of the fitted parameters, values written in the cells."""
+    if ax is None:
+        ax = new_figure(1, 1.0 + 0.9 * len(names), 0.6 + 0.8 * len(names))[1][0]
+    p = len(names)
+    shown = np.nan_to_num(np.asarray(correlation, dtype=float), nan=0.0)
+    image = ax.imshow(shown, vmin=-1.0, vmax=1.0, cmap="RdBu_r")
+    ax.set_xticks(range(p), list(names), rotation=45, ha="right")
+    ax.set_yticks(range(p), list(names))
+    for a in range(p):
+        for b in range(p):
+            c = correlation[a, b]
+            text = "n/a" if not np.isfinite(c) else f"{c:.2f}"
+            ax.text(b, a, text, ha="center", va="center", fontsize=8,
+                    color="white" if np.isfinite(c) and abs(c) > 0.6 else "black")  # fmt: skip
+    ax.figure.colorbar(image, ax=ax, shrink=0.8, label="correlation")
+    return ax
+
+
+def plot_profile(
+    profile: Profile, value: float, stderr: float, log: bool, ax: Axes | None = None
+) -> Axes:
+    """delta chi^2 of the profile (dots) with the linearised parabola and the 95 % level."""
+    from frictionlab.calibration import CHI2_95
+
+    if ax is None:
+        ax = new_figure(1, 5.5, 4.0)[1][0]
+    x = profile.values
+    ax.plot(x, profile.delta_chi2, "o-", color="C0", label="profile (others re-fitted)")
+    if np.isfinite(stderr) and stderr > 0:
+        dense = np.geomspace(x.min(), x.max(), 200) if log else np.linspace(x.min(), x.max(), 200)
+        # The parabola of the linearisation lives in the fitted space (ln x for log ones).
+        z = (np.log(dense / value) / (stderr / value)) if log else (dense - value) / stderr
+        ax.plot(dense, z**2, "--", color="0.4", lw=1.0, label="linearised ((x - x_hat)/stderr)^2")
+    ax.axhline(CHI2_95, color="C3", lw=1.0, ls=":", label="95 % level (3.84)")
+    ax.axvline(value, color="0.6", lw=0.8)
+    if log:
+        ax.set_xscale("log")
+    top = max(2.0 * CHI2_95, float(np.nanmax(profile.delta_chi2)) if profile.delta_chi2.size else 0)
+    ax.set_ylim(-0.2, min(top * 1.05, 10 * CHI2_95))
+    ax.set_xlabel(profile.name)
+    ax.set_ylabel("delta chi^2 [-]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    return ax
