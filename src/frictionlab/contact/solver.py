@@ -119,7 +119,7 @@ class _Recorder:
     ) -> None:
         d, w = self.disc, self.disc.contact_weight
         f = state.traction
-        Q = -float(np.sum(w * f[:, 0]))
+        Q = 0.0 - float(np.sum(w * f[:, 0]))
         row = {
             "time": t,
             "stage": stage,
