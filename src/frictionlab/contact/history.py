@@ -83,6 +83,11 @@ class ContactHistory:
         return int(self.time.shape[0])
 
     @property
+    def width(self) -> float:
+        """Width of the block [m] (the extent of the mesh along x)."""
+        return float(np.max(self.nodes[0]) - np.min(self.nodes[0]))
+
+    @property
     def friction_ratio(self) -> np.ndarray:
         """(S,) Q/P, 0 where the normal force is zero."""
         P = self.normal_force
@@ -104,7 +109,7 @@ def slip_front(history: ContactHistory, ratio: float = 0.99) -> np.ndarray:
     neither (the full width when none is left).
     """
     sliding = ((ratio <= history.R) & (history.status == 1)) | (history.status == 2)
-    width = float(history.x[-1] + history.x[0])  # symmetric Gauss points: x0 + x_last = W
+    width = history.width
     extent = np.empty(sliding.shape[0])
     for k, row in enumerate(sliding):
         stuck = np.flatnonzero(~row)
@@ -119,7 +124,7 @@ def front_arrival(history: ContactHistory, ratio: float = 0.99) -> dict[str, flo
     fraction of the peak force, or None when the front never arrives.
     """
     extent = slip_front(history, ratio)
-    width = float(history.x[-1] + history.x[0])
+    width = history.width
     full = np.flatnonzero(extent >= width)
     if full.size == 0:
         return None
