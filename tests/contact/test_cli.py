@@ -117,3 +117,37 @@ def test_a_step_newton_cannot_solve_exits_1_and_keeps_the_rows(
     np.testing.assert_allclose(
         g["tangential_force"][rows], g["top_shear"][rows] * 0.1, rtol=1e-6, atol=1e-3
     )
+
+
+def test_a_3d_block_end_to_end_with_a_turning_traction(tmp_path: Path) -> None:
+    scenario = tmp_path / "block3d.toml"
+    scenario.write_text(
+        "[block]\nE = 3.0e9\nnu = 0.35\nwidth = 0.02\ndepth = 0.02\nheight = 0.01\n"
+        "element_size = 0.005\n"
+        "[law]\nmu_s = 0.5\nmu_k = 0.5\nalpha_n = 5e11\nalpha_t = 5e11\nu = 1e7\n"
+        "kappa = 0.0\nxi = 0.0\northotropy = [1.0, 0.6]\n"
+        "[normal]\npressure = 1e6\nsteps = 2\n"
+        '[[program]]\nkind = "slide"\nvelocity = 1e-5\ndistance = 20e-6\n'
+        "direction_deg = 45.0\nsteps = 10\n"
+    )
+    out = tmp_path / "run"
+    assert main(["contact", str(scenario), "--out", str(out), "--quiet"]) == 0
+    assert (out / "traction_path.png").is_file() and not (out / "deformed_mesh.png").exists()
+    g = read_csv(out / "global.csv")
+    assert g.units["tangential_force"] == "N" and "tangential_force_y" in g
+    rows = g["stage"] > 0
+    angle = np.degrees(np.arctan2(g["tangential_force_y"][rows], g["tangential_force"][rows]))
+    assert angle[0] > 44.0 and angle[-1] < 30.0  # turned away from the 45 deg slide
+    np.testing.assert_allclose(g["normal_force"][rows], 1e6 * 0.02 * 0.02, rtol=1e-8)
+    i = read_csv(out / "interface.csv")
+    assert {"y", "slip_y", "traction_t_y"} <= set(i)
+
+
+def test_an_oblique_slide_of_a_2d_block_is_bad_input(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    with bundled_contact_scenario("pmma_block") as path:
+        code = main(["contact", str(path), "--out", str(tmp_path / "r"), "--quiet",
+                     "--set", "program.1.direction_deg=30.0"])  # fmt: skip
+    err = capsys.readouterr().err.strip()
+    assert code == 2 and "direction_deg" in err and len(err.splitlines()) == 1, err

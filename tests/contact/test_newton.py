@@ -79,16 +79,12 @@ def test_tangent_solver_equals_a_direct_solve_of_the_assembled_tangent() -> None
     fixed[disc.dof_x[disc.top_nodes]] = True
     solver = TangentSolver(disc, fixed, params)
     n = disc.n_points
-    # a non-symmetric, partly open set of moduli, as in plastic sliding
-    moduli = np.stack(
-        [
-            rng.uniform(0.0, 5e11, n),
-            rng.uniform(-2e11, 2e11, n),
-            np.zeros(n),
-            rng.uniform(0.0, 5e11, n),
-        ]
-    )
-    moduli[:, :3] = 0.0  # three open points
+    # a non-symmetric, partly open set of moduli (n, 2, 2), as in plastic sliding
+    moduli = np.zeros((n, 2, 2))
+    moduli[:, 0, 0] = rng.uniform(0.0, 5e11, n)
+    moduli[:, 0, 1] = rng.uniform(-2e11, 2e11, n)
+    moduli[:, 1, 1] = rng.uniform(0.0, 5e11, n)
+    moduli[:3] = 0.0  # three open points
     b = rng.normal(size=int((~fixed).sum())) * 1e3
     J = (disc.stiffness + contact_stiffness(disc, moduli)).tocsc()[~fixed][:, ~fixed]
     expected = spla.spsolve(J, b)
@@ -104,7 +100,7 @@ def test_contact_stiffness_is_the_penalty_times_the_facet_mass_matrix_of_scikit_
     disc = discretise(block)
     n = disc.n_points
     alpha = 3.0e11
-    moduli = np.stack([np.full(n, alpha), np.zeros(n), np.zeros(n), np.full(n, alpha)])
+    moduli = np.broadcast_to(alpha * np.eye(2), (n, 2, 2))
     Kc = contact_stiffness(disc, moduli)
     nx, ny = block.cells
     mesh = skfem.MeshQuad.init_tensor(np.linspace(0, 0.1, nx + 1), np.linspace(0, 0.025, ny + 1))

@@ -1,8 +1,10 @@
 """The elastic block of the contact model: geometry, material and mesh density.
 
-A 2-D plane-strain, linear-elastic rectangle ``[0, width] x [0, height]`` resting on a
-rigid base along its bottom edge ``y = 0``. Sliding is along +x; the trailing edge is
-``x = 0`` and the leading edge ``x = width``. Units (SI): E [Pa], lengths [m].
+2-D (default): a plane-strain, linear-elastic rectangle ``[0, width] x [0, height]``
+resting on a rigid base along its bottom edge ``y = 0``. 3-D (``depth`` given): a box
+``[0, width] x [0, depth] x [0, height]`` of trilinear hexahedra resting on the plane
+``z = 0``. Sliding is along +x by default; the trailing edge is ``x = 0`` and the
+leading edge ``x = width``. Units (SI): E [Pa], lengths [m].
 """
 
 from __future__ import annotations
@@ -10,12 +12,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from frictionlab.errors import ParameterError
 
 __all__ = ["ELEMENTS", "Block"]
 
-#: Element families: bilinear quadrilaterals or linear triangles (scikit-fem).
-ELEMENTS: tuple[str, ...] = ("quad", "triangle")
+#: Element families: bilinear quadrilaterals or linear triangles (2-D, scikit-fem),
+#: trilinear hexahedra (3-D).
+ELEMENTS: tuple[str, ...] = ("quad", "triangle", "hex")
 
 
 @dataclass(frozen=True)
@@ -34,7 +39,10 @@ class Block:
         Target edge length of the elements [m]; the mesh has ``round(width/h)`` by
         ``round(height/h)`` cells (at least 1 each).
     element:
-        ``"quad"`` (bilinear, default) or ``"triangle"`` (linear, two per cell).
+        ``"quad"`` (bilinear, default) or ``"triangle"`` (linear, two per cell) in 2-D;
+        ``"hex"`` (trilinear) in 3-D.
+    depth:
+        Size along y [m] of a 3-D block (None, the default: a 2-D plane-strain block).
     """
 
     E: float
@@ -43,6 +51,7 @@ class Block:
     height: float
     element_size: float
     element: str = "quad"
+    depth: float | None = None
 
     def __post_init__(self) -> None:
         for name in ("E", "width", "height", "element_size"):
@@ -55,20 +64,39 @@ class Block:
         object.__setattr__(self, "nu", float(self.nu))
         if self.element not in ELEMENTS:
             raise ParameterError("element", self.element, "one of " + ", ".join(ELEMENTS))
-        nx, ny = self.cells
-        if (nx + 1) * (ny + 1) > 2_000_000:
+        if self.depth is not None:
+            if not _finite(self.depth) or self.depth <= 0:
+                raise ParameterError("depth", self.depth, "a finite depth > 0 (3-D block)")
+            object.__setattr__(self, "depth", float(self.depth))
+        if (self.element == "hex") != (self.depth is not None):
+            raise ParameterError(
+                "element",
+                self.element,
+                "'hex' for a 3-D block (depth given), else quad or triangle",
+            )
+        if int(np.prod([c + 1 for c in self.cells])) > 2_000_000:
+            shape = " x ".join(str(c) for c in self.cells)
             raise ParameterError(
                 "element_size",
                 self.element_size,
-                f"a mesh of at most 2e6 nodes (this one would have {nx} x {ny} cells)",
+                f"a mesh of at most 2e6 nodes (this one would have {shape} cells)",
             )
 
     @property
-    def cells(self) -> tuple[int, int]:
-        """Number of cells (n_x, n_y) along the width and the height."""
-        nx = max(1, round(self.width / self.element_size))
-        ny = max(1, round(self.height / self.element_size))
-        return nx, ny
+    def dim(self) -> int:
+        """2 (plane strain) or 3."""
+        return 2 if self.depth is None else 3
+
+    @property
+    def cells(self) -> tuple[int, ...]:
+        """Number of cells along the width and the height (2-D), or width, depth, height."""
+        h = self.element_size
+        sizes = (
+            (self.width, self.height)
+            if self.depth is None
+            else (self.width, self.depth, self.height)
+        )
+        return tuple(max(1, round(L / h)) for L in sizes)
 
     @property
     def lame(self) -> tuple[float, float]:

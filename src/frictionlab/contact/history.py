@@ -24,24 +24,24 @@ class ContactHistory:
     ----------
     time, stage:
         (S,) time [s] and the index of the stage (0 = normal phase).
-    top_displacement:
-        (S,) mean x displacement of the top edge [m].
-    top_shear:
-        (S,) mean shear traction applied on the top [Pa] (force control; else 0).
-    tangential_force, normal_force:
-        (S,) Q and P [N/m].
+    top_displacement, top_displacement_y:
+        (S,) mean x (and y, 3-D) displacement of the top face [m].
+    top_shear, top_shear_y:
+        (S,) mean shear traction applied on the top along x (and y) [Pa] (force control).
+    tangential_force, tangential_force_y, normal_force:
+        (S,) Q (its x and y components) and P [N/m per unit depth in 2-D, N in 3-D].
     iterations, cuts:
         (S,) Newton iterations of the step and step cuts before it converged.
     residuals:
         Relative residual norms of every iterate, one list per step.
-    x, weight:
-        (P,) positions [m] and quadrature weights [m] of the contact points.
-    slip, approach:
-        (S, P) block displacement along x relative to the base [m] and normal approach
-        ``-u_y`` [m] at the contact points.
-    plastic_slip, traction_t, traction_n, R, F, status:
-        (S, P) the law's state: accumulated plastic slip u^p [m], f_t1 [Pa] (on the
-        block, along x), f_n [Pa], the ratio R, the size F, and the status code
+    x, y, weight:
+        (P,) positions [m] (y = 0 in 2-D) and quadrature weights [m or m^2].
+    slip, slip_y, approach:
+        (S, P) block displacement along x (and y) relative to the base [m] and normal
+        approach (``-u_y`` in 2-D, ``-u_z`` in 3-D) [m] at the contact points.
+    plastic_slip, traction_t, traction_t_y, traction_n, R, F, status:
+        (S, P) the law's state: accumulated plastic slip u^p [m], the traction on the
+        block along x and y [Pa], f_n [Pa], the ratio R, the size F, and the status code
         (0 stick, 1 slip, 2 open, 3 failed).
     nodes, cells, dof_x, dof_y:
         The mesh, for pictures.
@@ -52,18 +52,24 @@ class ContactHistory:
     time: np.ndarray
     stage: np.ndarray
     top_displacement: np.ndarray
+    top_displacement_y: np.ndarray
     top_shear: np.ndarray
+    top_shear_y: np.ndarray
     tangential_force: np.ndarray
+    tangential_force_y: np.ndarray
     normal_force: np.ndarray
     iterations: np.ndarray
     cuts: np.ndarray
     residuals: list[list[float]]
     x: np.ndarray
+    y: np.ndarray
     weight: np.ndarray
     slip: np.ndarray
+    slip_y: np.ndarray
     approach: np.ndarray
     plastic_slip: np.ndarray
     traction_t: np.ndarray
+    traction_t_y: np.ndarray
     traction_n: np.ndarray
     R: np.ndarray
     F: np.ndarray
@@ -83,20 +89,30 @@ class ContactHistory:
         return int(self.time.shape[0])
 
     @property
+    def dim(self) -> int:
+        """2 (plane strain) or 3."""
+        return int(self.nodes.shape[0])
+
+    @property
     def width(self) -> float:
         """Width of the block [m] (the extent of the mesh along x)."""
         return float(np.max(self.nodes[0]) - np.min(self.nodes[0]))
 
     @property
     def friction_ratio(self) -> np.ndarray:
-        """(S,) Q/P, 0 where the normal force is zero."""
+        """(S,) Q/P, signed along x for a 2-D block, |Q|/P for a 3-D block; 0 where P = 0."""
         P = self.normal_force
-        return np.divide(self.tangential_force, P, out=np.zeros_like(P), where=P > 0)
+        Q = (
+            self.tangential_force
+            if self.dim == 2
+            else np.hypot(self.tangential_force, self.tangential_force_y)
+        )
+        return np.divide(Q, P, out=np.zeros_like(P), where=P > 0)
 
     @property
     def peak_index(self) -> int:
         """Row of the largest |Q| (the static peak of a first slide)."""
-        return int(np.argmax(np.abs(self.tangential_force)))
+        return int(np.argmax(np.hypot(self.tangential_force, self.tangential_force_y)))
 
 
 def slip_front(history: ContactHistory, ratio: float = 0.99) -> np.ndarray:
@@ -129,11 +145,12 @@ def front_arrival(history: ContactHistory, ratio: float = 0.99) -> dict[str, flo
     if full.size == 0:
         return None
     k = int(full[0])
-    peak = float(np.max(np.abs(history.tangential_force)))
+    magnitude = np.hypot(history.tangential_force, history.tangential_force_y)
+    peak = float(np.max(magnitude))
     return {
         "row": k,
         "time": float(history.time[k]),
         "top_displacement": float(history.top_displacement[k]),
         "tangential_force": float(history.tangential_force[k]),
-        "fraction_of_peak": float(abs(history.tangential_force[k]) / peak) if peak > 0 else 0.0,
+        "fraction_of_peak": float(magnitude[k] / peak) if peak > 0 else 0.0,
     }

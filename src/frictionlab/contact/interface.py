@@ -1,17 +1,21 @@
-"""The subloading-friction law at the contact points of the block's bottom edge.
+"""The subloading-friction law at the contact points of the block's bottom face.
 
 Frame and signs (spec §1, §4.1). The block is the body, the rigid base the counter
-body. The contact frame of every point is ``e_1 = +x`` (sliding direction),
-``e_2 = +z`` (out of plane) and ``n = -y`` (outward normal of the block's bottom), a
-right-handed frame. The slip of the base relative to the block is ``-u`` (the base does
-not move), so the law's increment is ``(du_t1, du_t2, du_n) = (-du_x, 0, -du_y)``
-(``du_n`` positive when the block approaches the base) and the traction on the block is
-``(f_x, f_y) = (f_t1, f_n)`` (Eq 9). The out-of-plane slip is zero, so ``f_t2`` stays 0
-for laws whose orthotropy axes are aligned with x (a rotated orthotropy would need the
-3-D block).
+body. The contact frame of every point (rows e_1, e_2, n in global x, y, z components;
+right-handed):
 
-Contact forces on the block, per unit depth: ``r_c = B^T (w f)``; their stiffness
-``-d r_c/du = B^T (w [[C_11, C_13], [C_31, C_33]]) B`` with ``C`` the law's
+* 2-D: ``e_1 = +x`` (sliding direction), ``e_2 = +z`` (out of plane), ``n = -y``;
+* 3-D: ``e_1 = +x``, ``e_2 = -y``, ``n = -z`` (so the law's orthotropy angle turns from
+  +x toward -y, about the outward normal -z).
+
+The slip of the base relative to the block is ``-u`` (the base does not move), so the
+law's increment is ``M du`` with ``M = -S Q`` (Q the frame, S = diag(1, 1, -1): the
+normal component is the approach, Eqs 2-3); in 2-D ``(du_t1, du_t2, du_n) = (-du_x, 0,
+-du_y)``. The traction on the block in global components is ``-M^T f`` (Eq 9); in 2-D
+``(f_x, f_y) = (f_t1, f_n)``. The out-of-plane slip of a 2-D block is zero.
+
+Contact forces on the block: ``r_c = sum_a B_a^T (w f_a)``; their stiffness
+``-d r_c/du = sum_ab B_a^T (w D_ab) B_b`` with ``D = M^T C M`` and ``C`` the law's
 consistent tangent d(traction)/d(slip increment) [Pa/m] (spec §4.4).
 """
 
@@ -26,21 +30,30 @@ from frictionlab.contact.mesh import Discretisation
 from frictionlab.subloading import ContactState, Status, StepResult, SubloadingParams, update
 
 __all__ = [
-    "CONTACT_FRAME",
+    "FRAMES",
     "TANGENTS",
     "InterfaceResponse",
     "contact_stiffness",
     "open_state",
     "respond",
+    "slip_map",
 ]
 
-#: Rows e_1, e_2, n of the contact frame of every point (global x, y, z components).
-CONTACT_FRAME = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+#: Rows e_1, e_2, n of the contact frame (global x, y, z components) for d = 2 and 3.
+FRAMES = {
+    2: np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]]),
+    3: np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]]),
+}
 #: Global tangents: the law's consistent tangent, or its elastic moduli C^e (Eq 16).
 TANGENTS: tuple[str, ...] = ("consistent", "elastic")
 
 
-def open_state(params: SubloadingParams, n_points: int) -> ContactState:
+def slip_map(dim: int) -> np.ndarray:
+    """``M`` (3, d): the law's slip increment from the block's displacement increment."""
+    return -(np.diag([1.0, 1.0, -1.0]) @ FRAMES[dim])[:, :dim]
+
+
+def open_state(params: SubloadingParams, n_points: int, dim: int = 2) -> ContactState:
     """The virgin interface before loading: touching, traction-free, fully recovered.
 
     ``F = F_s`` (or mu_s), ``R = 0``, zero gap: the first compression closes it.
@@ -52,7 +65,7 @@ def open_state(params: SubloadingParams, n_points: int) -> ContactState:
         R=np.zeros(n_points),
         plastic_slip=np.zeros(n_points),
         gap=np.zeros(n_points),
-        frame=np.broadcast_to(CONTACT_FRAME, (n_points, 3, 3)),
+        frame=np.broadcast_to(FRAMES[dim], (n_points, 3, 3)),
     )
 
 
@@ -61,9 +74,9 @@ class InterfaceResponse:
     """Law update at the contact points for one trial displacement increment."""
 
     result: StepResult
-    force: np.ndarray  #: (n_dofs,) contact nodal forces on the block [N/m]
-    #: (4, n_points) tangent moduli ``C_11, C_13, C_31, C_33`` [Pa/m] in (x, y) terms
-    moduli: np.ndarray
+    force: np.ndarray  #: (n_dofs,) contact nodal forces on the block [N/m or N]
+    traction: np.ndarray  #: (n_points, d) traction on the block, global components [Pa]
+    moduli: np.ndarray  #: (n_points, d, d) ``D = -d f/du`` in global components [Pa/m]
 
 
 def respond(
@@ -80,41 +93,32 @@ def respond(
     there the elastic moduli are used, the one-sided derivative that lets the first
     iteration of a loading step close the contact.
     """
-    dux = disc.interp_x @ du
-    duy = disc.interp_y @ du
-    slip = np.column_stack([-dux, np.zeros_like(dux), -duy])
-    result = update(params, state, slip, dt, raise_on_failure=False)
-    f = result.traction
+    d = disc.dim
+    M = slip_map(d)
+    dug = np.column_stack([B @ du for B in disc.interp])  # (P, d)
+    result = update(params, state, dug @ M.T, dt, raise_on_failure=False)
+    traction = -(result.traction @ M)  # (P, d) global components on the block
     w = disc.contact_weight
-    force = disc.interp_x.T @ (w * f[:, 0]) + disc.interp_y.T @ (w * f[:, 2])
+    force = sum(B.T @ (w * traction[:, a]) for a, B in enumerate(disc.interp))
     n = disc.n_points
-    alpha_t = np.broadcast_to(np.asarray(params.alpha_t, dtype=np.float64), (n,))
-    alpha_n = np.broadcast_to(np.asarray(params.alpha_n, dtype=np.float64), (n,))
-    if tangent == "elastic":
-        c11, c13, c31, c33 = alpha_t, np.zeros(n), np.zeros(n), alpha_n
-    else:
-        C = result.tangent
-        c11, c13, c31, c33 = C[:, 0, 0], C[:, 0, 2], C[:, 2, 0], C[:, 2, 2]
+    alpha_t = float(np.asarray(params.alpha_t))
+    alpha_n = float(np.asarray(params.alpha_n))
+    elastic = np.diag([alpha_t, alpha_t, alpha_n])
+    C = np.broadcast_to(elastic, (n, 3, 3)) if tangent == "elastic" else result.tangent
     is_open = result.status == Status.OPEN
     kink = is_open & (result.state.gap <= 0.0)
-    gone = is_open & ~kink
-    c11 = np.where(kink, alpha_t, np.where(gone, 0.0, c11))
-    c33 = np.where(kink, alpha_n, np.where(gone, 0.0, c33))
-    c13 = np.where(is_open, 0.0, c13)
-    c31 = np.where(is_open, 0.0, c31)
-    moduli = np.stack([c11, c13, c31, c33])
-    return InterfaceResponse(result=result, force=force, moduli=moduli)
+    C = np.where(kink[:, None, None], elastic, np.where(is_open[:, None, None], 0.0, C))
+    moduli = np.einsum("ia,pij,jb->pab", M, C, M)
+    return InterfaceResponse(
+        result=result, force=np.asarray(force), traction=traction, moduli=moduli
+    )
 
 
 def contact_stiffness(disc: Discretisation, moduli: np.ndarray) -> sp.csr_matrix:
-    """The contact stiffness ``-d r_c/du = B^T (w C) B`` (n_dofs, n_dofs) [N/m^2]."""
+    """The contact stiffness ``-d r_c/du = sum_ab B_a^T (w D_ab) B_b`` (n_dofs, n_dofs)."""
     w = disc.contact_weight
-    c11, c13, c31, c33 = moduli
-    Bx, By = disc.interp_x, disc.interp_y
-    stiffness = (
-        Bx.T @ sp.diags(w * c11) @ Bx
-        + Bx.T @ sp.diags(w * c13) @ By
-        + By.T @ sp.diags(w * c31) @ Bx
-        + By.T @ sp.diags(w * c33) @ By
-    )
-    return stiffness.tocsr()
+    out = sp.csr_matrix((disc.n_dofs, disc.n_dofs))
+    for a, Ba in enumerate(disc.interp):
+        for b, Bb in enumerate(disc.interp):
+            out = out + Ba.T @ sp.diags(w * moduli[:, a, b]) @ Bb
+    return out.tocsr()

@@ -1,11 +1,11 @@
 """Linear solves of the Newton iteration with one factorisation per run.
 
 The global tangent differs from a constant matrix only on the contact dofs:
-``J = K0 + P^T A P`` with ``K0 = K + B^T (w C^e) B`` (the elastic block on closed
-elastic contact springs: never singular, whatever the Dirichlet conditions) and
-``A = B_c^T (w (C - C^e)) B_c`` on the m contact dofs. ``K0`` is factorised once
-(SuperLU) together with its m columns ``Z = K0^{-1} P^T``; every Newton solve is then a
-back-substitution and an m x m dense solve (Woodbury identity):
+``J = K0 + P^T A P`` with ``K0 = K + sum_a B_a^T (w D^e_aa) B_a`` (the elastic block on
+closed elastic contact springs: never singular, whatever the Dirichlet conditions) and
+``A = sum_ab B_ca^T (w (D - D^e)_ab) B_cb`` on the m contact dofs. ``K0`` is factorised
+once (SuperLU) together with its m columns ``Z = K0^{-1} P^T``; every Newton solve is
+then a back-substitution and an m x m dense solve (Woodbury identity):
 ``J^{-1} b = y - Z (I + A G)^{-1} A y_c`` with ``y = K0^{-1} b`` and ``G = P Z``.
 """
 
@@ -16,6 +16,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from frictionlab.contact.interface import slip_map
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.subloading import SubloadingParams
 
@@ -29,39 +30,43 @@ class TangentSolver:
         free = ~np.asarray(fixed, dtype=bool)
         self.free = free
         w = disc.contact_weight
-        Bx = disc.interp_x.tocsc()[:, free]
-        By = disc.interp_y.tocsc()[:, free]
-        cols = np.unique(np.concatenate([Bx.nonzero()[1], By.nonzero()[1]]))
+        Bs = [B.tocsc()[:, free] for B in disc.interp]
+        cols = np.unique(np.concatenate([B.nonzero()[1] for B in Bs]))
         self.contact = cols
-        self.ix, self.vx = _rows(Bx[:, cols].tocsr())
-        self.iy, self.vy = _rows(By[:, cols].tocsr())
+        self.rows = [_rows(B[:, cols].tocsr()) for B in Bs]
         self.w = w
-        self.alpha_t = float(np.asarray(params.alpha_t))
-        self.alpha_n = float(np.asarray(params.alpha_n))
+        M = slip_map(disc.dim)
+        alpha_t = float(np.asarray(params.alpha_t))
+        alpha_n = float(np.asarray(params.alpha_n))
+        self.elastic = M.T @ np.diag([alpha_t, alpha_t, alpha_n]) @ M  # (d, d), diagonal
         K = disc.stiffness.tocsc()[free][:, free]
-        K0 = K + self.alpha_t * (Bx.T @ sp.diags(w) @ Bx) + self.alpha_n * (By.T @ sp.diags(w) @ By)
-        self.lu = spla.splu(K0.tocsc())
+        K0 = K + sum(self.elastic[a, a] * (B.T @ sp.diags(w) @ B) for a, B in enumerate(Bs))
+        self.lu = spla.splu(sp.csc_matrix(K0))
         n_free = int(free.sum())
         E = np.zeros((n_free, cols.size))
         E[cols, np.arange(cols.size)] = 1.0
         self.Z = self.lu.solve(E) if cols.size else E
         self.G = self.Z[cols, :]
 
-    def correction(self, moduli: np.ndarray) -> np.ndarray:
-        """``A`` (m, m): the contact moduli minus the elastic ones, on the contact dofs."""
-        c11, c13, c31, c33 = moduli
+    def correction(self, moduli: np.ndarray) -> sp.csr_matrix:
+        """``A`` (m, m, sparse): the contact moduli minus the elastic ones, on the contact dofs."""
         w, m = self.w, self.contact.size
-        index, values = [], []
-        for c, (ia, va), (ib, vb) in (
-            (c11 - self.alpha_t, (self.ix, self.vx), (self.ix, self.vx)),
-            (c13, (self.ix, self.vx), (self.iy, self.vy)),
-            (c31, (self.iy, self.vy), (self.ix, self.vx)),
-            (c33 - self.alpha_n, (self.iy, self.vy), (self.iy, self.vy)),
-        ):
-            index.append((ia[:, :, None] * m + ib[:, None, :]).ravel())
-            values.append(((w * c)[:, None, None] * va[:, :, None] * vb[:, None, :]).ravel())
-        flat = np.bincount(np.concatenate(index), np.concatenate(values), minlength=m * m)
-        return flat.reshape(m, m)
+        rows: list[np.ndarray] = []
+        cols: list[np.ndarray] = []
+        values: list[np.ndarray] = []
+        dim = len(self.rows)
+        for a in range(dim):
+            ia, va = self.rows[a]
+            for b in range(dim):
+                ib, vb = self.rows[b]
+                c = moduli[:, a, b] - self.elastic[a, b]
+                shape = (ia.shape[0], ia.shape[1], ib.shape[1])
+                rows.append(np.broadcast_to(ia[:, :, None], shape).ravel())
+                cols.append(np.broadcast_to(ib[:, None, :], shape).ravel())
+                values.append(((w * c)[:, None, None] * va[:, :, None] * vb[:, None, :]).ravel())
+        return sp.csr_matrix(
+            (np.concatenate(values), (np.concatenate(rows), np.concatenate(cols))), shape=(m, m)
+        )
 
     def solve(self, moduli: np.ndarray, b: np.ndarray) -> np.ndarray:
         """``delta`` with ``(K_ff + Kc_ff(moduli)) delta = b``; raises on a singular tangent."""
@@ -69,7 +74,7 @@ class TangentSolver:
         if self.contact.size == 0:
             return y
         A = self.correction(moduli)
-        M = np.eye(self.contact.size) + A @ self.G
+        M = np.eye(self.contact.size) + np.asarray(A @ self.G)
         z = sla.solve(M, A @ y[self.contact], check_finite=True)
         return y - self.Z @ z
 

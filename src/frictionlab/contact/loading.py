@@ -11,7 +11,8 @@ where it applies:
   distance unless given;
 * :class:`Hold` — keep the last tangential control value for ``duration`` [s];
 * :class:`Traction` — ramp the mean shear traction on the top edge to ``target`` [Pa]
-  over ``duration`` [s] (force control; the top edge is then free in x).
+  over ``duration`` [s] (force control; the top edge is then free in x), along x or
+  ``direction_deg``.
 
 A programme is displacement- or force-controlled as a whole (Hold fits both).
 ``steps`` is the nominal number of load steps of a segment; the solver cuts a step on
@@ -24,6 +25,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
+
+import numpy as np
 
 from frictionlab.errors import ParameterError
 
@@ -94,9 +97,11 @@ class Slide:
     distance: float | None = None
     duration: float | None = None
     steps: int = 20
+    direction_deg: float = 0.0
 
     def __post_init__(self) -> None:
         _real("velocity", self.velocity, "velocity != 0 [m/s]", self.velocity != 0)
+        _real("direction_deg", self.direction_deg, "a finite angle [deg]", True)
         if (self.distance is None) == (self.duration is None):
             raise ParameterError("slide", "distance and duration", "exactly one of the two")
         if self.distance is not None:
@@ -141,9 +146,11 @@ class Traction:
     target: float
     duration: float
     steps: int = 20
+    direction_deg: float = 0.0
 
     def __post_init__(self) -> None:
         _real("target", self.target, "a finite target [Pa]", True)
+        _real("direction_deg", self.direction_deg, "a finite angle [deg]", True)
         _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
         _steps(self.steps)
 
@@ -156,20 +163,27 @@ class Stage:
     """One segment resolved to a linear ramp of its control value over time.
 
     ``kind`` is ``"normal"`` or the segment name; ``control`` is ``"pressure"``,
-    ``"displacement"`` (normal), ``"slide"`` (top x displacement [m]) or ``"force"``
-    (mean top shear traction [Pa]); the value goes from ``start`` to ``end``.
+    ``"displacement"`` (normal: scalar values), ``"slide"`` (top displacement [m], a
+    vector (x, y)) or ``"force"`` (mean top shear traction [Pa], a vector (x, y)); the
+    value goes from ``start`` to ``end``.
     """
 
     kind: str
     control: str
-    start: float
-    end: float
+    start: np.ndarray
+    end: np.ndarray
     duration: float
     steps: int
 
-    def value(self, fraction: float) -> float:
+    def value(self, fraction: float) -> np.ndarray:
         """The control value at a fraction in [0, 1] of the stage."""
         return self.start + (self.end - self.start) * fraction
+
+
+def _unit(angle_deg: float) -> np.ndarray:
+    a = math.radians(angle_deg)
+    c, s = math.cos(a), math.sin(a)
+    return np.array([0.0 if abs(c) < 1e-15 else c, 0.0 if abs(s) < 1e-15 else s])
 
 
 def plan_stages(normal: NormalLoad, program: Sequence[Segment]) -> tuple[str, list[Stage]]:
@@ -183,38 +197,47 @@ def plan_stages(normal: NormalLoad, program: Sequence[Segment]) -> tuple[str, li
             "force: traction, hold)",
         )
     control = "force" if Traction in kinds else "slide"
-    stages = [Stage("normal", normal.control, 0.0, normal.value, normal.duration, normal.steps)]
-    value = 0.0
-    last_velocity: float | None = None
-    last_distance: float | None = None
+    zero = np.zeros(2)
+    stages = [
+        Stage(
+            "normal",
+            normal.control,
+            np.array([0.0]),
+            np.array([normal.value]),
+            normal.duration,
+            normal.steps,
+        )
+    ]
+    value = zero.copy()
+    last_step: np.ndarray | None = None  # the last slide's displacement vector
+    last_speed = 0.0
     for i, seg in enumerate(program):
         if isinstance(seg, Slide):
             speed = abs(seg.velocity)
             distance = seg.distance if seg.distance is not None else speed * seg.duration  # type: ignore[operator]
             sign = 1.0 if seg.velocity > 0 else -1.0
-            stages.append(
-                Stage("slide", control, value, value + sign * distance, distance / speed, seg.steps)
-            )
-            value += sign * distance
-            last_velocity, last_distance = seg.velocity, distance
+            step = sign * distance * _unit(seg.direction_deg)
+            stages.append(Stage("slide", control, value, value + step, distance / speed, seg.steps))
+            value = value + step
+            last_step, last_speed = step, speed
         elif isinstance(seg, Reverse):
-            if last_velocity is None or last_distance is None:
+            if last_step is None:
                 raise ParameterError(
                     f"program[{i + 1}].kind", "reverse", "a reverse after at least one slide"
                 )
-            speed = seg.velocity if seg.velocity is not None else abs(last_velocity)
-            distance = seg.distance if seg.distance is not None else last_distance
-            sign = -1.0 if last_velocity > 0 else 1.0
+            speed = seg.velocity if seg.velocity is not None else last_speed
+            length = float(np.hypot(*last_step))
+            distance = seg.distance if seg.distance is not None else length
+            step = -last_step * (distance / length)
             stages.append(
-                Stage(
-                    "reverse", control, value, value + sign * distance, distance / speed, seg.steps
-                )
+                Stage("reverse", control, value, value + step, distance / speed, seg.steps)
             )
-            value += sign * distance
-            last_velocity, last_distance = sign * speed, distance
+            value = value + step
+            last_step, last_speed = step, speed
         elif isinstance(seg, Hold):
             stages.append(Stage("hold", control, value, value, seg.duration, seg.steps))
         else:
-            stages.append(Stage("traction", control, value, seg.target, seg.duration, seg.steps))
-            value = seg.target
+            target = seg.target * _unit(seg.direction_deg)
+            stages.append(Stage("traction", control, value, target, seg.duration, seg.steps))
+            value = target
     return control, stages

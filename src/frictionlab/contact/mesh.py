@@ -1,11 +1,12 @@
 """Discretisation of the block with scikit-fem: stiffness, contact operator, loads.
 
-The contact integral ``int_bottom N^T f dx`` is evaluated at the Gauss points of the
-bottom facets (two per facet, scikit-fem ``FacetBasis``, exact for the cubic
-integrands of bilinear elements). It is stored as a sparse interpolation operator
-``B`` (values of the displacement at the contact points from the nodal vector) and the
-quadrature weights ``w`` (length per point [m], per unit depth), so that the contact
-forces are ``B^T (w f)`` and the contact stiffness ``B^T (w C) B`` with no re-assembly.
+The contact integral ``int_bottom N^T f dA`` is evaluated at the Gauss points of the
+bottom facets (two per edge in 2-D, 2 x 2 per face in 3-D; scikit-fem ``FacetBasis``).
+It is stored as sparse interpolation operators ``B_a`` (component ``a`` of the
+displacement at the contact points from the nodal vector) and the quadrature weights
+``w`` (length [m] per unit depth in 2-D, area [m^2] in 3-D), so that the contact forces
+are ``sum_a B_a^T (w f_a)`` and the contact stiffness ``sum_ab B_a^T (w D_ab) B_b`` with
+no re-assembly. The normal axis is the last one (y in 2-D, z in 3-D).
 """
 
 from __future__ import annotations
@@ -30,39 +31,45 @@ class Discretisation:
     block:
         The block it was built from.
     nodes:
-        (2, n_nodes) node coordinates [m].
+        (d, n_nodes) node coordinates [m].
     cells:
-        (k, n_cells) node indices of each cell (k = 4 quads, 3 triangles).
+        (k, n_cells) node indices of each cell (4 quads, 3 triangles, 8 hexahedra).
     stiffness:
-        (n_dofs, n_dofs) CSR linear-elastic plane-strain stiffness [N/m per m depth].
-    dof_x, dof_y:
-        (n_nodes,) global dof index of u_x and u_y of each node.
-    contact_x:
-        (n_points,) x coordinate [m] of the contact (Gauss) points, increasing.
+        (n_dofs, n_dofs) CSR linear-elastic stiffness (plane strain in 2-D).
+    dofs:
+        (d, n_nodes) global dof index of each displacement component of each node.
+    contact_xy:
+        (n_points, d - 1) in-plane coordinates [m] of the contact (Gauss) points, sorted
+        by x (then y).
     contact_weight:
-        (n_points,) quadrature weights [m] (per unit depth).
-    interp_x, interp_y:
-        (n_points, n_dofs) CSR: u_x and u_y at the contact points.
+        (n_points,) quadrature weights [m in 2-D (per unit depth), m^2 in 3-D].
+    interp:
+        d CSR matrices (n_points, n_dofs): displacement component a at the contact points.
     top_nodes:
-        Node indices on the top edge ``y = height``.
-    unit_pressure, unit_shear:
-        (n_dofs,) nodal loads of a uniform pressure of 1 Pa pushing the top down and of
-        a uniform shear traction of 1 Pa along +x on the top [N/m].
+        Node indices on the top face (the plane ``normal coordinate = height``).
+    unit_pressure:
+        (n_dofs,) nodal loads of a uniform pressure of 1 Pa pushing the top down.
+    unit_shear:
+        (d - 1, n_dofs) nodal loads of a uniform shear traction of 1 Pa on the top along
+        x (and y in 3-D).
     """
 
     block: Block
     nodes: np.ndarray
     cells: np.ndarray
     stiffness: sp.csr_matrix
-    dof_x: np.ndarray
-    dof_y: np.ndarray
-    contact_x: np.ndarray
+    dofs: np.ndarray
+    contact_xy: np.ndarray
     contact_weight: np.ndarray
-    interp_x: sp.csr_matrix
-    interp_y: sp.csr_matrix
+    interp: tuple[sp.csr_matrix, ...]
     top_nodes: np.ndarray
     unit_pressure: np.ndarray
     unit_shear: np.ndarray
+
+    @property
+    def dim(self) -> int:
+        """2 or 3."""
+        return int(self.nodes.shape[0])
 
     @property
     def n_dofs(self) -> int:
@@ -72,7 +79,32 @@ class Discretisation:
     @property
     def n_points(self) -> int:
         """Number of contact integration points."""
-        return int(self.contact_x.shape[0])
+        return int(self.contact_weight.shape[0])
+
+    @property
+    def contact_x(self) -> np.ndarray:
+        """(n_points,) x coordinates [m] of the contact points."""
+        return self.contact_xy[:, 0]
+
+    @property
+    def dof_x(self) -> np.ndarray:
+        """(n_nodes,) dof of u_x of each node."""
+        return self.dofs[0]
+
+    @property
+    def dof_y(self) -> np.ndarray:
+        """(n_nodes,) dof of u_y of each node (the normal component in 2-D)."""
+        return self.dofs[1]
+
+    @property
+    def interp_x(self) -> sp.csr_matrix:
+        """u_x at the contact points."""
+        return self.interp[0]
+
+    @property
+    def interp_y(self) -> sp.csr_matrix:
+        """u_y at the contact points (the normal component in 2-D)."""
+        return self.interp[1]
 
 
 def discretise(block: Block) -> Discretisation:
@@ -80,66 +112,78 @@ def discretise(block: Block) -> Discretisation:
     skfem = require_skfem()
     from skfem.models.elasticity import linear_elasticity
 
-    nx, ny = block.cells
-    xs = np.linspace(0.0, block.width, nx + 1)
-    ys = np.linspace(0.0, block.height, ny + 1)
+    d = block.dim
+    sizes = (
+        [block.width, block.height]
+        if block.depth is None
+        else [block.width, block.depth, block.height]
+    )
+    axes = [np.linspace(0.0, L, n + 1) for L, n in zip(sizes, block.cells, strict=True)]
     if block.element == "quad":
-        mesh = skfem.MeshQuad.init_tensor(xs, ys)
+        mesh = skfem.MeshQuad.init_tensor(*axes)
         element = skfem.ElementVector(skfem.ElementQuad1())
-    else:
-        mesh = skfem.MeshTri.init_tensor(xs, ys)
+    elif block.element == "triangle":
+        mesh = skfem.MeshTri.init_tensor(*axes)
         element = skfem.ElementVector(skfem.ElementTriP1())
+    else:
+        mesh = skfem.MeshHex.init_tensor(*axes)
+        element = skfem.ElementVector(skfem.ElementHex1())
     basis = skfem.Basis(mesh, element, intorder=2)
     lam, mu = block.lame
     stiffness = linear_elasticity(lam, mu).assemble(basis).tocsr()
 
+    normal = d - 1
     tol = 1e-9 * block.height
-    bottom = mesh.facets_satisfying(lambda x: x[1] < tol)
-    top = mesh.facets_satisfying(lambda x: x[1] > block.height - tol)
+    bottom = mesh.facets_satisfying(lambda x: x[normal] < tol)
+    top = mesh.facets_satisfying(lambda x: x[normal] > block.height - tol)
     fb = skfem.FacetBasis(mesh, element, facets=bottom, intorder=3)
-    interp_x, interp_y, xq, weight = _contact_operator(fb, basis.N)
+    interp, xy, weight = _contact_operator(fb, basis.N, d)
 
     ft = skfem.FacetBasis(mesh, element, facets=top, intorder=3)
 
     @skfem.LinearForm
     def pressure(v, w):
-        return -v[1]
+        return -v[normal]
 
-    @skfem.LinearForm
-    def shear(v, w):
-        return v[0]
+    shears = []
+    for a in range(d - 1):
 
-    top_nodes = np.flatnonzero(mesh.p[1] > block.height - tol)
+        @skfem.LinearForm
+        def shear(v, w, a=a):
+            return v[a]
+
+        shears.append(shear.assemble(ft))
+
+    top_nodes = np.flatnonzero(mesh.p[normal] > block.height - tol)
     return Discretisation(
         block=block,
         nodes=np.array(mesh.p, dtype=np.float64),
         cells=np.array(mesh.t),
         stiffness=stiffness,
-        dof_x=np.array(basis.nodal_dofs[0]),
-        dof_y=np.array(basis.nodal_dofs[1]),
-        contact_x=xq,
+        dofs=np.array(basis.nodal_dofs),
+        contact_xy=xy,
         contact_weight=weight,
-        interp_x=interp_x,
-        interp_y=interp_y,
+        interp=interp,
         top_nodes=top_nodes,
         unit_pressure=pressure.assemble(ft),
-        unit_shear=shear.assemble(ft),
+        unit_shear=np.array(shears),
     )
 
 
 def _contact_operator(
-    fb: object, n_dofs: int
-) -> tuple[sp.csr_matrix, sp.csr_matrix, np.ndarray, np.ndarray]:
-    """Interpolation matrices to the facet Gauss points, sorted by x, and their weights."""
+    fb: object, n_dofs: int, dim: int
+) -> tuple[tuple[sp.csr_matrix, ...], np.ndarray, np.ndarray]:
+    """Interpolation matrices to the facet Gauss points, sorted by (x, y), and weights."""
     dx = np.asarray(fb.dx)  # type: ignore[attr-defined]  # (n_facets, n_qp)
-    xq = _values(fb.global_coordinates())[0]  # type: ignore[attr-defined]
+    coords = _values(fb.global_coordinates())  # type: ignore[attr-defined]  # (d, nf, nq)
     n_f, n_q = dx.shape
-    order = np.argsort(xq.ravel(), kind="stable")
+    xy = coords[: dim - 1].reshape(dim - 1, -1)
+    order = np.lexsort(xy[::-1])  # by x, then y
     row_of = np.empty(n_f * n_q, dtype=np.int64)
     row_of[order] = np.arange(n_f * n_q)
     rows = row_of.reshape(n_f, n_q)
     mats = []
-    for comp in (0, 1):
+    for comp in range(dim):
         r, c, v = [], [], []
         for i, phi in enumerate(fb.basis):  # type: ignore[attr-defined]
             values = _values(phi[0])[comp]  # (n_facets, n_qp)
@@ -154,7 +198,7 @@ def _contact_operator(
                 shape=(n_f * n_q, n_dofs),
             )
         )
-    return mats[0], mats[1], xq.ravel()[order], dx.ravel()[order]
+    return tuple(mats), np.ascontiguousarray(xy[:, order].T), dx.ravel()[order]
 
 
 def _values(field: object) -> np.ndarray:

@@ -17,7 +17,7 @@ import numpy as np
 
 from frictionlab.contact.block import Block
 from frictionlab.contact.history import ContactHistory
-from frictionlab.contact.interface import TANGENTS, open_state
+from frictionlab.contact.interface import TANGENTS, open_state, slip_map
 from frictionlab.contact.linear import TangentSolver
 from frictionlab.contact.loading import NormalLoad, Segment, Stage, plan_stages
 from frictionlab.contact.mesh import Discretisation, discretise
@@ -74,43 +74,30 @@ class SolverOptions:
             raise ParameterError("tangent", self.tangent, "one of " + ", ".join(TANGENTS))
 
 
+_ROW_KEYS = (
+    "time", "stage", "top_displacement", "top_displacement_y", "top_shear", "top_shear_y",
+    "tangential_force", "tangential_force_y", "normal_force", "iterations", "cuts",
+    "residuals", "slip", "slip_y", "approach", "plastic_slip", "traction_t", "traction_t_y",
+    "traction_n", "R", "F", "status",
+)  # fmt: skip
+
+
 class _Recorder:
     def __init__(self, disc: Discretisation, state: ContactState) -> None:
         self.disc = disc
-        self.rows: dict[str, list[object]] = {
-            k: []
-            for k in (
-                "time",
-                "stage",
-                "top_displacement",
-                "top_shear",
-                "tangential_force",
-                "normal_force",
-                "iterations",
-                "cuts",
-                "residuals",
-                "slip",
-                "approach",
-                "plastic_slip",
-                "traction_t",
-                "traction_n",
-                "R",
-                "F",
-                "status",
-            )
-        }
+        self.M = slip_map(disc.dim)
+        self.rows: dict[str, list[object]] = {k: [] for k in _ROW_KEYS}
         self.peak = (-1.0, np.zeros(disc.n_dofs))
         self.last_u = np.zeros(disc.n_dofs)
-        self.add(
-            0.0, 0, np.zeros(disc.n_dofs), 0.0, state, np.zeros(disc.n_points, np.int8), 0, 0, []
-        )
+        zeros = np.zeros(disc.n_points, np.int8)
+        self.add(0.0, 0, np.zeros(disc.n_dofs), np.zeros(2), state, zeros, 0, 0, [])
 
     def add(
         self,
         t: float,
         stage: int,
         u: np.ndarray,
-        shear: float,
+        shear: np.ndarray,
         state: ContactState,
         status: np.ndarray,
         iterations: int,
@@ -118,45 +105,55 @@ class _Recorder:
         residuals: list[float],
     ) -> None:
         d, w = self.disc, self.disc.contact_weight
-        f = state.traction
-        Q = 0.0 - float(np.sum(w * f[:, 0]))
+        f = -(state.traction @ self.M)  # (P, dim) on the block, global components
+        three = d.dim == 3
+        zero = np.zeros(d.n_points)
+        Q = [0.0 - float(np.sum(w * f[:, a])) for a in range(d.dim - 1)] + [0.0]
+        top = [float(np.mean(u[d.dofs[a][d.top_nodes]])) for a in range(d.dim - 1)] + [0.0]
         row = {
             "time": t,
             "stage": stage,
-            "top_displacement": float(np.mean(u[d.dof_x[d.top_nodes]])),
-            "top_shear": shear,
-            "tangential_force": Q,
-            "normal_force": float(np.sum(w * f[:, 2])),
+            "top_displacement": top[0],
+            "top_displacement_y": top[1],
+            "top_shear": float(shear[0]),
+            "top_shear_y": float(shear[1]),
+            "tangential_force": Q[0],
+            "tangential_force_y": Q[1],
+            "normal_force": float(np.sum(w * state.traction[:, 2])),
             "iterations": iterations,
             "cuts": cuts,
             "residuals": list(residuals),
-            "slip": d.interp_x @ u,
-            "approach": -(d.interp_y @ u),
+            "slip": d.interp[0] @ u,
+            "slip_y": d.interp[1] @ u if three else zero,
+            "approach": -(d.interp[-1] @ u),
             "plastic_slip": state.plastic_slip,
             "traction_t": f[:, 0],
-            "traction_n": f[:, 2],
+            "traction_t_y": f[:, 1] if three else zero,
+            "traction_n": state.traction[:, 2],
             "R": state.R,
             "F": state.F,
             "status": np.asarray(status, dtype=np.int8),
         }
         for key, value in row.items():
             self.rows[key].append(value)
-        if abs(Q) > self.peak[0]:
-            self.peak = (abs(Q), u.copy())
+        if float(np.hypot(Q[0], Q[1])) > self.peak[0]:
+            self.peak = (float(np.hypot(Q[0], Q[1])), u.copy())
         self.last_u = u
 
     def history(self, success: bool, message: str, stages: list[Stage]) -> ContactHistory:
         d = self.disc
         arrays = {k: np.array(v) for k, v in self.rows.items() if k != "residuals"}
+        xy = d.contact_xy
         return ContactHistory(
             **arrays,
             residuals=[list(r) for r in self.rows["residuals"]],  # type: ignore[call-overload]
-            x=d.contact_x,
+            x=xy[:, 0],
+            y=xy[:, 1] if d.dim == 3 else np.zeros(d.n_points),
             weight=d.contact_weight,
             nodes=d.nodes,
             cells=d.cells,
-            dof_x=d.dof_x,
-            dof_y=d.dof_y,
+            dof_x=d.dofs[0],
+            dof_y=d.dofs[1],
             displacement={"final": self.last_u.copy(), "peak": self.peak[1]},
             success=success,
             message=message,
@@ -164,8 +161,8 @@ class _Recorder:
                 {
                     "kind": s.kind,
                     "control": s.control,
-                    "start": s.start,
-                    "end": s.end,
+                    "start": s.start.tolist(),
+                    "end": s.end.tolist(),
                     "duration": s.duration,
                     "steps": s.steps,
                 }
@@ -236,31 +233,41 @@ def _run(
         raise ParameterError("drive", drive, "'top' for a force-controlled programme")
     # the snap-back bound of the law at the nominal pressure (for a prescribed
     # displacement, alpha_n d bounds the pressure from above: the block is compliant)
-    nominal = (
+    nominal_pressure = (
         normal.value
         if normal.control == "pressure"
         else normal.value * float(np.asarray(params.alpha_n))
     )
-    check_snap_back(params, nominal)
+    check_snap_back(params, nominal_pressure)
     disc = discretisation if discretisation is not None else discretise(block)
     if disc.block != block:
         raise ParameterError("discretisation", "another block", "a mesh of this block")
 
-    top_x = disc.dof_x[disc.top_nodes]
-    top_y = disc.dof_y[disc.top_nodes]
+    dim = disc.dim
+    if dim == 2 and any(abs(s.end[1]) > 0.0 for s in stages[1:]):
+        raise ParameterError(
+            "direction_deg", "not along x", "0 or 180 for a 2-D block (it slides along x)"
+        )
+    nodes = np.arange(disc.nodes.shape[1]) if drive == "rigid" else disc.top_nodes
+    # slide_dofs[a]: the dofs moved along in-plane axis a (none under force control)
+    slide_dofs = [
+        disc.dofs[a][nodes] if control == "slide" else np.zeros(0, dtype=np.int64)
+        for a in range(dim - 1)
+    ]
+    top_normal = disc.dofs[-1][disc.top_nodes]
     fixed = np.zeros(disc.n_dofs, dtype=bool)
-    slide_dofs = (disc.dof_x if drive == "rigid" else top_x) if control == "slide" else top_x[:0]
-    fixed[slide_dofs] = True
+    for dofs in slide_dofs:
+        fixed[dofs] = True
     if normal.control == "displacement":
-        fixed[top_y] = True
+        fixed[top_normal] = True
 
     solver = TangentSolver(disc, fixed, params)
-    state = open_state(params, disc.n_points)
+    state = open_state(params, disc.n_points, dim)
     u = np.zeros(disc.n_dofs)
     rec = _Recorder(disc, state)
     total_time = sum(s.duration for s in stages)
     t = 0.0
-    pressure, shear, slide = 0.0, 0.0, 0.0
+    pressure, shear, slide = 0.0, np.zeros(2), np.zeros(2)
     for index, stage in enumerate(stages):
         nominal = 1.0 / stage.steps
         h = nominal
@@ -271,16 +278,17 @@ def _run(
             end = stage.value(done + h_try)
             p_new, s_new, x_new = pressure, shear, slide
             if stage.kind == "normal":
-                p_new = end
+                p_new = float(end[0])
             elif control == "force":
                 s_new = end
             else:
                 x_new = end
             guess = u.copy()
-            guess[slide_dofs] = x_new
+            for a, dofs in enumerate(slide_dofs):
+                guess[dofs] = x_new[a]
             if normal.control == "displacement":
-                guess[top_y] = -p_new
-            f_ext = s_new * disc.unit_shear
+                guess[top_normal] = -p_new
+            f_ext = sum(s_new[a] * disc.unit_shear[a] for a in range(dim - 1))
             if normal.control == "pressure":
                 f_ext = f_ext + p_new * disc.unit_pressure
             dt = h_try * stage.duration

@@ -27,47 +27,61 @@ __all__ = ["contact_summary", "write_contact_results"]
 def _global_columns(
     history: ContactHistory, ratio: float
 ) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    cols = {
-        "time": history.time,
-        "stage": history.stage,
-        "top_displacement": history.top_displacement,
-        "top_shear": history.top_shear,
-        "tangential_force": history.tangential_force,
-        "normal_force": history.normal_force,
-        "friction_ratio": history.friction_ratio,
-        "slip_front": slip_front(history, ratio),
-        "iterations": history.iterations,
-        "cuts": history.cuts,
-    }
+    three = history.dim == 3
+    cols: dict[str, np.ndarray] = {"time": history.time, "stage": history.stage}
+    cols["top_displacement"] = history.top_displacement
+    if three:
+        cols["top_displacement_y"] = history.top_displacement_y
+    cols["top_shear"] = history.top_shear
+    if three:
+        cols["top_shear_y"] = history.top_shear_y
+    cols["tangential_force"] = history.tangential_force
+    if three:
+        cols["tangential_force_y"] = history.tangential_force_y
+    cols["normal_force"] = history.normal_force
+    cols["friction_ratio"] = history.friction_ratio
+    cols["slip_front"] = slip_front(history, ratio)
+    cols["iterations"] = history.iterations
+    cols["cuts"] = history.cuts
+    force = "N/m" if not three else "N"
     units = {
-        "time": "s", "top_displacement": "m", "top_shear": "Pa", "tangential_force": "N/m",
-        "normal_force": "N/m", "slip_front": "m",
+        "time": "s", "top_displacement": "m", "top_displacement_y": "m", "top_shear": "Pa",
+        "top_shear_y": "Pa", "tangential_force": force, "tangential_force_y": force,
+        "normal_force": force, "slip_front": "m",
     }  # fmt: skip
-    return cols, units
+    return cols, {k: v for k, v in units.items() if k in cols}
 
 
 def _interface_columns(
     history: ContactHistory, cone: bool
 ) -> tuple[dict[str, np.ndarray], dict[str, str]]:
     S, P = history.R.shape
-    cols = {
+    three = history.dim == 3
+    cols: dict[str, np.ndarray] = {
         "row": np.repeat(np.arange(S), P),
         "time": np.repeat(history.time, P),
         "x": np.tile(history.x, S),
-        "slip": history.slip.ravel(),
-        "approach": history.approach.ravel(),
-        "plastic_slip": history.plastic_slip.ravel(),
-        "traction_t": history.traction_t.ravel(),
-        "traction_n": history.traction_n.ravel(),
-        "R": history.R.ravel(),
-        "F": history.F.ravel(),
-        "status": status_labels(history.status.ravel()),
     }
+    if three:
+        cols["y"] = np.tile(history.y, S)
+    cols["slip"] = history.slip.ravel()
+    if three:
+        cols["slip_y"] = history.slip_y.ravel()
+    cols["approach"] = history.approach.ravel()
+    cols["plastic_slip"] = history.plastic_slip.ravel()
+    cols["traction_t"] = history.traction_t.ravel()
+    if three:
+        cols["traction_t_y"] = history.traction_t_y.ravel()
+    cols["traction_n"] = history.traction_n.ravel()
+    cols["R"] = history.R.ravel()
+    cols["F"] = history.F.ravel()
+    cols["status"] = status_labels(history.status.ravel())
     units = {
-        "time": "s", "x": "m", "slip": "m", "approach": "m", "plastic_slip": "m",
-        "traction_t": "Pa", "traction_n": "Pa", "F": "1" if cone else "Pa",
+        "time": "s", "x": "m", "y": "m", "slip": "m", "slip_y": "m", "approach": "m",
+        "plastic_slip": "m", "traction_t": "Pa", "traction_t_y": "Pa", "traction_n": "Pa",
+        "F": "1" if cone else "Pa",
     }  # fmt: skip
-    return cols, units
+    return cols, {k: v for k, v in units.items() if k in cols}
 
 
 def contact_summary(
@@ -93,12 +107,13 @@ def contact_summary(
         "mesh": {
             "cells": list(scenario.block.cells),
             "element": scenario.block.element,
-            "dofs": int(2 * history.nodes.shape[1]),
+            "dofs": int(history.dim * history.nodes.shape[1]),
             "contact_points": int(history.x.shape[0]),
         },
         "results": {
             "rows": history.n_rows,
             "peak_tangential_force": float(history.tangential_force[peak]),
+            "peak_tangential_force_y": float(history.tangential_force_y[peak]),
             "peak_friction_ratio": float(history.friction_ratio[peak]),
             "peak_top_displacement": float(history.top_displacement[peak]),
             "peak_time": float(history.time[peak]),
@@ -116,7 +131,10 @@ def contact_summary(
             else 0.0,
             "final_relative_residuals": [r[-1] if r else 0.0 for r in history.residuals],
         },
-        "units": {"forces": "N/m (per unit depth of the plane-strain block)", "lengths": "m"},
+        "units": {
+            "forces": "N/m (per unit depth of the plane-strain block)" if history.dim == 2 else "N",
+            "lengths": "m",
+        },
         "provenance": {
             "frictionlab": __version__,
             "python": platform.python_version(),
@@ -162,14 +180,19 @@ def _plots(out: Path, scenario: ContactScenario, history: ContactHistory) -> lis
         plot_contact_friction,
         plot_deformed_mesh,
         plot_interface_map,
+        plot_traction_path,
     )
     from frictionlab.plotting.law import save_figure
 
-    return [
+    paths = [
         save_figure(plot_contact_friction(history, scenario.title), out / "friction.png"),
         save_figure(
             plot_interface_map(history, scenario.front_ratio, scenario.title),
             out / "interface_map.png",
         ),
-        save_figure(plot_deformed_mesh(history), out / "deformed_mesh.png"),
     ]
+    if history.dim == 2:
+        paths.append(save_figure(plot_deformed_mesh(history), out / "deformed_mesh.png"))
+    else:
+        paths.append(save_figure(plot_traction_path(history), out / "traction_path.png"))
+    return paths

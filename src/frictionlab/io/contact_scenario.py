@@ -4,7 +4,8 @@ Schema (every key with its default and unit is in docs/contact.md)::
 
     title = "..."                 # optional
     description = "..."           # optional
-    [block]                       # E [Pa], nu, width [m], height [m], element_size [m], element
+    [block]                       # E [Pa], nu, width [m], height [m], element_size [m],
+                                  # element; depth [m] for a 3-D block
     [law]                         # the subloading-friction law: the keys of `simulate`
     [normal]                      # pressure [Pa] or displacement [m]; duration [s], steps
     [[program]]                   # kind = slide | reverse | hold | traction
@@ -40,10 +41,22 @@ __all__ = ["ContactScenario", "load_contact_scenario", "parse_contact_scenario"]
 _SOLVER_DEFAULTS = {f.name: f.default for f in fields(SolverOptions)}
 _SEGMENTS: dict[str, tuple[type, dict[str, Any]]] = {
     # kind -> (class, {key: default}) ; REQUIRED marks required keys
-    "slide": (Slide, {"velocity": REQUIRED, "distance": None, "duration": None, "steps": 20}),
+    "slide": (
+        Slide,
+        {
+            "velocity": REQUIRED,
+            "distance": None,
+            "duration": None,
+            "steps": 20,
+            "direction_deg": 0.0,
+        },
+    ),
     "reverse": (Reverse, {"velocity": None, "distance": None, "steps": 20}),
     "hold": (Hold, {"duration": REQUIRED, "steps": 5}),
-    "traction": (Traction, {"target": REQUIRED, "duration": REQUIRED, "steps": 20}),
+    "traction": (
+        Traction,
+        {"target": REQUIRED, "duration": REQUIRED, "steps": 20, "direction_deg": 0.0},
+    ),
 }
 
 
@@ -87,8 +100,11 @@ def _parse_block(t: TomlTable) -> tuple[Block, dict[str, Any]]:
         "width": _number(t, "width"),
         "height": _number(t, "height"),
         "element_size": _number(t, "element_size"),
-        "element": t.get("element", str, "quad", choices=ELEMENTS),
+        "depth": _number(t, "depth", None),
     }
+    values["element"] = t.get(
+        "element", str, "quad" if values["depth"] is None else "hex", choices=ELEMENTS
+    )
     t.finish()
     return _where(t.where, lambda: Block(**values)), values
 
@@ -173,7 +189,12 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
     # the checks that need several sections, with the key to blame
     from frictionlab.contact.loading import plan_stages
 
-    control, _ = _where("[[program]]", lambda: plan_stages(normal, program))
+    control, stages = _where("[[program]]", lambda: plan_stages(normal, program))
+    if block.dim == 2 and any(abs(s.end[1]) > 0.0 for s in stages[1:]):
+        raise InputError(
+            "[[program]] direction_deg must be 0 or 180 for a 2-D block (it slides along x); "
+            "give [block].depth for a 3-D block"
+        )
     if drive == "rigid" and control != "slide":
         raise InputError("[solver].drive = 'rigid' needs a displacement-controlled programme")
     nominal = normal.value if normal.control == "pressure" else normal.value * float(params.alpha_n)
