@@ -151,3 +151,19 @@ def test_an_oblique_slide_of_a_2d_block_is_bad_input(
                      "--set", "program.1.direction_deg=30.0"])  # fmt: skip
     err = capsys.readouterr().err.strip()
     assert code == 2 and "direction_deg" in err and len(err.splitlines()) == 1, err
+
+
+def test_without_scikit_fem_the_command_says_how_to_install_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import sys
+
+    import frictionlab
+
+    monkeypatch.setitem(sys.modules, "skfem", None)  # import skfem -> ImportError
+    assert frictionlab.__version__  # the package itself does not need it
+    with bundled_contact_scenario("pmma_block") as path:
+        code = main(["contact", str(path), "--out", str(tmp_path / "r"), "--quiet"])
+    err = capsys.readouterr().err.strip()
+    assert code == 2 and "scikit-fem" in err and "pip install" in err, err
+    assert len(err.splitlines()) == 1

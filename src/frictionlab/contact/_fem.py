@@ -15,7 +15,7 @@ def require_skfem() -> ModuleType:
     """Import :mod:`skfem`, or raise one clear :class:`InputError` line when it is missing."""
     try:
         import skfem
-    except ImportError:  # pragma: no cover - the test environment has the extra
+    except ImportError:
         raise InputError(
             f"the contact model needs scikit-fem, which is not installed: {INSTALL_HINT}"
         ) from None

@@ -205,8 +205,10 @@ def run_contact(
     ContactHistory
         ``success`` False with a ``message`` when a step failed; the rows before it kept.
     """
-    from threadpoolctl import threadpool_limits
-
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover - part of the extra `fem`; only slower without
+        return _run(block, params, normal, program, options, drive, progress, discretisation)
     # The dense blocks are small (m x m, m = contact dofs): threaded BLAS only adds
     # overhead, and a lot of it on a loaded machine.
     with threadpool_limits(limits=1, user_api="blas"):
