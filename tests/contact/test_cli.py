@@ -167,3 +167,14 @@ def test_without_scikit_fem_the_command_says_how_to_install_it(
     err = capsys.readouterr().err.strip()
     assert code == 2 and "scikit-fem" in err and "pip install" in err, err
     assert len(err.splitlines()) == 1
+
+
+def test_summary_records_the_newton_residuals_of_every_step(tmp_path: Path) -> None:
+    out = tmp_path / "run"
+    with bundled_contact_scenario("pmma_block") as path:
+        assert main(["contact", str(path), "--out", str(out), "--quiet", "--no-plots", *SMALL]) == 0
+    solver = json.loads((out / "summary.json").read_text())["solver"]
+    residuals = solver["relative_residuals_per_step"]
+    assert len(residuals) == len(solver["iterations_per_step"])
+    for its, res in zip(solver["iterations_per_step"][1:], residuals[1:], strict=True):
+        assert len(res) == its + 1 and res[-1] <= 1e-10  # one per iterate, the last converged

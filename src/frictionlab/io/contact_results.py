@@ -129,7 +129,7 @@ def contact_summary(
             "mean_iterations_sliding": float(history.iterations[sliding].mean())
             if sliding.any()
             else 0.0,
-            "final_relative_residuals": [r[-1] if r else 0.0 for r in history.residuals],
+            "relative_residuals_per_step": history.residuals,
         },
         "units": {
             "forces": "N/m (per unit depth of the plane-strain block)" if history.dim == 2 else "N",
