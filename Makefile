@@ -16,6 +16,7 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 demo: $(STAMP)
+	$(BIN)/python -c "import skfem" 2>/dev/null || $(BIN)/python -m pip install --quiet -e ".[fem]"
 	$(BIN)/frictionlab demo --out $(OUT)
 
 # The whole test suite: lint, type check, then every test.

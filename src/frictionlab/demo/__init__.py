@@ -70,10 +70,11 @@ def bundled_scenario(name: str) -> Iterator[Path]:
 def default_builders() -> list[SectionBuilder]:
     """The demo's sections, in report order."""
     from frictionlab.demo.bridge import BRIDGE_SECTIONS
+    from frictionlab.demo.contact import CONTACT_SECTIONS
     from frictionlab.demo.law import LAW_SECTIONS
     from frictionlab.demo.roughness import ROUGHNESS_SECTIONS
 
-    return [*LAW_SECTIONS, *ROUGHNESS_SECTIONS, *BRIDGE_SECTIONS]
+    return [*LAW_SECTIONS, *ROUGHNESS_SECTIONS, *BRIDGE_SECTIONS, *CONTACT_SECTIONS]
 
 
 TITLE = (

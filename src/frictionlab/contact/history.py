@@ -1,0 +1,156 @@
+"""Recorded history of a contact run and the measures read from it (pure data).
+
+Per recorded (converged) step: global quantities per unit depth of the block and, per
+contact point, the interface fields. Forces are per unit depth [N/m]; the tangential
+force is the friction transmitted by the interface, positive when it opposes sliding
+along +x: ``Q = -int f_x dx``; the normal force ``P = int f_n dx``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+__all__ = ["ContactHistory", "front_arrival", "slip_front"]
+
+
+@dataclass
+class ContactHistory:
+    """Arrays over recorded steps S (rows) and contact points P (columns).
+
+    Attributes
+    ----------
+    time, stage:
+        (S,) time [s] and the index of the stage (0 = normal phase).
+    top_displacement, top_displacement_y:
+        (S,) mean x (and y, 3-D) displacement of the top face [m].
+    top_shear, top_shear_y:
+        (S,) mean shear traction applied on the top along x (and y) [Pa] (force control).
+    tangential_force, tangential_force_y, normal_force:
+        (S,) Q (its x and y components) and P [N/m per unit depth in 2-D, N in 3-D].
+    iterations, cuts:
+        (S,) Newton iterations of the step and step cuts before it converged.
+    residuals:
+        Relative residual norms of every iterate, one list per step.
+    x, y, weight:
+        (P,) positions [m] (y = 0 in 2-D) and quadrature weights [m or m^2].
+    slip, slip_y, approach:
+        (S, P) block displacement along x (and y) relative to the base [m] and normal
+        approach (``-u_y`` in 2-D, ``-u_z`` in 3-D) [m] at the contact points.
+    plastic_slip, traction_t, traction_t_y, traction_n, R, F, status:
+        (S, P) the law's state: accumulated plastic slip u^p [m], the traction on the
+        block along x and y [Pa], f_n [Pa], the ratio R, the size F, and the status code
+        (0 stick, 1 slip, 2 open, 3 failed).
+    nodes, cells, dof_x, dof_y:
+        The mesh, for pictures.
+    displacement:
+        Nodal displacement vectors kept for pictures: ``{"final": u, "peak": u}``.
+    """
+
+    time: np.ndarray
+    stage: np.ndarray
+    top_displacement: np.ndarray
+    top_displacement_y: np.ndarray
+    top_shear: np.ndarray
+    top_shear_y: np.ndarray
+    tangential_force: np.ndarray
+    tangential_force_y: np.ndarray
+    normal_force: np.ndarray
+    iterations: np.ndarray
+    cuts: np.ndarray
+    residuals: list[list[float]]
+    x: np.ndarray
+    y: np.ndarray
+    weight: np.ndarray
+    slip: np.ndarray
+    slip_y: np.ndarray
+    approach: np.ndarray
+    plastic_slip: np.ndarray
+    traction_t: np.ndarray
+    traction_t_y: np.ndarray
+    traction_n: np.ndarray
+    R: np.ndarray
+    F: np.ndarray
+    status: np.ndarray
+    nodes: np.ndarray
+    cells: np.ndarray
+    dof_x: np.ndarray
+    dof_y: np.ndarray
+    displacement: dict[str, np.ndarray] = field(default_factory=dict)
+    success: bool = True
+    message: str = "completed"
+    stages: list[dict[str, Any]] = field(default_factory=list)
+
+    @property
+    def n_rows(self) -> int:
+        """Number of recorded rows (the initial row included)."""
+        return int(self.time.shape[0])
+
+    @property
+    def dim(self) -> int:
+        """2 (plane strain) or 3."""
+        return int(self.nodes.shape[0])
+
+    @property
+    def width(self) -> float:
+        """Width of the block [m] (the extent of the mesh along x)."""
+        return float(np.max(self.nodes[0]) - np.min(self.nodes[0]))
+
+    @property
+    def friction_ratio(self) -> np.ndarray:
+        """(S,) Q/P, signed along x for a 2-D block, |Q|/P for a 3-D block; 0 where P = 0."""
+        P = self.normal_force
+        Q = (
+            self.tangential_force
+            if self.dim == 2
+            else np.hypot(self.tangential_force, self.tangential_force_y)
+        )
+        return np.divide(Q, P, out=np.zeros_like(P), where=P > 0)
+
+    @property
+    def peak_index(self) -> int:
+        """Row of the largest |Q| (the static peak of a first slide)."""
+        return int(np.argmax(np.hypot(self.tangential_force, self.tangential_force_y)))
+
+
+def slip_front(history: ContactHistory, ratio: float = 0.99) -> np.ndarray:
+    """(S,) extent [m] of the sliding zone grown from the trailing edge ``x = 0``.
+
+    A point is released when it slides in the normal sliding-yield state,
+    ``R >= ratio`` (the subloading law slides plastically at every R > 0, so the status
+    alone does not separate the precursor zone from the sub-sliding rest), or when it
+    has lifted off (open). The extent is the position of the first point that is
+    neither (the full width when none is left).
+    """
+    sliding = ((ratio <= history.R) & (history.status == 1)) | (history.status == 2)
+    width = history.width
+    extent = np.empty(sliding.shape[0])
+    for k, row in enumerate(sliding):
+        stuck = np.flatnonzero(~row)
+        extent[k] = width if stuck.size == 0 else (history.x[stuck[0]] if stuck[0] > 0 else 0.0)
+    return extent
+
+
+def front_arrival(history: ContactHistory, ratio: float = 0.99) -> dict[str, float] | None:
+    """When the sliding zone first spans the whole interface during the first slide.
+
+    Returns the row, the time, the top displacement, the tangential force there and its
+    fraction of the peak force, or None when the front never arrives.
+    """
+    extent = slip_front(history, ratio)
+    width = history.width
+    full = np.flatnonzero(extent >= width)
+    if full.size == 0:
+        return None
+    k = int(full[0])
+    magnitude = np.hypot(history.tangential_force, history.tangential_force_y)
+    peak = float(np.max(magnitude))
+    return {
+        "row": k,
+        "time": float(history.time[k]),
+        "top_displacement": float(history.top_displacement[k]),
+        "tangential_force": float(history.tangential_force[k]),
+        "fraction_of_peak": float(magnitude[k] / peak) if peak > 0 else 0.0,
+    }

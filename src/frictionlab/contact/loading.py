@@ -1,0 +1,243 @@
+"""Loading of the contact model: a normal phase, then a tangential programme.
+
+The normal load acts on the top of the block: a uniform pressure [Pa] or a prescribed
+downward displacement [m] of the top edge, ramped linearly over ``duration`` and then
+held. The tangential programme uses the segment vocabulary of ``frictionlab simulate``
+where it applies:
+
+* :class:`Slide` — move the top edge along x at ``velocity`` [m/s] (negative: -x) for a
+  ``distance`` [m] or a ``duration`` [s] (displacement control);
+* :class:`Reverse` — slide back, opposite to the last slide, with its speed and
+  distance unless given;
+* :class:`Hold` — keep the last tangential control value for ``duration`` [s];
+* :class:`Traction` — ramp the mean shear traction on the top edge to ``target`` [Pa]
+  over ``duration`` [s] (force control; the top edge is then free in x), along x or
+  ``direction_deg``.
+
+A programme is displacement- or force-controlled as a whole (Hold fits both).
+``steps`` is the nominal number of load steps of a segment; the solver cuts a step on
+non-convergence and grows it back after easy steps, never beyond the nominal size.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from frictionlab.errors import ParameterError
+
+__all__ = [
+    "Hold",
+    "NormalLoad",
+    "Reverse",
+    "Segment",
+    "Slide",
+    "Stage",
+    "Traction",
+    "plan_stages",
+]
+
+
+def _real(name: str, value: Any, rule: str, ok: bool) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        raise ParameterError(name, value, f"a finite number ({rule})")
+    if not ok:
+        raise ParameterError(name, value, rule)
+    return float(value)
+
+
+def _steps(value: Any) -> int:
+    if isinstance(value, bool) or not isinstance(value, int) or value < 1 or value > 1_000_000:
+        raise ParameterError("steps", value, "an integer 1 <= steps <= 1e6")
+    return int(value)
+
+
+@dataclass(frozen=True)
+class NormalLoad:
+    """Normal phase: ``pressure`` [Pa] or top ``displacement`` [m, downward], one of them."""
+
+    pressure: float | None = None
+    displacement: float | None = None
+    duration: float = 1.0
+    steps: int = 5
+
+    def __post_init__(self) -> None:
+        if (self.pressure is None) == (self.displacement is None):
+            raise ParameterError(
+                "normal", "both or neither", "exactly one of pressure or displacement"
+            )
+        if self.pressure is not None:
+            _real("pressure", self.pressure, "pressure > 0 [Pa]", self.pressure > 0)
+        if self.displacement is not None:
+            d = self.displacement
+            _real("displacement", d, "displacement > 0 [m] (downward)", d > 0)
+        _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
+        _steps(self.steps)
+
+    @property
+    def control(self) -> str:
+        """``"pressure"`` or ``"displacement"``."""
+        return "pressure" if self.pressure is not None else "displacement"
+
+    @property
+    def value(self) -> float:
+        """The final pressure [Pa] or displacement [m]."""
+        return float(self.pressure if self.pressure is not None else self.displacement)  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class Slide:
+    """Move the top edge at ``velocity`` [m/s] for a ``distance`` [m] or ``duration`` [s]."""
+
+    velocity: float
+    distance: float | None = None
+    duration: float | None = None
+    steps: int = 20
+    direction_deg: float = 0.0
+
+    def __post_init__(self) -> None:
+        _real("velocity", self.velocity, "velocity != 0 [m/s]", self.velocity != 0)
+        _real("direction_deg", self.direction_deg, "a finite angle [deg]", True)
+        if (self.distance is None) == (self.duration is None):
+            raise ParameterError("slide", "distance and duration", "exactly one of the two")
+        if self.distance is not None:
+            _real("distance", self.distance, "distance > 0 [m]", self.distance > 0)
+        if self.duration is not None:
+            _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
+        _steps(self.steps)
+
+
+@dataclass(frozen=True)
+class Reverse:
+    """Slide back: opposite direction, the last slide's speed and distance unless given."""
+
+    velocity: float | None = None
+    distance: float | None = None
+    steps: int = 20
+
+    def __post_init__(self) -> None:
+        if self.velocity is not None:
+            _real("velocity", self.velocity, "velocity > 0 [m/s]", self.velocity > 0)
+        if self.distance is not None:
+            _real("distance", self.distance, "distance > 0 [m]", self.distance > 0)
+        _steps(self.steps)
+
+
+@dataclass(frozen=True)
+class Hold:
+    """Keep the tangential control value for ``duration`` [s]."""
+
+    duration: float
+    steps: int = 5
+
+    def __post_init__(self) -> None:
+        _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
+        _steps(self.steps)
+
+
+@dataclass(frozen=True)
+class Traction:
+    """Ramp the mean shear traction on the top to ``target`` [Pa] over ``duration`` [s]."""
+
+    target: float
+    duration: float
+    steps: int = 20
+    direction_deg: float = 0.0
+
+    def __post_init__(self) -> None:
+        _real("target", self.target, "a finite target [Pa]", True)
+        _real("direction_deg", self.direction_deg, "a finite angle [deg]", True)
+        _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
+        _steps(self.steps)
+
+
+Segment = Slide | Reverse | Hold | Traction
+
+
+@dataclass(frozen=True)
+class Stage:
+    """One segment resolved to a linear ramp of its control value over time.
+
+    ``kind`` is ``"normal"`` or the segment name; ``control`` is ``"pressure"``,
+    ``"displacement"`` (normal: scalar values), ``"slide"`` (top displacement [m], a
+    vector (x, y)) or ``"force"`` (mean top shear traction [Pa], a vector (x, y)); the
+    value goes from ``start`` to ``end``.
+    """
+
+    kind: str
+    control: str
+    start: np.ndarray
+    end: np.ndarray
+    duration: float
+    steps: int
+
+    def value(self, fraction: float) -> np.ndarray:
+        """The control value at a fraction in [0, 1] of the stage."""
+        return self.start + (self.end - self.start) * fraction
+
+
+def _unit(angle_deg: float) -> np.ndarray:
+    a = math.radians(angle_deg)
+    c, s = math.cos(a), math.sin(a)
+    return np.array([0.0 if abs(c) < 1e-15 else c, 0.0 if abs(s) < 1e-15 else s])
+
+
+def plan_stages(normal: NormalLoad, program: Sequence[Segment]) -> tuple[str, list[Stage]]:
+    """Resolve the programme: (tangential control ``"slide"`` or ``"force"``, stages)."""
+    kinds = {type(seg) for seg in program}
+    if Traction in kinds and kinds & {Slide, Reverse}:
+        raise ParameterError(
+            "program",
+            "slide/reverse and traction segments",
+            "one kind of tangential control per run (displacement: slide, reverse, hold; "
+            "force: traction, hold)",
+        )
+    control = "force" if Traction in kinds else "slide"
+    zero = np.zeros(2)
+    stages = [
+        Stage(
+            "normal",
+            normal.control,
+            np.array([0.0]),
+            np.array([normal.value]),
+            normal.duration,
+            normal.steps,
+        )
+    ]
+    value = zero.copy()
+    last_step: np.ndarray | None = None  # the last slide's displacement vector
+    last_speed = 0.0
+    for i, seg in enumerate(program):
+        if isinstance(seg, Slide):
+            speed = abs(seg.velocity)
+            distance = seg.distance if seg.distance is not None else speed * seg.duration  # type: ignore[operator]
+            sign = 1.0 if seg.velocity > 0 else -1.0
+            step = sign * distance * _unit(seg.direction_deg)
+            stages.append(Stage("slide", control, value, value + step, distance / speed, seg.steps))
+            value = value + step
+            last_step, last_speed = step, speed
+        elif isinstance(seg, Reverse):
+            if last_step is None:
+                raise ParameterError(
+                    f"program[{i + 1}].kind", "reverse", "a reverse after at least one slide"
+                )
+            speed = seg.velocity if seg.velocity is not None else last_speed
+            length = float(np.hypot(*last_step))
+            distance = seg.distance if seg.distance is not None else length
+            step = -last_step * (distance / length)
+            stages.append(
+                Stage("reverse", control, value, value + step, distance / speed, seg.steps)
+            )
+            value = value + step
+            last_step, last_speed = step, speed
+        elif isinstance(seg, Hold):
+            stages.append(Stage("hold", control, value, value, seg.duration, seg.steps))
+        else:
+            target = seg.target * _unit(seg.direction_deg)
+            stages.append(Stage("traction", control, value, target, seg.duration, seg.steps))
+            value = target
+    return control, stages

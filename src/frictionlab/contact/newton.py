@@ -1,0 +1,101 @@
+"""Implicit Newton iteration of one load step of the contact model.
+
+Unknown: the nodal displacement ``u`` [m] at the end of the step; the law is updated
+from the converged state at the start of the step by the whole increment ``u - u_n``
+(spec §4.2), so every iterate is a fresh return map and the contact stiffness is the
+law's algorithmic consistent tangent (spec §4.4). Residual on the free dofs:
+``r = K u - f_ext - r_c(u)``; converged when ``|r| <= tolerance * scale`` with ``scale``
+the largest of |f_ext|, |r_c| and |K u| (all dofs, so reactions count).
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+
+from frictionlab.contact.interface import InterfaceResponse, respond
+from frictionlab.contact.linear import TangentSolver
+from frictionlab.contact.mesh import Discretisation
+from frictionlab.subloading import ContactState, SubloadingParams
+
+__all__ = ["NewtonOutcome", "newton_step"]
+
+
+@dataclass
+class NewtonOutcome:
+    """Result of one Newton solve."""
+
+    converged: bool
+    u: np.ndarray
+    response: InterfaceResponse | None
+    iterations: int
+    residuals: list[float] = field(default_factory=list)  #: relative residual per iterate
+    message: str = ""
+
+
+def newton_step(
+    disc: Discretisation,
+    params: SubloadingParams,
+    state: ContactState,
+    u_start: np.ndarray,
+    u_guess: np.ndarray,
+    fixed: np.ndarray,
+    f_ext: np.ndarray,
+    dt: float,
+    solver: TangentSolver,
+    *,
+    tangent: str = "consistent",
+    tolerance: float = 1e-10,
+    max_iterations: int = 25,
+) -> NewtonOutcome:
+    """Solve one step from ``u_start`` (state ``state``); ``u_guess`` carries the
+    prescribed values on the ``fixed`` dofs (boolean mask, the one ``solver`` was built
+    for) and the initial guess elsewhere.
+    """
+    u = u_guess.copy()
+    free = ~fixed
+    K = disc.stiffness
+    residuals: list[float] = []
+    response: InterfaceResponse | None = None
+    for it in range(max_iterations + 1):
+        response = respond(disc, params, state, u - u_start, dt, tangent)
+        if not response.result.success:
+            return NewtonOutcome(
+                False,
+                u,
+                response,
+                it,
+                residuals,
+                "the law's local solve failed: " + response.result.message,
+            )
+        Ku = K @ u
+        r = Ku - f_ext - response.force
+        scale = max(np.linalg.norm(f_ext), np.linalg.norm(response.force), np.linalg.norm(Ku))
+        norm = float(np.linalg.norm(r[free]))
+        rel = float(norm / scale) if scale > 0 else norm
+        if not np.isfinite(rel):
+            return NewtonOutcome(False, u, response, it, residuals, "non-finite residual")
+        residuals.append(rel)
+        if rel <= tolerance:
+            return NewtonOutcome(True, u, response, it, residuals)
+        if it == max_iterations:
+            break
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("error")
+                delta = solver.solve(response.moduli, -r[free])
+        except (sla.LinAlgError, sla.LinAlgWarning, ValueError) as exc:
+            return NewtonOutcome(False, u, response, it, residuals, f"singular tangent ({exc})")
+        u[free] += delta
+    return NewtonOutcome(
+        False,
+        u,
+        response,
+        max_iterations,
+        residuals,
+        f"no convergence in {max_iterations} iterations (relative residual "
+        f"{residuals[-1]:.2e} > {tolerance:.2e})",
+    )

@@ -1,0 +1,198 @@
+"""Outputs of ``frictionlab contact``: global.csv, interface.csv, plots, summary.json.
+
+Every file is written atomically; summary.json is written last, so its presence means
+the others are complete. A failed run writes the rows computed before the failure.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import os
+import platform
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from frictionlab._version import __version__
+from frictionlab.contact.history import ContactHistory, front_arrival, slip_front
+from frictionlab.driver.simulate import status_labels
+from frictionlab.io.atomic import write_json_atomic
+from frictionlab.io.contact_scenario import ContactScenario
+from frictionlab.io.tables import write_csv_atomic
+
+__all__ = ["contact_summary", "write_contact_results"]
+
+
+def _global_columns(
+    history: ContactHistory, ratio: float
+) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    three = history.dim == 3
+    cols: dict[str, np.ndarray] = {"time": history.time, "stage": history.stage}
+    cols["top_displacement"] = history.top_displacement
+    if three:
+        cols["top_displacement_y"] = history.top_displacement_y
+    cols["top_shear"] = history.top_shear
+    if three:
+        cols["top_shear_y"] = history.top_shear_y
+    cols["tangential_force"] = history.tangential_force
+    if three:
+        cols["tangential_force_y"] = history.tangential_force_y
+    cols["normal_force"] = history.normal_force
+    cols["friction_ratio"] = history.friction_ratio
+    cols["slip_front"] = slip_front(history, ratio)
+    cols["iterations"] = history.iterations
+    cols["cuts"] = history.cuts
+    force = "N/m" if not three else "N"
+    units = {
+        "time": "s", "top_displacement": "m", "top_displacement_y": "m", "top_shear": "Pa",
+        "top_shear_y": "Pa", "tangential_force": force, "tangential_force_y": force,
+        "normal_force": force, "slip_front": "m",
+    }  # fmt: skip
+    return cols, {k: v for k, v in units.items() if k in cols}
+
+
+def _interface_columns(
+    history: ContactHistory, cone: bool
+) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    S, P = history.R.shape
+    three = history.dim == 3
+    cols: dict[str, np.ndarray] = {
+        "row": np.repeat(np.arange(S), P),
+        "time": np.repeat(history.time, P),
+        "x": np.tile(history.x, S),
+    }
+    if three:
+        cols["y"] = np.tile(history.y, S)
+    cols["slip"] = history.slip.ravel()
+    if three:
+        cols["slip_y"] = history.slip_y.ravel()
+    cols["approach"] = history.approach.ravel()
+    cols["plastic_slip"] = history.plastic_slip.ravel()
+    cols["traction_t"] = history.traction_t.ravel()
+    if three:
+        cols["traction_t_y"] = history.traction_t_y.ravel()
+    cols["traction_n"] = history.traction_n.ravel()
+    cols["R"] = history.R.ravel()
+    cols["F"] = history.F.ravel()
+    cols["status"] = status_labels(history.status.ravel())
+    units = {
+        "time": "s", "x": "m", "y": "m", "slip": "m", "slip_y": "m", "approach": "m",
+        "plastic_slip": "m", "traction_t": "Pa", "traction_t_y": "Pa", "traction_n": "Pa",
+        "F": "1" if cone else "Pa",
+    }  # fmt: skip
+    return cols, {k: v for k, v in units.items() if k in cols}
+
+
+def contact_summary(
+    scenario: ContactScenario, history: ContactHistory, elapsed: float, files: list[str]
+) -> dict[str, Any]:
+    """The summary.json content: inputs with defaults, results, solver work, provenance."""
+    import scipy
+
+    try:
+        import skfem
+
+        skfem_version = str(skfem.__version__)
+    except ImportError:  # pragma: no cover
+        skfem_version = "missing"
+    peak = history.peak_index
+    sliding = history.stage > 0
+    steps = history.iterations[1:]
+    return {
+        "inputs": scenario.inputs,
+        "source": scenario.source,
+        "success": history.success,
+        "message": history.message,
+        "mesh": {
+            "cells": list(scenario.block.cells),
+            "element": scenario.block.element,
+            "dofs": int(history.dim * history.nodes.shape[1]),
+            "contact_points": int(history.x.shape[0]),
+        },
+        "results": {
+            "rows": history.n_rows,
+            "peak_tangential_force": float(history.tangential_force[peak]),
+            "peak_tangential_force_y": float(history.tangential_force_y[peak]),
+            "peak_friction_ratio": float(history.friction_ratio[peak]),
+            "peak_top_displacement": float(history.top_displacement[peak]),
+            "peak_time": float(history.time[peak]),
+            "final_friction_ratio": float(history.friction_ratio[-1]),
+            "front_arrival": front_arrival(history, scenario.front_ratio),
+        },
+        "solver": {
+            "steps": int(steps.size),
+            "iterations_per_step": history.iterations.tolist(),
+            "cuts_per_step": history.cuts.tolist(),
+            "total_iterations": int(steps.sum()),
+            "max_iterations_in_a_step": int(steps.max(initial=0)),
+            "mean_iterations_sliding": float(history.iterations[sliding].mean())
+            if sliding.any()
+            else 0.0,
+            "relative_residuals_per_step": history.residuals,
+        },
+        "units": {
+            "forces": "N/m (per unit depth of the plane-strain block)" if history.dim == 2 else "N",
+            "lengths": "m",
+        },
+        "provenance": {
+            "frictionlab": __version__,
+            "python": platform.python_version(),
+            "numpy": np.__version__,
+            "scipy": scipy.__version__,
+            "scikit-fem": skfem_version,
+            "created_utc": _dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
+            "wall_time_s": elapsed,
+        },
+        "files": files,
+    }
+
+
+def write_contact_results(
+    out_dir: str | os.PathLike[str],
+    scenario: ContactScenario,
+    history: ContactHistory,
+    elapsed: float,
+    plots: bool = True,
+) -> list[Path]:
+    """Write the CSV tables, the plots and summary.json (last); return the paths."""
+    out = Path(out_dir)
+    cone = scenario.params.is_cone
+    head = (
+        f"frictionlab {__version__} contact run of '{scenario.title or scenario.source}'\n"
+        f"forces per unit depth; success = {str(history.success).lower()}"
+    )
+    written = []
+    cols, units = _global_columns(history, scenario.front_ratio)
+    written.append(write_csv_atomic(out / "global.csv", cols, units, head))
+    cols, units = _interface_columns(history, cone)
+    written.append(write_csv_atomic(out / "interface.csv", cols, units, head))
+    if plots and history.n_rows > 1:
+        written.extend(_plots(out, scenario, history))
+    names = [p.name for p in written] + ["summary.json"]
+    summary = contact_summary(scenario, history, elapsed, names)
+    written.append(write_json_atomic(out / "summary.json", summary))
+    return written
+
+
+def _plots(out: Path, scenario: ContactScenario, history: ContactHistory) -> list[Path]:
+    from frictionlab.plotting.contact import (
+        plot_contact_friction,
+        plot_deformed_mesh,
+        plot_interface_map,
+        plot_traction_path,
+    )
+    from frictionlab.plotting.law import save_figure
+
+    paths = [
+        save_figure(plot_contact_friction(history, scenario.title), out / "friction.png"),
+        save_figure(
+            plot_interface_map(history, scenario.front_ratio, scenario.title),
+            out / "interface_map.png",
+        ),
+    ]
+    if history.dim == 2:
+        paths.append(save_figure(plot_deformed_mesh(history), out / "deformed_mesh.png"))
+    else:
+        paths.append(save_figure(plot_traction_path(history), out / "traction_path.png"))
+    return paths
