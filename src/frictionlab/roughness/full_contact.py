@@ -75,7 +75,7 @@ class FullContactSums:
 
 @numba.njit(cache=True, parallel=True)
 def _sums_nb(
-    mu0: float,
+    mu0: np.ndarray,
     g1x: np.ndarray,
     g1y: np.ndarray,
     g2x: np.ndarray,
@@ -103,8 +103,8 @@ def _sums_nb(
             bx = g2x[p]
             by = g2y[p]
             for d in range(nd):
-                hx1, hy1, den1 = _h_one(mu0, ax, ay, cb[d], sb[d])
-                hx2, hy2, den2 = _h_one(mu0, bx, by, cb[d], sb[d])
+                hx1, hy1, den1 = _h_one(mu0[d], ax, ay, cb[d], sb[d])
+                hx2, hy2, den2 = _h_one(mu0[d], bx, by, cb[d], sb[d])
                 ok1 = den1 > 0.0
                 ok2 = den2 > 0.0
                 if ok1 or not drop:
@@ -124,7 +124,7 @@ def _sums_nb(
 
 
 def _sums_np(
-    mu0: float,
+    mu0: np.ndarray,
     g1x: np.ndarray,
     g1y: np.ndarray,
     g2x: np.ndarray,
@@ -141,8 +141,9 @@ def _sums_np(
     worst = np.zeros((1, nd))
     where = np.zeros((1, nd), dtype=np.int64)
     for d in range(nd):
-        h1x, h1y, den1 = multipliers_np(mu0, g1x, g1y, float(cb[d]), float(sb[d]))
-        h2x, h2y, den2 = multipliers_np(mu0, g2x, g2y, float(cb[d]), float(sb[d]))
+        m = float(mu0[d])
+        h1x, h1y, den1 = multipliers_np(m, g1x, g1y, float(cb[d]), float(sb[d]))
+        h2x, h2y, den2 = multipliers_np(m, g2x, g2y, float(cb[d]), float(sb[d]))
         sx[0, d] = h1x.sum() + h2x.sum()  # invalid contacts have H = 0 here
         sy[0, d] = h1y.sum() + h2y.sum()
         bad[0, d] = np.count_nonzero(den1 <= 0.0) + np.count_nonzero(den2 <= 0.0)
@@ -153,7 +154,7 @@ def _sums_np(
 
 
 def full_contact_sums(
-    mu0: float,
+    mu0: float | np.ndarray,
     g1: tuple[np.ndarray, np.ndarray],
     g2: tuple[np.ndarray, np.ndarray],
     cos_beta: np.ndarray,
@@ -164,7 +165,9 @@ def full_contact_sums(
 ) -> FullContactSums:
     """Sums of the multipliers over both surfaces for every direction in one pass.
 
-    ``g1``, ``g2``: gradients (dimensionless) of surfaces 1 and 2 at the N stations
+    ``mu0``: the local coefficient, one value or one per direction (hierarchies pass
+    each direction's coefficient of the level below, spec Eq 29). ``g1``, ``g2``:
+    gradients (dimensionless) of surfaces 1 and 2 at the N stations
     (flat arrays of equal size); ``cos_beta``, ``sin_beta``: the sliding directions.
     ``drop``: leave contacts violating Eq 1 out of the sums and the count.
     """
@@ -172,11 +175,12 @@ def full_contact_sums(
     cb = np.ascontiguousarray(cos_beta, dtype=np.float64).ravel()
     sb = np.ascontiguousarray(sin_beta, dtype=np.float64).ravel()
     n = g1x.size
+    m0 = np.ascontiguousarray(np.broadcast_to(np.asarray(mu0, dtype=np.float64), cb.shape))
     if engine == "numba":
         chunks = max(1, min(n, 8 * numba.get_num_threads()))
-        sx, sy, bad, worst, where = _sums_nb(float(mu0), g1x, g1y, g2x, g2y, cb, sb, drop, chunks)
+        sx, sy, bad, worst, where = _sums_nb(m0, g1x, g1y, g2x, g2y, cb, sb, drop, chunks)
     else:
-        sx, sy, bad, worst, where = _sums_np(float(mu0), g1x, g1y, g2x, g2y, cb, sb, drop)
+        sx, sy, bad, worst, where = _sums_np(m0, g1x, g1y, g2x, g2y, cb, sb, drop)
     # The worst contact over chunks (the first chunk wins a tie).
     best_chunk = np.argmin(worst, axis=0)
     cols = np.arange(cb.size)
