@@ -67,5 +67,4 @@ def multiscale_figure(result: MultiscaleResult, title: str | None = None) -> Fig
     plot_multiscale_anisotropy(result, ax=fig.add_subplot(1, 2, 2))
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
     return fig

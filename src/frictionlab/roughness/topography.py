@@ -188,6 +188,14 @@ def prepare_topography(
                 window if window is not None else list(crop or ()),
                 "none with periodicity = 'require' (it breaks periodicity)",
             )
+    raw_sizes = [float(v) for v in np.ravel(topography.physical_sizes)]
+    if len(raw_sizes) != topography.dim or not all(v > 0 and math.isfinite(v) for v in raw_sizes):
+        grid = "x".join(str(int(v)) for v in np.ravel(topography.nb_grid_pts))
+        raise ParameterError(
+            "physical_sizes",
+            raw_sizes,
+            f"{topography.dim} sizes > 0 (one per axis of the {grid} data, in `unit`)",
+        )
     if topography.unit is None:
         raise ParameterError("unit", None, "a length unit for the file (e.g. unit = 'um')")
     try:
