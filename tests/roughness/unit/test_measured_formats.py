@@ -128,3 +128,16 @@ def test_bad_values_name_their_key(tmp_path, kwargs, key) -> None:
     np.save(path, ridges_um())
     with pytest.raises((ParameterError, InputError), match=rf"^{key} = "):
         read_prepared(path, periodicity="assume", detrend="none", **kwargs)
+
+
+def test_shipped_demo_file_is_what_the_script_writes(tmp_path) -> None:
+    from frictionlab.demo.topography_file import ground_demo_path, write_ground_demo
+
+    shipped = ground_demo_path()
+    assert shipped.is_file() and shipped.stat().st_size < 200_000
+    fresh = write_ground_demo(tmp_path / "again.x3p")
+    a = read_prepared(shipped, periodicity="assume", detrend="none").surface
+    b = read_prepared(fresh, periodicity="assume", detrend="none").surface
+    assert a.heights.shape == (128, 128)
+    np.testing.assert_allclose(a.heights, b.heights, rtol=0, atol=1e-15)
+    assert a.physical_sizes == pytest.approx((5e-4, 5e-4), rel=1e-12)
