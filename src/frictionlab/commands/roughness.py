@@ -24,11 +24,23 @@ Optional tables of the scenario add (see :mod:`frictionlab.io.roughness_scenario
   as empty fields with ``valid = false``) and ``hierarchy.png``;
 * ``[hierarchy]`` with ``[wear]``: also ``hierarchy_wear.csv`` (B_i and mu_i of every
   level over the whole life) and ``hierarchy_wear.png``.
+* ``[multiscale]``: ``multiscale.csv`` (mu(beta) against the shortest wavelength
+  retained: ``cutoff_m, beta_deg, mu, mu_over_mu0, valid``) and ``multiscale.png``.
+
+``--quiet`` hides the progress bar (one step per direction), warnings and the summary
+line; ``--no-plots`` skips every PNG. With ``[sliding] on_invalid = "mask"`` contacts
+violating Eq 1 are dropped and ``polar.csv`` gains ``invalid_fraction``. summary.json
+records the provenance of each surface (file name, sha256, preparation, rms height and
+slope after filtering; Hurst exponent and seed of generated ones), every direction
+computed, the invalid fraction per direction and the warnings (e.g. the edge step of
+``periodicity = "assume"``, also printed on stderr).
 
 Bad input (unknown kind, missing key, angle outside (0, 90), unreadable file, NaN
 heights, mu0 <= 0 or beyond the validity bound of Eq 1, a negative wear coefficient, a
 zero hardness, levels that are not strictly nested, an empty load sweep) ends with one
-line on stderr and exit code 2; nothing is written.
+line on stderr and exit code 2; nothing is written. A validity failure comes within
+seconds (full contact checks all directions in one pass, partial contact stops at the
+first offending sample) and says where, how much, and what to do.
 """
 
 from __future__ import annotations

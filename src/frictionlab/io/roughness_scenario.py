@@ -58,6 +58,10 @@ Layout (every unknown key is an error; lengths in m, angles in degrees)::
     on_invalid = "raise"           # or "mask"
     samples_per_level = 11         # hierarchy with [wear]: times per level window
     beta_deg = [0.0, 45.0, 90.0]   # default: [sliding].beta_deg
+    [multiscale]                   # optional: scale-resolved friction (sampled surfaces)
+    cutoffs = [1.0e-4, 3.0e-5]     # band edges, wavelengths in m (any order, distinct)
+    mu_passed = "magnitude"        # or "projection"
+    beta_deg = [0.0, 45.0, 90.0]   # default: [sliding].beta_deg
 
 Surface kinds and their keys:
 

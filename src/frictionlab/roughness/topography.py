@@ -437,6 +437,8 @@ def read_prepared(
         raise InputError(f"cannot read surface file '{name}': no such file") from None
     except OSError as exc:
         raise InputError(f"cannot read surface file '{name}': {_describe(exc)}") from None
+    if os.path.getsize(name) == 0:
+        raise InputError(f"cannot read surface file '{name}': the file is empty")
     if unit is not None:
         try:
             _unit_factor(unit)
