@@ -84,8 +84,12 @@ def _sums_nb(
     sb: np.ndarray,
     drop: bool,
     n_chunks: int,
+    two: bool,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Per-chunk sums (chunks x directions); chunks run in parallel (prange)."""
+    """Per-chunk sums (chunks x directions); chunks run in parallel (prange).
+
+    ``two=False``: only surface 1 is summed (the caller adds a flat surface 2 itself).
+    """
     n = g1x.size
     nd = cb.size
     sx = np.zeros((n_chunks, nd))
@@ -104,19 +108,22 @@ def _sums_nb(
             by = g2y[p]
             for d in range(nd):
                 hx1, hy1, den1 = _h_one(mu0[d], ax, ay, cb[d], sb[d])
-                hx2, hy2, den2 = _h_one(mu0[d], bx, by, cb[d], sb[d])
                 ok1 = den1 > 0.0
-                ok2 = den2 > 0.0
                 if ok1 or not drop:
                     sx[c, d] += hx1 if ok1 else 0.0
                     sy[c, d] += hy1 if ok1 else 0.0
-                if ok2 or not drop:
-                    sx[c, d] += hx2 if ok2 else 0.0
-                    sy[c, d] += hy2 if ok2 else 0.0
-                bad[c, d] += (not ok1) + (not ok2)
+                bad[c, d] += not ok1
                 if den1 < worst[c, d]:
                     worst[c, d] = den1
                     where[c, d] = 2 * p
+                if not two:
+                    continue
+                hx2, hy2, den2 = _h_one(mu0[d], bx, by, cb[d], sb[d])
+                ok2 = den2 > 0.0
+                if ok2 or not drop:
+                    sx[c, d] += hx2 if ok2 else 0.0
+                    sy[c, d] += hy2 if ok2 else 0.0
+                bad[c, d] += not ok2
                 if den2 < worst[c, d]:
                     worst[c, d] = den2
                     where[c, d] = 2 * p + 1
@@ -178,7 +185,19 @@ def full_contact_sums(
     m0 = np.ascontiguousarray(np.broadcast_to(np.asarray(mu0, dtype=np.float64), cb.shape))
     if engine == "numba":
         chunks = max(1, min(n, 8 * numba.get_num_threads()))
-        sx, sy, bad, worst, where = _sums_nb(m0, g1x, g1y, g2x, g2y, cb, sb, drop, chunks)
+        flat1 = not (g1x.any() or g1y.any())
+        flat2 = not (g2x.any() or g2y.any())
+        if flat1 != flat2:
+            # A flat counter-face: H = mu0 (cos b, sin b) at each of its n contacts, which
+            # are all valid (Eq 1's denominator is 1); only the rough surface is summed.
+            rx, ry = (g2x, g2y) if flat1 else (g1x, g1y)
+            sx, sy, bad, worst, where = _sums_nb(m0, rx, ry, rx, ry, cb, sb, drop, chunks, False)
+            sx[0] += n * m0 * cb
+            sy[0] += n * m0 * sb
+            if flat1:
+                where = where + 1  # the rough surface is surface 2: code 2 p + 1
+        else:
+            sx, sy, bad, worst, where = _sums_nb(m0, g1x, g1y, g2x, g2y, cb, sb, drop, chunks, True)
     else:
         sx, sy, bad, worst, where = _sums_np(m0, g1x, g1y, g2x, g2y, cb, sb, drop)
     # The worst contact over chunks (the first chunk wins a tie).

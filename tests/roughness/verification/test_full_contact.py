@@ -143,3 +143,23 @@ def test_flat_counter_face_is_travel_invariant() -> None:
     exact = friction_polar(lower, gen.flat(), 0.3, [0.0, 45.0], snap_time_samples=False, **kw)
     assert list(snapped.time_samples) == [64, 64]
     np.testing.assert_allclose(snapped.mu, exact.mu, rtol=1e-12)
+
+
+@pytest.mark.parametrize("pair", ["rough/flat", "flat/rough", "rough/rough"])
+def test_flat_counter_face_shortcut_matches_the_numpy_twin(pair) -> None:
+    rough = gen.sinusoid(0.3, [1.0, 2.0])
+    lower, upper = {
+        "rough/flat": (rough, gen.flat()),
+        "flat/rough": (gen.flat(), rough),
+        "rough/rough": (rough, gen.sinusoid(0.2, [1.0, 1.0])),
+    }[pair]
+    opts = dict(stations=(32, 64), on_invalid="drop")
+    a = friction_polar(lower, upper, 0.9, BETAS_2D, engine="numba", **opts)
+    b = friction_polar(lower, upper, 0.9, BETAS_2D, engine="numpy", **opts)
+    np.testing.assert_allclose(a.mu_x, b.mu_x, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(a.mu_y, b.mu_y, rtol=1e-12, atol=1e-15)
+    np.testing.assert_array_equal(a.invalid_fraction, b.invalid_fraction)
+    assert np.any(a.invalid_fraction > 0)  # slopes up to 1.9 with mu0 = 0.9
+    if pair == "flat/rough":
+        with pytest.raises(ValidityError, match="upper surface"):
+            friction_polar(lower, upper, 0.9, [0.0], stations=(32, 64))
