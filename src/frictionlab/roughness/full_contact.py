@@ -24,13 +24,14 @@ Pure physics, private kernels (numba, parallel over points) with a NumPy twin.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from frictionlab.roughness._kernels import _h_one, multipliers_np
+from frictionlab.roughness._kernels import _FAST, multipliers_np
 
 __all__ = ["FullContactSums", "full_contact_sums"]
 
@@ -43,16 +44,15 @@ class FullContactSums:
 
     ``sum_x``, ``sum_y``: sums of H_x, H_y over the kept contacts; ``kept``: their count
     (2 N without dropping, or when every contact is valid); ``invalid``: contacts
-    violating Eq 1; ``worst_den``: the smallest Eq 1 denominator; ``worst_station``
-    (flat station index) and ``worst_family`` (1: surface 1, upper-fixed springs;
-    2: surface 2, lower-fixed springs) locate it.
+    violating Eq 1; where a direction has invalid contacts, ``worst_station`` (flat
+    station index) and ``worst_family`` (1: surface 1, upper-fixed springs; 2: surface 2,
+    lower-fixed springs) locate the least Eq 1 denominator (-1 and 0 elsewhere).
     """
 
     sum_x: FloatArray
     sum_y: FloatArray
     kept: NDArray[np.int64]
     invalid: NDArray[np.int64]
-    worst_den: FloatArray
     worst_station: NDArray[np.int64]
     worst_family: NDArray[np.int64]
     n_stations: int
@@ -73,6 +73,40 @@ class FullContactSums:
         return np.asarray(self.invalid / (2.0 * self.n_stations), dtype=np.float64)
 
 
+#: Points per block: the gradients of one block stay in cache while every direction
+#: sweeps it; blocks run in parallel.
+BLOCK = 4096
+
+
+@numba.njit(cache=True, fastmath=_FAST, error_model="numpy")
+def _block_sums(
+    m: float, gx: np.ndarray, gy: np.ndarray, lo: int, hi: int, cb: float, sb: float
+) -> tuple[float, float, float]:
+    """Sums of H over the valid contacts lo .. hi-1 and the count of invalid ones.
+
+    The multiplier of ``_kernels._h_one`` written branch-free (an invalid contact gets
+    the weight 0) so that the compiler vectorises the loop.
+    """
+    sx = 0.0
+    sy = 0.0
+    bad = 0.0
+    mcb = m * cb
+    msb = m * sb
+    for p in range(lo, hi):
+        x = gx[p]
+        y = gy[p]
+        inv_n = 1.0 / math.sqrt(1.0 + x * x + y * y)
+        a = x * cb + y * sb
+        inv_t = 1.0 / math.sqrt(1.0 + a * a)
+        den = inv_n - m * a * inv_t
+        ok = 1.0 * (den > 0.0)
+        big_n = ok / max(den, 1e-300)  # 1 / den where valid, else 0
+        sx += big_n * (x * inv_n + mcb * inv_t)
+        sy += big_n * (y * inv_n + msb * inv_t)
+        bad += 1.0 - ok
+    return sx, sy, bad
+
+
 @numba.njit(cache=True, parallel=True)
 def _sums_nb(
     mu0: np.ndarray,
@@ -82,52 +116,33 @@ def _sums_nb(
     g2y: np.ndarray,
     cb: np.ndarray,
     sb: np.ndarray,
-    drop: bool,
-    n_chunks: int,
     two: bool,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Per-chunk sums (chunks x directions); chunks run in parallel (prange).
+    block: int,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per-block sums (blocks x directions), blocks in parallel (prange).
 
     ``two=False``: only surface 1 is summed (the caller adds a flat surface 2 itself).
     """
     n = g1x.size
     nd = cb.size
-    sx = np.zeros((n_chunks, nd))
-    sy = np.zeros((n_chunks, nd))
-    bad = np.zeros((n_chunks, nd), dtype=np.int64)
-    worst = np.full((n_chunks, nd), np.inf)
-    where = np.full((n_chunks, nd), -1, dtype=np.int64)
-    size = (n + n_chunks - 1) // n_chunks
-    for c in numba.prange(n_chunks):
-        lo = c * size
-        hi = min(n, lo + size)
-        for p in range(lo, hi):
-            ax = g1x[p]
-            ay = g1y[p]
-            bx = g2x[p]
-            by = g2y[p]
-            for d in range(nd):
-                hx1, hy1, den1 = _h_one(mu0[d], ax, ay, cb[d], sb[d])
-                ok1 = den1 > 0.0
-                if ok1 or not drop:
-                    sx[c, d] += hx1 if ok1 else 0.0
-                    sy[c, d] += hy1 if ok1 else 0.0
-                bad[c, d] += not ok1
-                if den1 < worst[c, d]:
-                    worst[c, d] = den1
-                    where[c, d] = 2 * p
-                if not two:
-                    continue
-                hx2, hy2, den2 = _h_one(mu0[d], bx, by, cb[d], sb[d])
-                ok2 = den2 > 0.0
-                if ok2 or not drop:
-                    sx[c, d] += hx2 if ok2 else 0.0
-                    sy[c, d] += hy2 if ok2 else 0.0
-                bad[c, d] += not ok2
-                if den2 < worst[c, d]:
-                    worst[c, d] = den2
-                    where[c, d] = 2 * p + 1
-    return sx, sy, bad, worst, where
+    nb = (n + block - 1) // block
+    sx = np.zeros((nb, nd))
+    sy = np.zeros((nb, nd))
+    bad = np.zeros((nb, nd))
+    for c in numba.prange(nb):
+        lo = c * block
+        hi = min(n, lo + block)
+        for d in range(nd):
+            a = _block_sums(mu0[d], g1x, g1y, lo, hi, cb[d], sb[d])
+            sx[c, d] = a[0]
+            sy[c, d] = a[1]
+            bad[c, d] = a[2]
+            if two:
+                b = _block_sums(mu0[d], g2x, g2y, lo, hi, cb[d], sb[d])
+                sx[c, d] += b[0]
+                sy[c, d] += b[1]
+                bad[c, d] += b[2]
+    return sx, sy, bad
 
 
 def _sums_np(
@@ -138,15 +153,12 @@ def _sums_np(
     g2y: np.ndarray,
     cb: np.ndarray,
     sb: np.ndarray,
-    drop: bool,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """NumPy twin of :func:`_sums_nb` (one chunk), built on the lattice's multipliers."""
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """NumPy twin of :func:`_sums_nb` (one block), built on the lattice's multipliers."""
     nd = cb.size
     sx = np.zeros((1, nd))
     sy = np.zeros((1, nd))
-    bad = np.zeros((1, nd), dtype=np.int64)
-    worst = np.zeros((1, nd))
-    where = np.zeros((1, nd), dtype=np.int64)
+    bad = np.zeros((1, nd))
     for d in range(nd):
         m = float(mu0[d])
         h1x, h1y, den1 = multipliers_np(m, g1x, g1y, float(cb[d]), float(sb[d]))
@@ -154,10 +166,15 @@ def _sums_np(
         sx[0, d] = h1x.sum() + h2x.sum()  # invalid contacts have H = 0 here
         sy[0, d] = h1y.sum() + h2y.sum()
         bad[0, d] = np.count_nonzero(den1 <= 0.0) + np.count_nonzero(den2 <= 0.0)
-        both = np.stack([den1, den2], axis=1).ravel()  # index 2 p + family - 1
-        where[0, d] = int(np.argmin(both))
-        worst[0, d] = both[where[0, d]]
-    return sx, sy, bad, worst, where
+    return sx, sy, bad
+
+
+def _locate_worst(mu0: float, g: tuple[np.ndarray, ...], cb: float, sb: float) -> tuple[int, int]:
+    """(station, family) of the least Eq 1 denominator of one direction (NumPy)."""
+    _, _, den1 = multipliers_np(mu0, g[0], g[1], cb, sb)
+    _, _, den2 = multipliers_np(mu0, g[2], g[3], cb, sb)
+    code = int(np.argmin(np.stack([den1, den2], axis=1).ravel()))  # 2 p + family - 1
+    return code // 2, code % 2 + 1
 
 
 def full_contact_sums(
@@ -174,9 +191,10 @@ def full_contact_sums(
 
     ``mu0``: the local coefficient, one value or one per direction (hierarchies pass
     each direction's coefficient of the level below, spec Eq 29). ``g1``, ``g2``:
-    gradients (dimensionless) of surfaces 1 and 2 at the N stations
-    (flat arrays of equal size); ``cos_beta``, ``sin_beta``: the sliding directions.
-    ``drop``: leave contacts violating Eq 1 out of the sums and the count.
+    gradients (dimensionless) of surfaces 1 and 2 at the N stations (flat arrays of
+    equal size); ``cos_beta``, ``sin_beta``: the sliding directions. ``drop``: leave
+    contacts violating Eq 1 out of the count (their H is never summed). The worst
+    contact is located only for directions with invalid contacts (-1 elsewhere).
     """
     g1x, g1y, g2x, g2y = (np.ascontiguousarray(a, dtype=np.float64).ravel() for a in (*g1, *g2))
     cb = np.ascontiguousarray(cos_beta, dtype=np.float64).ravel()
@@ -184,35 +202,33 @@ def full_contact_sums(
     n = g1x.size
     m0 = np.ascontiguousarray(np.broadcast_to(np.asarray(mu0, dtype=np.float64), cb.shape))
     if engine == "numba":
-        chunks = max(1, min(n, 8 * numba.get_num_threads()))
         flat1 = not (g1x.any() or g1y.any())
         flat2 = not (g2x.any() or g2y.any())
         if flat1 != flat2:
             # A flat counter-face: H = mu0 (cos b, sin b) at each of its n contacts, which
             # are all valid (Eq 1's denominator is 1); only the rough surface is summed.
             rx, ry = (g2x, g2y) if flat1 else (g1x, g1y)
-            sx, sy, bad, worst, where = _sums_nb(m0, rx, ry, rx, ry, cb, sb, drop, chunks, False)
+            sx, sy, bad = _sums_nb(m0, rx, ry, rx, ry, cb, sb, False, BLOCK)
             sx[0] += n * m0 * cb
             sy[0] += n * m0 * sb
-            if flat1:
-                where = where + 1  # the rough surface is surface 2: code 2 p + 1
         else:
-            sx, sy, bad, worst, where = _sums_nb(m0, g1x, g1y, g2x, g2y, cb, sb, drop, chunks, True)
+            sx, sy, bad = _sums_nb(m0, g1x, g1y, g2x, g2y, cb, sb, True, BLOCK)
     else:
-        sx, sy, bad, worst, where = _sums_np(m0, g1x, g1y, g2x, g2y, cb, sb, drop)
-    # The worst contact over chunks (the first chunk wins a tie).
-    best_chunk = np.argmin(worst, axis=0)
-    cols = np.arange(cb.size)
-    code = where[best_chunk, cols]
-    invalid = bad.sum(axis=0)
+        sx, sy, bad = _sums_np(m0, g1x, g1y, g2x, g2y, cb, sb)
+    invalid = np.rint(bad.sum(axis=0)).astype(np.int64)
+    station = np.full(cb.size, -1, dtype=np.int64)
+    family = np.zeros(cb.size, dtype=np.int64)
+    for d in np.flatnonzero(invalid):
+        station[d], family[d] = _locate_worst(
+            float(m0[d]), (g1x, g1y, g2x, g2y), float(cb[d]), float(sb[d])
+        )
     kept = 2 * n - invalid if drop else np.full(cb.size, 2 * n, dtype=np.int64)
     return FullContactSums(
         sum_x=sx.sum(axis=0),
         sum_y=sy.sum(axis=0),
         kept=np.asarray(kept, dtype=np.int64),
         invalid=np.asarray(invalid, dtype=np.int64),
-        worst_den=worst[best_chunk, cols],
-        worst_station=np.asarray(code // 2, dtype=np.int64),
-        worst_family=np.asarray(code % 2 + 1, dtype=np.int64),
+        worst_station=station,
+        worst_family=family,
         n_stations=n,
     )
