@@ -76,8 +76,8 @@ def test_report_is_well_formed_and_complete(demo_dir: Path) -> None:
     page.feed((demo_dir / "report.html").read_text(encoding="utf-8"))
     page.close()
     assert page.errors == [] and page.stack == []
-    n = len(default_builders())  # the law's 6, the roughness model's 2, the bridge, contact
-    assert n == 10 and page.sections == n and page.tables == n  # one parameter table each
+    n = len(default_builders())  # the law's 6, the roughness model's 3, the bridge, contact
+    assert n == 11 and page.sections == n and page.tables == n  # one parameter table each
     assert len(page.images) >= 12
     for fig in page.figures:
         assert fig["img"] and len(str(fig["caption"]).split()) >= 8  # a real sentence

@@ -24,17 +24,32 @@ Optional tables of the scenario add (see :mod:`frictionlab.io.roughness_scenario
   as empty fields with ``valid = false``) and ``hierarchy.png``;
 * ``[hierarchy]`` with ``[wear]``: also ``hierarchy_wear.csv`` (B_i and mu_i of every
   level over the whole life) and ``hierarchy_wear.png``.
+* ``[multiscale]``: ``multiscale.csv`` (mu(beta) against the shortest wavelength
+  retained: ``cutoff_m, beta_deg, mu, mu_over_mu0, valid``) and ``multiscale.png``.
+
+``--quiet`` hides the progress bar (one step per direction), warnings and the summary
+line; ``--no-plots`` skips every PNG. With ``[sliding] on_invalid = "mask"`` contacts
+violating Eq 1 are dropped and ``polar.csv`` gains ``invalid_fraction``. summary.json
+records the provenance of each surface (file name, sha256, preparation, rms height and
+slope after filtering; Hurst exponent and seed of generated ones), every direction
+computed, the invalid fraction per direction and the warnings (e.g. the edge step of
+``periodicity = "assume"``, also printed on stderr).
 
 Bad input (unknown kind, missing key, angle outside (0, 90), unreadable file, NaN
 heights, mu0 <= 0 or beyond the validity bound of Eq 1, a negative wear coefficient, a
 zero hardness, levels that are not strictly nested, an empty load sweep) ends with one
-line on stderr and exit code 2; nothing is written.
+line on stderr and exit code 2; nothing is written. A validity failure comes within
+seconds (full contact checks all directions in one pass, partial contact stops at the
+first offending sample) and says where, how much, and what to do.
 """
 
 from __future__ import annotations
 
 import argparse
+import math
+import sys
 import time
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
@@ -42,13 +57,15 @@ from typing import Any
 import numpy as np
 
 from frictionlab._version import __version__
-from frictionlab.errors import InputError
+from frictionlab.commands._progress import progress_bar
+from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_json_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
 from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import wedge_friction
+from frictionlab.roughness.full_contact import full_contact_sums
 from frictionlab.roughness.generators import FlatProfile, WedgeProfile
 from frictionlab.roughness.hierarchy import (
     HierarchyResult,
@@ -56,7 +73,16 @@ from frictionlab.roughness.hierarchy import (
     hierarchy_friction,
     hierarchy_wear,
 )
-from frictionlab.roughness.lattice import FrictionPolar, friction_polar, merge_polars
+from frictionlab.roughness.lattice import (
+    FrictionPolar,
+    LatticeGeometry,
+    LatticeSettings,
+    friction_polar,
+    lattice_geometry,
+    merge_polars,
+)
+from frictionlab.roughness.multiscale import MultiscaleResult, multiscale_friction
+from frictionlab.roughness.surface import Surface
 from frictionlab.roughness.wear import WearHistory, wear_history
 
 __all__ = ["add_parser", "run"]
@@ -81,6 +107,10 @@ def add_parser(subparsers: Any) -> argparse.ArgumentParser:
         metavar="SECTION.KEY=VALUE",
         help="override a scenario value, e.g. --set lattice.time_samples=100 (repeatable)",
     )
+    parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    parser.add_argument(
+        "--quiet", action="store_true", help="no progress bar, warnings or summary line"
+    )
     parser.set_defaults(handler=run)
     return parser
 
@@ -89,36 +119,46 @@ def run(args: argparse.Namespace) -> int:
     """Run the command; returns the exit code (errors propagate to ``cli.main``)."""
     scenario_path = Path(args.scenario)
     out_dir = Path(args.out)
+    quiet = bool(getattr(args, "quiet", False))
+    plots = not getattr(args, "no_plots", False)
     if out_dir.exists() and not out_dir.is_dir():
         raise InputError(f"--out '{out_dir}' exists and is not a directory")
     data = apply_overrides(load_toml(scenario_path), args.set)
     scenario = parse_roughness_scenario(data, scenario_path.parent)
+    if not quiet:
+        for text in scenario.warnings:
+            print(f"frictionlab roughness: warning: {text}", file=sys.stderr)
     started = time.perf_counter()
-    polar = friction_polar(
-        scenario.lower, scenario.upper, scenario.mu0, scenario.beta_deg, settings=scenario.settings
-    )
-    if not np.all(polar.in_contact):
-        beta = float(polar.beta_deg[int(np.argmin(polar.in_contact))])
-        raise InputError(
-            f"[sliding].load = {scenario.settings.load} compresses no spring at beta = {beta:g} "
-            "deg, so mu is undefined there: allowed a load that keeps some spring compressed "
-            "(sweeps through zero and tension belong in [adhesion])"
-        )
-    plot_polar = _full_circle(scenario, polar)
-    extensions = _extensions(scenario)
+    try:
+        with progress_bar(f"roughness {scenario_path.name}", enabled=not quiet) as progress:
+            polar = friction_polar(
+                scenario.lower, scenario.upper, scenario.mu0, scenario.beta_deg,
+                settings=scenario.settings, progress=progress,
+            )  # fmt: skip
+            if not np.all(polar.in_contact):
+                beta = float(polar.beta_deg[int(np.argmin(polar.in_contact))])
+                raise InputError(
+                    f"[sliding].load = {scenario.settings.load} compresses no spring at beta = "
+                    f"{beta:g} deg, so mu is undefined there: allowed a load that keeps some "
+                    "spring compressed (sweeps through zero and tension belong in [adhesion])"
+                )
+            plot_polar = _full_circle(scenario, polar, progress) if plots else polar
+        extensions = _extensions(scenario)
+    except ValidityError as exc:
+        # Full contact fails in its one pass over all directions, partial contact at the
+        # first offending time sample: either way within seconds, before the rest.
+        raise ValidityError(f"{exc}.{_diagnose(scenario)} {_ways_forward(scenario)}") from None
     seconds = time.perf_counter() - started
 
     files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, polar, scenario_path)}
-    files.update(_extension_files(scenario, extensions, scenario_path))
+    files.update(_extension_files(scenario, extensions, scenario_path, plots))
     summary = _summary(scenario, polar, plot_polar, scenario_path, seconds)
     summary.update(_extension_summary(scenario, extensions))
     extra = sorted(name for name in files if name != "polar.csv")
-    summary["files"] = ["polar.csv", "summary.json", "polar.png", *extra]
-    files["polar.png"] = _png(scenario, plot_polar)
-    files["summary.json"] = ""  # written below, last
+    summary["files"] = ["polar.csv", "summary.json", *(["polar.png"] if plots else []), *extra]
+    if plots:
+        files["polar.png"] = _png(scenario, plot_polar)
     for name, content in files.items():
-        if name == "summary.json":
-            continue
         if isinstance(content, bytes):
             write_bytes_atomic(out_dir / name, content)
         else:
@@ -126,11 +166,97 @@ def run(args: argparse.Namespace) -> int:
     write_json_atomic(out_dir / "summary.json", summary)
     ratio = polar.mu_over_mu0
     names = ", ".join(str(out_dir / name) for name in summary["files"])
-    print(
-        f"frictionlab roughness: {polar.beta_deg.size} directions, mu/mu0 from "
-        f"{np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; wrote {names}"
-    )
+    if not quiet:
+        print(
+            f"frictionlab roughness: {polar.beta_deg.size} directions in {seconds:.3g} s, "
+            f"mu/mu0 from {np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; wrote {names}"
+        )
     return 0
+
+
+def _station_gradients(
+    lower: Surface, upper: Surface, settings: LatticeSettings
+) -> tuple[LatticeGeometry, tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
+    geometry = lattice_geometry(lower, upper, settings.stations)
+    xs, ys = geometry.station_coordinates()
+    px, py = settings.phase
+    n = geometry.n_stations
+    _, g1x, g1y = (np.broadcast_to(a, geometry.shape).ravel() for a in lower.evaluate(xs, ys))
+    _, g2x, g2y = (
+        np.broadcast_to(a, geometry.shape).ravel() for a in upper.evaluate(xs - px, ys - py)
+    )
+    assert g1x.size == n
+    return geometry, (g1x, g1y), (g2x, g2y)
+
+
+def _diagnose(scenario: RoughnessScenario) -> str:
+    """Where full contact violates Eq 1 (one pass over every direction): the fraction of
+    contacts, and whether the worst lies on an edge step made by periodicity='assume'."""
+    s = scenario.settings
+    geometry, g1, g2 = _station_gradients(scenario.lower, scenario.upper, s)
+    beta = scenario.beta_deg
+    sums = full_contact_sums(
+        scenario.mu0, g1, g2, np.cos(np.radians(beta)), np.sin(np.radians(beta)),
+        engine=s.engine,
+    )  # fmt: skip
+    if not np.any(sums.invalid):
+        return ""
+    d = int(np.argmax(sums.invalid_fraction))
+    station = int(sums.worst_station[d])
+    family = int(sums.worst_family[d])
+    side = "lower" if family == 1 else "upper"
+    surface = scenario.lower if family == 1 else scenario.upper
+    xs, ys = geometry.station_coordinates()
+    idx = np.unravel_index(station, geometry.shape)
+    x = float(np.ravel(xs)[idx[0]])
+    y = float(np.ravel(ys)[idx[1]]) if geometry.dimension == 2 else 0.0
+    if family == 2:
+        x, y = x - s.phase[0], y - s.phase[1]
+    _, gx, gy = surface.evaluate(np.array([x]), np.array([y]))
+    phi = math.degrees(math.atan(math.hypot(float(gx[0]), float(gy[0]))))
+    where = f"x = {x:.6g} m" + (f", y = {y:.6g} m" if geometry.dimension == 2 else "")
+    text = (
+        f" In full contact {100 * sums.invalid_fraction[d]:.3g}% of the contacts violate "
+        f"Eq 1 at beta = {beta[d]:g} deg; the steepest is on the {side} surface at {where} "
+        f"(phi = {phi:.4g} deg)."
+    )
+    if _on_assumed_edge(scenario, side, surface, x, y):
+        text += (
+            f" It lies on the artificial edge step that periodicity = 'assume' creates in "
+            f"[{side}] (use 'mirror', window = 'hann' or detrend = 'height')."
+        )
+    return text
+
+
+def _on_assumed_edge(
+    scenario: RoughnessScenario, side: str, surface: Surface, x: float, y: float
+) -> bool:
+    """Whether (x, y) lies within one pixel of the wrap of a surface read with 'assume'."""
+    if scenario.sources.get(side, {}).get("periodicity") != "assume":
+        return False
+    grid = surface.grid_shape
+    periods = [p for p in surface.periods if p is not None]
+    if grid is None:
+        return False
+    for value, period, n in zip((x, y), periods, grid, strict=False):
+        u = (value % period) / (period / n)  # position in pixels from the origin
+        if u < 1.0 or u > n - 1.0:
+            return True
+    return False
+
+
+def _ways_forward(scenario: RoughnessScenario) -> str:
+    pixel = [
+        info["physical_sizes_m"][0] / info["points"][0]
+        for info in scenario.sources.values()
+        if "physical_sizes_m" in info and "points" in info
+    ]
+    cutoff = f" (e.g. short_cutoff = {4 * min(pixel):.3g} m, four pixels)" if pixel else ""
+    return (
+        "Ways forward: remove the pixel-scale slopes with short_cutoff in [lower]/[upper]"
+        f'{cutoff}, use a smaller mu0, or set on_invalid = "mask" in [sliding] to drop '
+        "the invalid contacts and report their area fraction"
+    )
 
 
 def _extensions(scenario: RoughnessScenario) -> dict[str, Any]:
@@ -162,13 +288,26 @@ def _extensions(scenario: RoughnessScenario) -> dict[str, Any]:
                 h.levels, scenario.mu0, h.beta_deg, scenario.wear.settings,
                 samples_per_level=h.samples_per_level, mu_passed=h.mu_passed, settings=s,
             )  # fmt: skip
+    if scenario.multiscale is not None:
+        m = scenario.multiscale
+        try:
+            out["multiscale"] = multiscale_friction(
+                scenario.lower, scenario.upper, scenario.mu0, m.beta_deg, m.cutoffs,
+                mu_passed=m.mu_passed, drop=s.on_invalid == "drop", engine=s.engine,
+            )  # fmt: skip
+        except ParameterError as exc:
+            raise InputError(
+                f"[multiscale] needs sampled surfaces (kind = 'file' or 'self_affine') or flat "
+                f"ones: {exc}"
+            ) from None
     return out
 
 
 def _extension_files(
-    scenario: RoughnessScenario, results: dict[str, Any], path: Path
+    scenario: RoughnessScenario, results: dict[str, Any], path: Path, plots: bool = True
 ) -> dict[str, str | bytes]:
     """CSV text and PNG bytes of every extension result, rendered before anything is written."""
+    from frictionlab.plotting.multiscale import multiscale_figure
     from frictionlab.plotting.roughness import figure_png_bytes
     from frictionlab.plotting.roughness_life import (
         adhesion_figure,
@@ -212,6 +351,20 @@ def _extension_files(
         files["hierarchy_wear.png"] = figure_png_bytes(
             hierarchy_wear_figure(life, f"hierarchy with wear: {title}")
         )
+    if "multiscale" in results:
+        ms: MultiscaleResult = results["multiscale"]
+        header = (
+            f"{head}; bands split at the cutoffs (wavelengths, m) by SurfaceTopography's "
+            f"shortcut filter, innermost band = shortest wavelengths, mu passed upward: "
+            f"{ms.mu_passed}; cutoff_m = shortest wavelength retained (last: Nyquist); "
+            "invalid values empty with valid = false"
+        )
+        files["multiscale.csv"] = format_csv(ms.columns(), ms.units(), header)
+        files["multiscale.png"] = figure_png_bytes(
+            multiscale_figure(ms, f"scale-resolved friction: {title}")
+        )
+    if not plots:
+        files = {k: v for k, v in files.items() if not k.endswith(".png")}
     return files
 
 
@@ -256,10 +409,29 @@ def _extension_summary(scenario: RoughnessScenario, results: dict[str, Any]) -> 
             "dropout_time_per_level_s": life.dropout_time.tolist(),
             "volume_per_level_m3": life.volume.tolist(),
         }
+    if "multiscale" in results:
+        ms: MultiscaleResult = results["multiscale"]
+        mu = np.where(ms.valid, ms.mu, np.nan)
+        with np.errstate(invalid="ignore"):
+            anisotropy = np.nanmax(mu, axis=1) / np.nanmin(mu, axis=1)
+        out["multiscale"] = {
+            "cutoffs_m": list(scenario.multiscale.cutoffs) if scenario.multiscale else [],
+            "shortest_wavelength_retained_m": ms.cutoff_m.tolist(),
+            "beta_deg": ms.beta_deg.tolist(),
+            "band_rms_slope": ms.band_rms_slope.tolist(),
+            "anisotropy_max_over_min": [
+                None if not np.isfinite(v) else float(v) for v in anisotropy
+            ],
+            "all_valid": bool(ms.valid.all()),
+        }
     return out
 
 
-def _full_circle(scenario: RoughnessScenario, polar: FrictionPolar) -> FrictionPolar:
+def _full_circle(
+    scenario: RoughnessScenario,
+    polar: FrictionPolar,
+    progress: Callable[[int, int], None] | None = None,
+) -> FrictionPolar:
     """The polar for the plot: requested directions plus the full circle at plot_step_deg."""
     if not scenario.plot_full_circle:
         return polar
@@ -269,8 +441,9 @@ def _full_circle(scenario: RoughnessScenario, polar: FrictionPolar) -> FrictionP
     if extra.size == 0:
         return polar
     more = friction_polar(
-        scenario.lower, scenario.upper, scenario.mu0, extra, settings=scenario.settings
-    )
+        scenario.lower, scenario.upper, scenario.mu0, extra, settings=scenario.settings,
+        progress=progress,
+    )  # fmt: skip
     return merge_polars(polar, more)
 
 
@@ -340,6 +513,8 @@ def _summary(
         "mu_definition": s.mu_definition,
         "lower": scenario.lower.describe(),
         "upper": scenario.upper.describe(),
+        "sources": scenario.sources,
+        "warnings": list(scenario.warnings),
         "sliding": {
             "beta_deg": [float(polar.beta_deg[0]), float(polar.beta_deg[-1])],
             "directions": int(polar.beta_deg.size),
@@ -347,6 +522,9 @@ def _summary(
             "control": s.control,
             "separation_m": s.separation,
             "phase_m": list(s.phase),
+            "directions_deg": polar.beta_deg.tolist(),
+            "on_invalid": "mask" if s.on_invalid == "drop" else "error",
+            "invalid_fraction": polar.invalid_fraction.tolist(),
         },
         "lattice": {
             **s.as_dict(),

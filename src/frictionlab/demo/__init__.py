@@ -87,8 +87,9 @@ INTRO = (
     "subloading-friction law of Hashiguchi & Ozaki (2008), shows the response and compares "
     "it with the closed forms of the specification. SI units throughout; tractions per unit "
     "area in Pa. Two sections compute the figure families of the lattice-spring "
-    "roughness model (mu versus sliding direction, adhesion, wear, hierarchy); their "
-    "figures and tables sit in roughness/. The last section bridges the two: a law fitted "
+    "roughness model (mu versus sliding direction, adhesion, wear, hierarchy) and a third "
+    "applies it to a measured topography file; their figures and tables sit in roughness/. "
+    "The last section bridges the two: a law fitted "
     "to a roughness polar (frictionlab bridge; its files sit in bridge/)."
 )
 

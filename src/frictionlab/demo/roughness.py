@@ -8,9 +8,14 @@ from __future__ import annotations
 
 from frictionlab.demo import DemoContext
 from frictionlab.io.report import Section
-from frictionlab.io.roughness_report import life_section, single_level_section
+from frictionlab.io.roughness_report import life_section, measured_section, single_level_section
 
-__all__ = ["ROUGHNESS_SECTIONS", "roughness_life_section", "roughness_single_level_section"]
+__all__ = [
+    "ROUGHNESS_SECTIONS",
+    "roughness_life_section",
+    "roughness_measured_section",
+    "roughness_single_level_section",
+]
 
 
 def roughness_single_level_section(ctx: DemoContext) -> Section:
@@ -23,5 +28,14 @@ def roughness_life_section(ctx: DemoContext) -> Section:
     return life_section(ctx.out_dir, ctx.progress)
 
 
+def roughness_measured_section(ctx: DemoContext) -> Section:
+    """Roughness: a measured topography file and its scale-resolved friction"""
+    return measured_section(ctx.out_dir, ctx.progress)
+
+
 #: The roughness model's demo sections, in report order.
-ROUGHNESS_SECTIONS = (roughness_single_level_section, roughness_life_section)
+ROUGHNESS_SECTIONS = (
+    roughness_single_level_section,
+    roughness_life_section,
+    roughness_measured_section,
+)

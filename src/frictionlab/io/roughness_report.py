@@ -9,6 +9,9 @@ what it shows, numbers measured on this run included:
 * "Lattice-spring roughness: case studies, 2-D surfaces, wavelengths" (Figs 6a, 6b, 7, 8);
 * "Lattice-spring roughness: adhesion, wear, hierarchy" (Figs 10-14).
 
+:func:`measured_section` adds "Lattice-spring roughness: a measured topography file"
+(the shipped x3p file: mu(beta) and scale-resolved friction, beyond the paper).
+
 Fig 9 (validation against pins on ice) is not reproduced: its experimental values are
 not available (docs/roughness.md).
 """
@@ -35,6 +38,7 @@ __all__ = [
     "MU0",
     "ProgressFactory",
     "life_section",
+    "measured_section",
     "roughness_sections",
     "single_level_section",
 ]
@@ -250,6 +254,75 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
     return section
 
 
+#: Band edges of the measured section's scale-resolved friction (wavelengths, m).
+MEASURED_CUTOFFS = (150e-6, 60e-6, 25e-6)
+
+
+def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
+    from frictionlab.demo.topography_file import ground_demo_path
+    from frictionlab.plotting.multiscale import multiscale_figure
+    from frictionlab.plotting.roughness import scenario_figure
+    from frictionlab.roughness.generators import flat
+    from frictionlab.roughness.lattice import friction_polar
+    from frictionlab.roughness.multiscale import multiscale_friction
+    from frictionlab.roughness.topography import read_prepared
+
+    path = ground_demo_path()
+    prepared = read_prepared(path, periodicity="mirror", detrend="height")
+    info = prepared.info
+    section = Section(
+        "Lattice-spring roughness: a measured topography file",
+        intro=(
+            "A height map read from an instrument file (ISO 25178 x3p, read by "
+            "SurfaceTopography) as a user would: the file ships with frictionlab "
+            f"(data/topography/{path.name}, a synthetic ground surface with grooves along y). "
+            "The tilt is removed, the map is mirrored to make it periodic, and a flat "
+            "counter-face slides over it in full contact (the area average of spec section "
+            "2.6). The spectrum is then split into bands, each band one level of the "
+            "hierarchical model, to see which scales make friction anisotropic."
+        ),
+        anchor="roughness-measured",
+    )
+    betas = np.arange(0.0, 360.0, 5.0)
+    polar = friction_polar(prepared.surface, flat(), MU0, betas)
+    writer.table("measured_polar", polar.columns(), {"beta_deg": "deg"}, f"{path.name} on flat")
+    ratio = polar.mu_over_mu0
+    fig = scenario_figure(polar, prepared.surface, flat(), title=f"{path.name} on a flat face")
+    section.add_figure(
+        writer.figure("measured_polar", fig),
+        f"Sliding across the grooves (beta = 0) gives mu/mu0 = {ratio[0]:.4f}, along them "
+        f"(beta = 90 deg) {ratio[18]:.4f}: the file's rms slope {info['rms_slope']:.3f} makes "
+        f"friction {100 * (ratio.max() / ratio.min() - 1):.2f}% anisotropic.",
+    )
+    step()
+    ms = multiscale_friction(prepared.surface, flat(), MU0, [0.0, 45.0, 90.0], MEASURED_CUTOFFS)
+    writer.table("measured_multiscale", ms.columns(), ms.units(), "scale-resolved friction")
+    fig = multiscale_figure(ms, f"{path.name}: friction vs the scales retained")
+    aniso = ms.mu[:, 0] / ms.mu[:, 2]
+    share = (aniso[-1] - aniso[0]) / (aniso[-1] - 1.0)
+    section.add_figure(
+        writer.figure("measured_multiscale", fig),
+        f"Keeping only wavelengths >= {ms.cutoff_m[0] * 1e6:.0f} um the ratio "
+        f"mu(0)/mu(90) is {aniso[0]:.4f}; with every band down to the pixel scale "
+        f"({ms.cutoff_m[-1] * 1e6:.1f} um) it is {aniso[-1]:.4f}: the wavelengths below "
+        f"{ms.cutoff_m[0] * 1e6:.0f} um carry {100 * share:.0f}% of the anisotropy "
+        "(mu(0)/mu(90) - 1).",
+    )
+    step()
+    sizes = " x ".join(f"{v * 1e3:g}" for v in info["source_physical_sizes_m"])
+    points = " x ".join(str(v) for v in info["source_points"])
+    rms = f"{info['rms_height_m']:.3g}, {info['rms_slope']:.3g}"
+    section.parameters = [
+        ("file", f"{path.name} (sha256 {info['sha256'][:12]}...)", ""),
+        ("scan size; points", f"{sizes}; {points}", "mm; 1"),
+        ("preparation", "detrend = height, periodicity = mirror", ""),
+        ("rms height, rms slope (prepared)", rms, "m, 1"),
+        ("local coefficient mu0", f"{MU0:g}", "1"),
+        ("band edges (wavelengths)", ", ".join(f"{c * 1e6:g}" for c in MEASURED_CUTOFFS), "um"),
+    ]
+    return section
+
+
 def _slug(name: str) -> str:
     return "".join(c if c.isalnum() else "_" for c in name.lower()).strip("_")
 
@@ -277,6 +350,11 @@ def _run(
 def single_level_section(out_dir: Path, progress: ProgressFactory | None = None) -> Section:
     """Figs 6a, 6b, 7 and 8: case studies, generic 1-D roughness, 2-D surfaces, wavelengths."""
     return _run(_single_level, out_dir, progress, "roughness: Figs 6-8", 4)
+
+
+def measured_section(out_dir: Path, progress: ProgressFactory | None = None) -> Section:
+    """A measured topography file: mu(beta) and scale-resolved friction."""
+    return _run(_measured, out_dir, progress, "roughness: measured file", 2)
 
 
 def life_section(out_dir: Path, progress: ProgressFactory | None = None) -> Section:

@@ -17,6 +17,7 @@ Layout (every unknown key is an error; lengths in m, angles in degrees)::
     load = "full"                  # or the mean normal force per spring (N)
     control = "load"               # or "separation" (then separation = c in m)
     phase = [0.0, 0.0]             # initial offset of the upper surface (m)
+    on_invalid = "error"           # or "mask": drop contacts violating Eq 1, report their fraction
     [lattice]                      # optional: fields of LatticeSettings
     stations = 2000                # or [nx, ny]
     time_samples = 400
@@ -26,6 +27,8 @@ Layout (every unknown key is an error; lengths in m, angles in degrees)::
     max_return_periods = 8
     mu_definition = "magnitude"    # or "projection"
     engine = "numba"               # or "numpy"
+    full_contact = "average"       # load = "full": direct area average, or "lattice"
+    snap_time_samples = true       # time samples moved to whole-station shifts
     [output]                       # optional
     plot_full_circle = true        # compute extra directions for the full-circle plot
     plot_step_deg = 5.0
@@ -55,6 +58,10 @@ Layout (every unknown key is an error; lengths in m, angles in degrees)::
     on_invalid = "raise"           # or "mask"
     samples_per_level = 11         # hierarchy with [wear]: times per level window
     beta_deg = [0.0, 45.0, 90.0]   # default: [sliding].beta_deg
+    [multiscale]                   # optional: scale-resolved friction (sampled surfaces)
+    cutoffs = [1.0e-4, 3.0e-5]     # band edges, wavelengths in m (any order, distinct)
+    mu_passed = "magnitude"        # or "projection"
+    beta_deg = [0.0, 45.0, 90.0]   # default: [sliding].beta_deg
 
 Surface kinds and their keys:
 
@@ -64,14 +71,17 @@ Surface kinds and their keys:
   ``short_cutoff``, ``long_cutoff`` (m).
 * ``file``: ``path`` (relative to the scenario file), ``periodicity`` (require | assume |
   mirror) and ``detrend`` (none | center | height | curvature), both required; optional
-  ``fill_missing`` (false), ``gradient`` (fd | spectral), ``format``, ``channel``, ``unit``,
-  ``physical_sizes``.
+  ``fill_missing`` (false), ``gradient`` (fd | spectral), ``format``, ``channel``,
+  ``unit`` and ``physical_sizes`` (only for files without them: the length unit of the
+  heights and sizes, and the scan size along x, y *in that unit*), ``crop = [x0, x1, y0,
+  y1]`` (m), ``window`` (e.g. "hann"), ``short_cutoff`` and ``long_cutoff`` (m).
+  Array axes: the first is x (see :mod:`frictionlab.roughness.topography`).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -90,12 +100,14 @@ from frictionlab.roughness.hierarchy import (
 from frictionlab.roughness.lattice import (
     CONTROLS,
     ENGINES,
+    FULL_CONTACT_METHODS,
     MU_DEFINITIONS,
     TRAVEL_MODES,
     LatticeSettings,
+    lattice_geometry,
 )
-from frictionlab.roughness.surface import Surface
-from frictionlab.roughness.topography import DETREND_MODES, PERIODICITY_MODES, read_surface
+from frictionlab.roughness.surface import HeightMap, Surface
+from frictionlab.roughness.topography import DETREND_MODES, PERIODICITY_MODES, read_prepared
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
 
 __all__ = [
@@ -110,7 +122,9 @@ __all__ = [
 SURFACE_KINDS = ("flat", "wedge", "smooth_wedge", "sinusoid", "self_affine", "file")
 MAX_DIRECTIONS = 3601
 
-_SLIDING_FIELDS = {"load", "control", "separation", "phase"}
+_SLIDING_FIELDS = {"load", "control", "separation", "phase", "on_invalid"}
+#: [sliding].on_invalid in the TOML -> LatticeSettings.on_invalid
+ON_INVALID_KEYS = {"error": "raise", "mask": "drop"}
 
 
 @dataclass(frozen=True)
@@ -146,6 +160,15 @@ class HierarchyOptions:
 
 
 @dataclass(frozen=True)
+class MultiscaleOptions:
+    """The ``[multiscale]`` table: band edges (wavelengths, m, descending), directions."""
+
+    cutoffs: tuple[float, ...]
+    beta_deg: np.ndarray
+    mu_passed: str
+
+
+@dataclass(frozen=True)
 class RoughnessScenario:
     """A parsed scenario: surfaces, directions (deg), lattice settings, output options."""
 
@@ -160,6 +183,9 @@ class RoughnessScenario:
     adhesion: AdhesionOptions | None = None
     wear: WearOptions | None = None
     hierarchy: HierarchyOptions | None = None
+    sources: dict[str, dict[str, Any]] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+    multiscale: MultiscaleOptions | None = None
 
 
 def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessScenario:
@@ -172,8 +198,10 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
     lower_table = top.table("lower", required=True)
     upper_table = top.table("upper", required=True)
     assert lower_table is not None and upper_table is not None
-    lower = _surface(lower_table, base_dir)
-    upper = _surface(upper_table, base_dir)
+    notes: dict[str, Any] = {}
+    lower = _surface(lower_table, base_dir, notes, "lower")
+    upper = _surface(upper_table, base_dir, notes, "upper")
+    _check_cell(lower, upper, notes)
     sliding = top.table("sliding", required=True)
     assert sliding is not None
     betas = _directions(sliding)
@@ -192,6 +220,8 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         options["separation"] = sliding.get("separation", float)
     if "phase" in sliding:
         options["phase"] = tuple(sliding.get_list("phase", float, length=2))
+    on_invalid = sliding.get("on_invalid", str, "error", choices=tuple(ON_INVALID_KEYS))
+    options["on_invalid"] = ON_INVALID_KEYS[on_invalid]
     sliding.finish()
     lattice = top.table("lattice")
     if lattice is not None:
@@ -218,6 +248,10 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
             options["mu_definition"] = lattice.get("mu_definition", str, choices=MU_DEFINITIONS)
         if "engine" in lattice:
             options["engine"] = lattice.get("engine", str, choices=ENGINES)
+        if "full_contact" in lattice:
+            options["full_contact"] = lattice.get("full_contact", str, choices=FULL_CONTACT_METHODS)
+        if "snap_time_samples" in lattice:
+            options["snap_time_samples"] = lattice.get("snap_time_samples", bool)
         lattice.finish()
     try:
         settings = LatticeSettings(**options)
@@ -242,6 +276,10 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         if hierarchy_table is None
         else _hierarchy(hierarchy_table, lower, upper, betas, base_dir)
     )
+    multiscale_table = top.table("multiscale")
+    multiscale = None
+    if multiscale_table is not None:
+        multiscale = _multiscale(multiscale_table, lower, upper, betas)
     top.finish()
     return RoughnessScenario(
         mu0=mu0,
@@ -255,7 +293,52 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         adhesion=adhesion,
         wear=wear,
         hierarchy=hierarchy,
+        sources={k: v for k, v in notes.items() if k in ("lower", "upper")},
+        warnings=tuple(notes.get("warnings", ())),
+        multiscale=multiscale,
     )
+
+
+def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:
+    """Two sampled surfaces need commensurate sizes: say so with the files' own sizes."""
+    try:
+        lattice_geometry(lower, upper, (1, 1) if isinstance(lower, HeightMap) else 1)
+    except ParameterError as exc:
+        sizes = []
+        for side in ("lower", "upper"):
+            info = notes.get(side, {})
+            if "source_physical_sizes_m" in info:
+                size = [f"{v:.6g}" for v in info["source_physical_sizes_m"]]
+                extra = " (mirrored: doubled)" if info.get("periodicity") == "mirror" else ""
+                crop = " after crop" if "crop_m" in info else ""
+                sizes.append(
+                    f"[{side}] file {info.get('file')} is {' x '.join(size)} m{crop}{extra}"
+                )
+        if not sizes:
+            raise InputError(f"[lower]/[upper]: {exc}") from None
+        raise InputError(
+            "[upper].physical_sizes: the two surfaces must share a period cell (sizes in an "
+            f"integer ratio up to 64) but {'; '.join(sizes)}: crop them to a common size "
+            "(crop = [x0, x1, y0, y1] in m)"
+        ) from None
+
+
+def _multiscale(
+    table: Table, lower: Surface, upper: Surface, betas: np.ndarray
+) -> MultiscaleOptions:
+    cutoffs = table.get_list("cutoffs", float)
+    if not cutoffs or any(not (v > 0.0 and math.isfinite(v)) for v in cutoffs):
+        raise InputError(
+            f"{table.where}.cutoffs = {cutoffs} is invalid: allowed a non-empty list of "
+            "wavelengths > 0 m"
+        )
+    ordered = tuple(sorted(cutoffs, reverse=True))
+    if len(set(ordered)) != len(ordered):
+        raise InputError(f"{table.where}.cutoffs = {cutoffs} is invalid: allowed distinct values")
+    mu_passed = table.get("mu_passed", str, "magnitude", choices=MU_PASSED)
+    directions = _own_directions(table, betas)
+    table.finish()
+    return MultiscaleOptions(ordered, directions, mu_passed)
 
 
 def _own_directions(table: Table, default: np.ndarray) -> np.ndarray:
@@ -360,7 +443,7 @@ def _hierarchy(
                 for side in ("lower", "upper"):
                     sub = level.table(side, required=True)
                     assert sub is not None
-                    pair.append(_surface(sub, base_dir))
+                    pair.append(_surface(sub, base_dir, {}, side))
                 level.finish()
                 inner.append(HierarchyLevel(pair[0], pair[1]))
             levels = (*inner, HierarchyLevel(lower, upper))
@@ -400,13 +483,19 @@ def _directions(sliding: Table) -> np.ndarray:
     return np.array([sliding.get("beta_deg", float)], dtype=np.float64)
 
 
-def _surface(table: Table, base_dir: Path) -> Surface:
+def _surface(table: Table, base_dir: Path, notes: dict[str, Any], side: str) -> Surface:
+    """Build one surface; its provenance goes to ``notes[side]``, warnings to
+    ``notes["warnings"]``."""
     kind = table.get("kind", str, choices=SURFACE_KINDS)
+    info: dict[str, Any] = {"kind": kind}
     try:
-        surface = _build(kind, table, base_dir)
+        surface = _build(kind, table, base_dir, info)
     except ParameterError as exc:
-        raise InputError(f"{table.where}: {exc}") from None
+        raise InputError(f"{table.where}.{exc}") from None
     table.finish()
+    for text in info.pop("warnings", ()):
+        notes.setdefault("warnings", []).append(f"{table.where}: {text}")
+    notes[side] = info
     return surface
 
 
@@ -416,7 +505,7 @@ def _positive(table: Table, key: str) -> float:
     )
 
 
-def _build(kind: str, table: Table, base_dir: Path) -> Surface:
+def _build(kind: str, table: Table, base_dir: Path, info: dict[str, Any]) -> Surface:
     if kind == "flat":
         return generators.flat()
     if kind in ("wedge", "smooth_wedge"):
@@ -443,6 +532,7 @@ def _build(kind: str, table: Table, base_dir: Path) -> Surface:
         rms_slope = _positive(table, "rms_slope") if "rms_slope" in table else None
         short = _positive(table, "short_cutoff") if "short_cutoff" in table else None
         long = _positive(table, "long_cutoff") if "long_cutoff" in table else None
+        info.update(hurst=hurst, seed=seed, physical_sizes_m=sizes, points=points)
         return generators.self_affine(
             hurst,
             sizes,
@@ -465,7 +555,15 @@ def _build(kind: str, table: Table, base_dir: Path) -> Surface:
     channel = table.get("channel", int, None)
     unit = table.get("unit", str, None)
     sizes = table.get_list("physical_sizes", float, None, length=(1, 2))
-    return read_surface(
+    crop = table.get_list("crop", float, None, length=(2, 4))
+    window = table.get("window", str, None)
+    short = _positive(table, "short_cutoff") if "short_cutoff" in table else None
+    long = _positive(table, "long_cutoff") if "long_cutoff" in table else None
+    if sizes is not None and any(not (v > 0.0 and math.isfinite(v)) for v in sizes):
+        raise InputError(
+            f"{table.where}.physical_sizes = {sizes} is invalid: allowed sizes > 0 in `unit`"
+        )
+    prepared = read_prepared(
         path,
         periodicity=periodicity,
         detrend=detrend,
@@ -475,4 +573,11 @@ def _build(kind: str, table: Table, base_dir: Path) -> Surface:
         channel=channel,
         unit=unit,
         physical_sizes=None if sizes is None else (sizes[0] if len(sizes) == 1 else tuple(sizes)),
+        crop=None if crop is None else tuple(crop),
+        window=window,
+        short_cutoff=short,
+        long_cutoff=long,
     )
+    info.update(prepared.info)
+    info["warnings"] = list(prepared.warnings)
+    return prepared.surface

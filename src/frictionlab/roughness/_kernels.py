@@ -40,7 +40,7 @@ SAMPLE_FIELDS = (
     "force_total",  # sum of all spring forces, tensile included (N)
     "n_compressed",
     "n_tensile",
-    "n_invalid",
+    "n_invalid",  # compressed contacts (of both families) violating Eq 1
     "first_invalid",  # station index of the first invalid contact, -1 if none
     "invalid_family",  # 1: upper-fixed spring on surface 1, 2: lower-fixed on surface 2
 )
@@ -321,6 +321,7 @@ def _accumulate_row(
     kt: float,
     full: bool,
     detach: float,
+    drop: bool,
 ) -> tuple[float, float, float, float, int, int, int]:
     """Sums over stations p0 .. p0+length-1 reading surface 2 at q0 .. q0+length-1."""
     fsum = 0.0
@@ -340,13 +341,15 @@ def _accumulate_row(
             u = c - gap[p]
             fc = kc * max(u, 0.0)
             ft = kt * min(u, 0.0) if u >= -detach else 0.0
+        bad = (den1[p] <= 0.0) + (den2[q] <= 0.0)
         ftot += fc + ft
-        fsum += fc
+        # drop: an invalid contact carries no load in the average (its H is already 0)
+        fsum += fc * (1.0 - 0.5 * bad) if drop else fc
         xsum += fc * (h1x[p] + h2x[q])
         ysum += fc * (h1y[p] + h2y[q])
         n_comp += fc > 0.0
         n_tens += ft < 0.0
-        n_inv += (fc > 0.0) & ((den1[p] <= 0.0) | (den2[q] <= 0.0))
+        n_inv += bad if fc > 0.0 else 0
     return fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv
 
 
@@ -370,6 +373,7 @@ def sample_nb(
     load: float,
     c_in: float,
     detach: float = math.inf,
+    drop: bool = False,
 ) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
     """One time sample (spec section 4, steps 1-5) over all stations; see ``SAMPLE_FIELDS``.
 
@@ -379,7 +383,8 @@ def sample_nb(
     grid, read at the station index shifted by whole stations (kx, ky), 0 <= kx < nx,
     0 <= ky < ny: station (i, k) sees entry ((i - kx) mod nx, (k - ky) mod ny). Both
     families share the station and its compression ``u = c - gap``; only compressed
-    springs carry friction (Eqs 5-9 summed per station). Each row of stations (a grid row
+    springs carry friction (Eqs 5-9 summed per station); with ``drop`` a contact
+    violating Eq 1 is left out of the compressed-force sum too. Each row of stations (a grid row
     in 2-D, all stations in 1-D) is processed as two contiguous runs, before and after
     the wrap of the shifted index, which the compiler vectorises.
     """
@@ -421,7 +426,7 @@ def sample_nb(
                 continue
             part = _accumulate_row(
                 gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc, kt, full,
-                detach,
+                detach, drop,
             )  # fmt: skip
             fsum += part[0]
             xsum += part[1]
@@ -471,6 +476,7 @@ def sample_np(
     load: float,
     c_in: float,
     detach: float = math.inf,
+    drop: bool = False,
 ) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
     """NumPy twin of :func:`sample_nb` (load balance by sorting instead of Newton)."""
 
@@ -494,24 +500,26 @@ def sample_np(
         ft = np.where((u > 0.0) | (u < -detach), 0.0, kt * u)
     comp = fc > 0.0
     bad1 = den1[comp] <= 0.0
-    bad = bad1 | (shifted(den2)[comp] <= 0.0)
+    bad2 = shifted(den2)[comp] <= 0.0
+    bad = bad1 | bad2
     idx = np.flatnonzero(comp)
     first = int(idx[bad][0]) if bad.any() else -1
     family = 0 if first < 0 else (1 if bool(bad1[bad][0]) else 2)
     f = fc[comp]
+    f_kept = f * (1.0 - 0.5 * (bad1.astype(float) + bad2)) if drop else f
     with np.errstate(invalid="ignore", over="ignore"):
         x = float(np.sum(f * (h1x[comp] + shifted(h2x)[comp])))
         y = float(np.sum(f * (h1y[comp] + shifted(h2y)[comp])))
     return (
         float(c),
         iterations,
-        float(f.sum()),
+        float(f_kept.sum()),
         x,
         y,
         float(fc.sum() + ft.sum()),
         int(comp.sum()),
         int(np.count_nonzero(ft < 0.0)),
-        int(bad.sum()),
+        int(bad1.sum() + bad2.sum()),
         first,
         family,
     )

@@ -26,13 +26,16 @@ periods in 2-D; sampled surfaces: their own grid), ``time_samples`` = 400 per re
 period, ``travel`` (``"auto"``: exact return when the direction is commensurate, else
 the ergodic average over all relative shifts), ``phase`` = in phase, ``on_invalid`` =
 ``"raise"`` (a :class:`~frictionlab.errors.ValidityError` when a compressed contact
-violates Eq 1's bound) or ``"mask"``; ``engine`` = ``"numba"`` or ``"numpy"``.
+violates Eq 1's bound), ``"mask"`` or ``"drop"``; ``engine`` = ``"numba"`` or ``"numpy"``;
+``full_contact`` = ``"average"`` (``load="full"`` as the direct area average of
+:mod:`frictionlab.roughness.full_contact`, no time sampling) or ``"lattice"``;
+``snap_time_samples`` = True (return paths use whole-station shifts).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field, fields, replace
 from typing import Any
 
@@ -43,6 +46,7 @@ from frictionlab._arrays import readonly
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness import _kernels
 from frictionlab.roughness.closed_forms import max_mu0
+from frictionlab.roughness.full_contact import full_contact_sums
 from frictionlab.roughness.surface import HeightMap, Surface
 
 __all__ = [
@@ -72,7 +76,8 @@ MU_DEFINITIONS = ("magnitude", "projection")
 CONTROLS = ("load", "separation")
 TRAVEL_MODES = ("auto", "return", "ergodic")
 ENGINES = ("numba", "numpy")
-ON_INVALID = ("raise", "mask")
+ON_INVALID = ("raise", "mask", "drop")
+FULL_CONTACT_METHODS = ("average", "lattice")
 
 
 def _is_int(value: Any) -> bool:
@@ -137,7 +142,23 @@ class LatticeSettings:
         ``"magnitude"`` (default) or ``"projection"`` (section 8.2).
     on_invalid:
         ``"raise"`` (default): a ValidityError when a compressed contact violates Eq 1's
-        bound; ``"mask"``: that direction gets ``valid = False`` and NaN coefficients.
+        bound (raised at the first offending time sample); ``"mask"``: that direction gets
+        ``valid = False`` and NaN coefficients; ``"drop"``: the offending contacts are left
+        out (they carry neither load nor friction in the averages, the load balance still
+        counts their springs) and their fraction of all 2 N contacts, averaged over the
+        time samples, is reported per direction (``invalid_fraction``).
+    full_contact:
+        How ``load="full"`` is computed: ``"average"`` (default): the direct area average
+        of the multipliers over both surfaces (:mod:`frictionlab.roughness.full_contact`,
+        spec section 2.6), all directions in one pass, no time sampling
+        (``time_samples = 0``, travel mode ``"average"``); ``"lattice"``: the time-sampled
+        lattice (identical when its shifts are whole stations; kept for comparison).
+    snap_time_samples:
+        ``True`` (default): on a return path, the number of time samples is moved to the
+        nearest count whose shifts are whole station spacings (it then divides the station
+        grid along the path), so the upper surface is evaluated once and read rolled. This
+        changes mu only by the quadrature error of the time average (the samples still
+        cover one relative period uniformly). ``False``: exactly ``time_samples``.
     engine:
         ``"numba"`` (default, compiled kernels) or ``"numpy"`` (reference twin).
     """
@@ -156,6 +177,8 @@ class LatticeSettings:
     mu_definition: str = "magnitude"
     on_invalid: str = "raise"
     engine: str = "numba"
+    full_contact: str = "average"
+    snap_time_samples: bool = True
 
     def __post_init__(self) -> None:
         if self.control not in CONTROLS:
@@ -227,6 +250,12 @@ class LatticeSettings:
             raise ParameterError("on_invalid", self.on_invalid, f"one of {ON_INVALID}")
         if self.engine not in ENGINES:
             raise ParameterError("engine", self.engine, f"one of {ENGINES}")
+        if self.full_contact not in FULL_CONTACT_METHODS:
+            raise ParameterError(
+                "full_contact", self.full_contact, f"one of {FULL_CONTACT_METHODS}"
+            )
+        if not isinstance(self.snap_time_samples, bool):
+            raise ParameterError("snap_time_samples", self.snap_time_samples, "true or false")
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready dictionary of the settings."""
@@ -339,7 +368,9 @@ class FrictionPolar:
     is still in ``force_x``, ``force_y``). ``contact_fraction_*`` and
     ``tensile_fraction_*`` are the fractions of compressed and of stretched springs over
     the time samples (``*_min``/``*_max``: extreme sample; ``*_mean``: average over the
-    period); contact is 1 in full contact.
+    period); contact is 1 in full contact. ``invalid_fraction`` is the fraction of all
+    2 N contacts violating Eq 1 that ``on_invalid="drop"`` left out (time-averaged; 0
+    for the other modes, where such a direction raises or is masked).
 
     Forces are time averages per spring (N; both families, ``2 N_stations`` springs):
     ``force_x``, ``force_y`` are the resisting force R^(c) of the compressed springs
@@ -359,6 +390,7 @@ class FrictionPolar:
     mu_projection: FloatArray
     mu_apparent: FloatArray | None
     valid: NDArray[np.bool_]
+    invalid_fraction: FloatArray
     contact_fraction_min: FloatArray
     contact_fraction_mean: FloatArray
     tensile_fraction_max: FloatArray
@@ -418,6 +450,8 @@ class FrictionPolar:
             contact_fraction_mean=self.contact_fraction_mean,
             time_samples=self.time_samples,
         )
+        if self.settings.on_invalid == "drop":
+            out["invalid_fraction"] = self.invalid_fraction
         if not isinstance(self.settings.load, str):
             out.update(
                 tangential_force=self.tangential_force,
@@ -520,6 +554,8 @@ def _sliding_path(geometry: LatticeGeometry, beta_deg: float, settings: LatticeS
                 return _Path(shifts, "ergodic", None)
             return _Path(phase[None, :], "static", 0.0)
         # s_x sweeps one period along x; y plays no role for profiles.
+        if settings.snap_time_samples:
+            j = np.arange(_snap(nt, geometry.shape[0]))[:, None] / _snap(nt, geometry.shape[0])
         step = np.array([math.copysign(lx, cb), math.copysign(lx, cb) * sb / abs(cb)])
         return _Path(phase + j * step, "return", lx / abs(cb))
     assert ly is not None
@@ -528,6 +564,10 @@ def _sliding_path(geometry: LatticeGeometry, beta_deg: float, settings: LatticeS
         if vec is not None:
             m, n = vec
             total = nt * max(abs(m), abs(n))
+            if settings.snap_time_samples:
+                total = _snap(
+                    total, math.gcd(abs(m) * geometry.shape[0], abs(n) * geometry.shape[1])
+                )
             jj = np.arange(total)[:, None] / total
             return _Path(
                 phase + jj * np.array([m * lx, n * ly]), "return", math.hypot(m * lx, n * ly)
@@ -546,6 +586,27 @@ def _sliding_path(geometry: LatticeGeometry, beta_deg: float, settings: LatticeS
     a, b = np.meshgrid(np.arange(na) / na, np.arange(nb) / nb, indexing="ij")
     shifts = phase + np.stack([a.ravel() * lx, b.ravel() * ly], axis=1)
     return _Path(shifts, "ergodic", None)
+
+
+def snap_count(count: int, stations: int) -> int:
+    """The divisor of ``stations`` nearest to ``count`` (ratio scale; a tie goes up).
+
+    Time samples on a return path are whole-station shifts exactly when their number
+    divides ``stations`` (the station count crossed along the path).
+    """
+    best = stations
+    best_err = math.inf
+    for d in range(1, math.isqrt(stations) + 1):
+        if stations % d:
+            continue
+        for v in (d, stations // d):
+            err = abs(math.log(v / count))
+            if err < best_err - 1e-12 or (abs(err - best_err) <= 1e-12 and v > best):
+                best, best_err = v, err
+    return best
+
+
+_snap = snap_count
 
 
 def _ergodic_count(target: int, stations: int) -> int:
@@ -580,6 +641,7 @@ def friction_polar(
     mu0: float,
     beta_deg: ArrayLike,
     settings: LatticeSettings | None = None,
+    progress: Callable[[int, int], None] | None = None,
     **options: Any,
 ) -> FrictionPolar:
     """Time-averaged friction coefficients of the lattice-spring model for each direction.
@@ -597,6 +659,9 @@ def friction_polar(
         Sliding directions (degrees from the x axis).
     settings, options:
         A :class:`LatticeSettings`, or its fields as keyword arguments (not both).
+    progress:
+        Optional callback ``progress(done, total)`` after each direction (for progress
+        bars; the physics does no I/O).
 
     Raises
     ------
@@ -617,7 +682,16 @@ def friction_polar(
     m0 = _check_mu0(mu0)
     betas = check_betas(beta_deg)
     lattice = _prepare(lower, upper, settings)
-    results = [_direction(lattice, lower, upper, m0, float(b), settings) for b in betas]
+    if lattice.mode == _kernels.MODE_FULL and settings.full_contact == "average":
+        results = _average_directions(lattice, lower, upper, m0, betas, settings)
+        if progress is not None:
+            progress(betas.size, betas.size)
+    else:
+        results = []
+        for i, b in enumerate(betas):
+            results.append(_direction(lattice, lower, upper, m0, float(b), settings))
+            if progress is not None:
+                progress(i + 1, betas.size)
     mu_x = np.array([r.mu_x for r in results])
     mu_y = np.array([r.mu_y for r in results])
     cos_b = np.array([_cos_sin_deg(float(b))[0] for b in betas])
@@ -637,6 +711,7 @@ def friction_polar(
         if settings.load == 0.0
         else readonly(np.array([r.mu_apparent for r in results]), None),
         valid=readonly(np.array([r.invalid is None for r in results]), None),
+        invalid_fraction=readonly(np.array([r.invalid_fraction for r in results]), None),
         contact_fraction_min=readonly(np.array([r.contact_min for r in results]), None),
         contact_fraction_mean=readonly(np.array([r.contact_mean for r in results]), None),
         tensile_fraction_max=readonly(np.array([r.tensile_max for r in results]), None),
@@ -654,7 +729,7 @@ def friction_polar(
         mu0=m0,
         settings=settings,
         geometry=lattice.geometry,
-        spring_evaluations=sum(r.samples for r in results) * lattice.geometry.n_stations,
+        spring_evaluations=sum(max(r.samples, 1) for r in results) * lattice.geometry.n_stations,
         success=n_bad == 0,
         message="ok" if n_bad == 0 else f"{n_bad} of {betas.size} directions violate Eq 1's bound",
         invalid_messages=messages,
@@ -699,6 +774,59 @@ class _Direction:
     travel_mode: str
     travel: float | None
     invalid: str | None
+    invalid_fraction: float = 0.0
+
+
+def _average_directions(
+    lat: _Lattice,
+    lower: Surface,
+    upper: Surface,
+    mu0: float,
+    betas: FloatArray,
+    settings: LatticeSettings,
+) -> list[_Direction]:
+    """Full contact of every direction as the area average of the multipliers (section 2.6)."""
+    cs = np.array([_cos_sin_deg(float(b)) for b in betas])
+    sums = full_contact_sums(
+        mu0, lat.g1, lat.g2, cs[:, 0], cs[:, 1], drop=settings.on_invalid == "drop",
+        engine=settings.engine,
+    )  # fmt: skip
+    mu_x, mu_y = sums.mu_x, sums.mu_y
+    out = []
+    for d, beta in enumerate(betas):
+        invalid = None
+        if sums.invalid[d] > 0 and settings.on_invalid != "drop":
+            invalid = _invalid_message(
+                lower, upper, lat.geometry, mu0, float(beta), np.array([settings.phase]),
+                (0, int(sums.worst_station[d]), int(sums.worst_family[d])),
+            )  # fmt: skip
+            if settings.on_invalid == "raise":
+                raise ValidityError(invalid)
+        mx = math.nan if invalid else float(mu_x[d])
+        my = math.nan if invalid else float(mu_y[d])
+        fraction = float(sums.invalid_fraction[d]) if settings.on_invalid == "drop" else 0.0
+        out.append(
+            _Direction(
+                mu_x=mx,
+                mu_y=my,
+                mu_apparent=math.hypot(mx, my),
+                contact_min=1.0,
+                contact_mean=1.0,
+                tensile_max=0.0,
+                tensile_mean=0.0,
+                force_x=mx,
+                force_y=my,
+                compressed_force=1.0,
+                in_contact=True,
+                samples=0,
+                iterations=0,
+                travel_mode="average",
+                travel=None,
+                invalid=invalid,
+                invalid_fraction=fraction,
+            )
+        )
+    return out
 
 
 def _prepare(lower: Surface, upper: Surface, settings: LatticeSettings) -> _Lattice:
@@ -765,6 +893,8 @@ def _direction(
     first_invalid: tuple[int, int, int] | None = None
     full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
     detach = math.inf if settings.detachment is None else settings.detachment
+    drop = settings.on_invalid == "drop"
+    dropped = 0.0
     for j, (sx, sy) in enumerate(path.shifts):
         whole = _whole_stations(sx - px, sy - py, lat.spacing, lat.geometry.dimension)
         if whole is not None and full_whole is not None:
@@ -783,7 +913,7 @@ def _direction(
                 kx = ky = 0
             res = sample(
                 lat.z1, h1x, h1y, den1, z2, h2x, h2y, den2, lat.nx, lat.ny, kx, ky,
-                settings.k_c, settings.k_t, lat.mode, lat.load, c, detach,
+                settings.k_c, settings.k_t, lat.mode, lat.load, c, detach, drop,
             )  # fmt: skip
             if lat.mode == _kernels.MODE_FULL and whole is not None:
                 full_whole = res
@@ -805,8 +935,14 @@ def _direction(
         fractions[j] = n_comp / n_st
         t_max = max(t_max, n_tens / n_st)
         t_sum += n_tens / n_st
-        if n_inv and first_invalid is None:
+        if n_inv and first_invalid is None and not drop:
             first_invalid = (j, first, family)
+            if settings.on_invalid == "raise":  # stop at once: the rest is wasted work
+                raise ValidityError(
+                    _invalid_message(lower, upper, lat.geometry, mu0, beta, path.shifts,
+                                     first_invalid)
+                )  # fmt: skip
+        dropped += n_inv / (2.0 * n_st)
     n_samples = int(path.shifts.shape[0])
     per_spring = 1.0 / (2.0 * n_st * n_samples)  # time average over both families
     outcome = _Direction(
@@ -826,6 +962,7 @@ def _direction(
         travel_mode=path.mode,
         travel=path.travel,
         invalid=None,
+        invalid_fraction=dropped / n_samples if drop else 0.0,
     )
     if first_invalid is not None:
         message = _invalid_message(

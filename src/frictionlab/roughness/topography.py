@@ -30,23 +30,67 @@ Undefined data (NaN, e.g. optical dropouts) is refused unless ``fill_missing=Tru
 which fills it by SurfaceTopography's harmonic interpolation (``interpolate_undefined_data``)
 before detrending. Samples are placed at pixel centres (SurfaceTopography's positions
 shifted by half a pixel; a uniform translation that does not change friction).
+
+**Axes.** ``heights[i, j]`` is the height at ``(x_i, y_j)``: the first array axis is x
+(SurfaceTopography's convention, kept for every format). A ``.npy`` array is read as is
+(first index x). A plain-text matrix is read by SurfaceTopography's ``asc`` reader, which
+takes each *row of the file* as a line at constant y (the layout Gwyddion and
+``Topography.to_matrix`` write): save an array with ``numpy.savetxt(name, heights.T)``.
+The sliding direction beta is measured from x.
+
+**Preparation** (:func:`prepare_topography`, in this order, each optional):
+``crop = (x0, x1, y0, y1)`` (m, from the scan's origin, a line scan takes (x0, x1));
+``fill_missing``; ``detrend``; ``window`` (SurfaceTopography's window, e.g. ``"hann"``,
+which tapers the heights to zero at the edges); conversion to metres; periodicity;
+``long_cutoff`` and ``short_cutoff`` (m), SurfaceTopography's ``longcut`` and ``shortcut``
+Fourier filters (circular step) on the now periodic data. :class:`PreparedSurface`
+records every step, the rms height and rms slope after filtering, and warns when
+``periodicity="assume"`` makes the edge step steeper than any interior step.
 """
 
 from __future__ import annotations
 
+import hashlib
+import math
 import os
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.roughness.generators import from_array
 from frictionlab.roughness.surface import SampledHeightMap, SampledProfile
 
-__all__ = ["DETREND_MODES", "PERIODICITY_MODES", "from_topography", "read_surface"]
+__all__ = [
+    "DETREND_MODES",
+    "PERIODICITY_MODES",
+    "PreparedSurface",
+    "from_topography",
+    "prepare_topography",
+    "read_prepared",
+    "read_surface",
+]
+
+FloatArray = NDArray[np.float64]
 
 PERIODICITY_MODES = ("require", "assume", "mirror")
 DETREND_MODES = ("none", "center", "height", "curvature")
+
+
+@dataclass(frozen=True)
+class PreparedSurface:
+    """A measured surface ready for the lattice, with what was done to it.
+
+    ``info``: JSON-ready provenance (source sizes and points, crop, filled points,
+    detrend, window, periodicity, filters, rms height (m) and rms slope after
+    filtering); ``warnings``: sentences for the user (e.g. an artificial edge step).
+    """
+
+    surface: SampledProfile | SampledHeightMap
+    info: dict[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
 
 
 def from_topography(
@@ -58,6 +102,31 @@ def from_topography(
     gradient: str = "fd",
 ) -> SampledProfile | SampledHeightMap:
     """Convert a SurfaceTopography line scan or topography to a frictionlab surface (SI).
+
+    The surface of :func:`prepare_topography` without crop, window or filters.
+    """
+    return prepare_topography(
+        topography,
+        periodicity=periodicity,
+        detrend=detrend,
+        fill_missing=fill_missing,
+        gradient=gradient,
+    ).surface
+
+
+def prepare_topography(
+    topography: Any,
+    *,
+    periodicity: str,
+    detrend: str,
+    fill_missing: bool = False,
+    gradient: str = "fd",
+    crop: tuple[float, ...] | None = None,
+    window: str | None = None,
+    short_cutoff: float | None = None,
+    long_cutoff: float | None = None,
+) -> PreparedSurface:
+    """Crop, fill, detrend, window, make periodic and filter a topography (module docstring).
 
     Parameters
     ----------
@@ -72,6 +141,13 @@ def from_topography(
         Fill undefined heights by harmonic interpolation instead of refusing them.
     gradient:
         Gradient of the sampled surface: ``"fd"`` (default) or ``"spectral"``.
+    crop:
+        ``(x0, x1, y0, y1)`` (m, from the scan origin; (x0, x1) for a line scan): keep the
+        pixels whose centres lie inside.
+    window:
+        A SurfaceTopography window name (``"hann"``, ...), applied after detrending.
+    short_cutoff, long_cutoff:
+        Shortest and longest wavelength kept (m), ``short_cutoff < long_cutoff``.
     """
     if periodicity not in PERIODICITY_MODES:
         raise ParameterError("periodicity", periodicity, f"one of {PERIODICITY_MODES}")
@@ -85,13 +161,20 @@ def from_topography(
         )
     if topography.dim not in (1, 2):
         raise ParameterError("topography.dim", topography.dim, "1 (line scan) or 2 (topography)")
+    for name, value in (("short_cutoff", short_cutoff), ("long_cutoff", long_cutoff)):
+        if value is not None and not (isinstance(value, int | float) and 0.0 < value < math.inf):
+            raise ParameterError(name, value, "a wavelength > 0 in m")
+    if short_cutoff is not None and long_cutoff is not None and short_cutoff >= long_cutoff:
+        raise ParameterError(
+            "short_cutoff", short_cutoff, f"a wavelength below long_cutoff = {long_cutoff:g} m"
+        )
     if periodicity == "require":
         if not topography.is_periodic:
             raise ParameterError(
                 "periodicity",
                 "require",
                 "a topography that declares itself periodic; this one does not: choose "
-                "periodicity='assume' (use the data as one period) or 'mirror'",
+                "periodicity = 'assume' (use the data as one period) or 'mirror'",
             )
         if detrend in ("height", "curvature"):
             raise ParameterError(
@@ -99,30 +182,189 @@ def from_topography(
                 detrend,
                 "'none' or 'center' for a periodic topography (removing a tilt breaks periodicity)",
             )
+        if window is not None or crop is not None:
+            raise ParameterError(
+                "window" if window is not None else "crop",
+                window if window is not None else list(crop or ()),
+                "none with periodicity = 'require' (it breaks periodicity)",
+            )
+    raw_sizes = [float(v) for v in np.ravel(topography.physical_sizes)]
+    if len(raw_sizes) != topography.dim or not all(v > 0 and math.isfinite(v) for v in raw_sizes):
+        grid = "x".join(str(int(v)) for v in np.ravel(topography.nb_grid_pts))
+        raise ParameterError(
+            "physical_sizes",
+            raw_sizes,
+            f"{topography.dim} sizes > 0 (one per axis of the {grid} data, in `unit`)",
+        )
     if topography.unit is None:
-        raise ParameterError("unit", None, "a length unit on the topography (e.g. 'um')")
+        raise ParameterError("unit", None, "a length unit for the file (e.g. unit = 'um')")
+    try:
+        to_metres = float(_unit_factor(topography.unit))
+    except (KeyError, ValueError, TypeError):
+        raise ParameterError(
+            "unit", topography.unit, f"a length unit, one of {_length_units()}"
+        ) from None
+    info: dict[str, Any] = {
+        "source_unit": str(topography.unit),
+        "source_physical_sizes_m": [
+            float(v) * to_metres for v in np.ravel(topography.physical_sizes)
+        ],
+        "source_points": [int(v) for v in np.ravel(topography.nb_grid_pts)],
+    }
+    if crop is not None:
+        topography = _crop(topography, crop, to_metres)
+        info["crop_m"] = [float(v) for v in crop]
+        info["cropped_points"] = [int(v) for v in np.ravel(topography.nb_grid_pts)]
+    n_bad = 0
     if topography.has_undefined_data:
         n_bad = int(np.count_nonzero(np.ma.getmaskarray(topography.heights())))
         if not fill_missing:
             raise ParameterError(
                 "heights",
-                f"{n_bad} undefined (NaN) values",
-                "complete data; pass fill_missing=True to fill them by harmonic interpolation",
+                f"{n_bad} undefined points",
+                "complete data: set fill_missing = true to fill them by harmonic "
+                "interpolation, or crop them away",
             )
         topography = topography.interpolate_undefined_data()
+    info["filled_points"] = n_bad
+    info["detrend"] = detrend
     if detrend != "none":
         topography = topography.detrend(detrend_mode=detrend)
-    try:
-        topography = topography.to_unit("m")
-    except (KeyError, ValueError) as exc:
-        raise ParameterError("unit", topography.unit, f"a known length unit ({exc})") from None
-    heights = np.array(np.ma.getdata(topography.heights()), dtype=np.float64)
-    sizes = [float(s) for s in np.ravel(topography.physical_sizes)]
+    info["window"] = window
+    if window is not None:
+        try:
+            topography = topography.window(window=window)
+            topography.heights()
+        except Exception as exc:
+            raise ParameterError(
+                "window", window, f"a window SurfaceTopography knows ({_first(exc)})"
+            ) from None
+    heights = np.array(np.ma.getdata(topography.heights()), dtype=np.float64) * to_metres
+    sizes = [float(s) * to_metres for s in np.ravel(topography.physical_sizes)]
+    warnings: list[str] = []
+    info["periodicity"] = periodicity
+    if periodicity == "assume":
+        step = _edge_steps(heights, sizes)
+        info["edge_step_slope"] = step
+        if step["edge"] > step["interior"]:
+            warnings.append(
+                f"periodicity = 'assume' joins opposite edges with a step of slope "
+                f"{step['edge']:.3g}, steeper than any interior step ({step['interior']:.3g}): "
+                "that artificial face counts as roughness; consider periodicity = 'mirror', "
+                "window = 'hann' or detrend = 'height'"
+            )
     if periodicity == "mirror":
         for axis in range(heights.ndim):
             heights = np.concatenate([heights, np.flip(heights, axis=axis)], axis=axis)
             sizes[axis] *= 2.0
-    return from_array(heights, sizes if heights.ndim == 2 else sizes[0], gradient=gradient)
+    info["short_cutoff_m"] = short_cutoff
+    info["long_cutoff_m"] = long_cutoff
+    if short_cutoff is not None or long_cutoff is not None:
+        heights = band_filter(heights, sizes, short_cutoff, long_cutoff)
+    surface = from_array(heights, sizes if heights.ndim == 2 else sizes[0], gradient=gradient)
+    params = surface.parameters()
+    info["physical_sizes_m"] = sizes
+    info["points"] = [int(v) for v in heights.shape]
+    info["rms_height_m"] = params["rms_height_m"]
+    info["rms_slope"] = params["rms_slope"]
+    return PreparedSurface(surface, info, tuple(warnings))
+
+
+def _length_units() -> list[str]:
+    from SurfaceTopography.Support.UnitConversion import length_units
+
+    return list(length_units)
+
+
+def _unit_factor(unit: Any) -> float:
+    """Metres per ``unit`` (SurfaceTopography's table; KeyError for an unknown unit)."""
+    from SurfaceTopography.Support.UnitConversion import length_units, mangle_length_unit_utf8
+
+    return float(length_units[mangle_length_unit_utf8(str(unit).strip())])
+
+
+def _first(exc: Exception) -> str:
+    text = str(exc).strip().splitlines()
+    return text[0] if text else type(exc).__name__
+
+
+def _crop(topography: Any, crop: tuple[float, ...], to_metres: float) -> Any:
+    """The pixels whose centres lie inside ``crop`` (m), as a new non-periodic topography."""
+    from SurfaceTopography import Topography, UniformLineScan
+
+    dim = topography.dim
+    values = [float(v) for v in crop]
+    if len(values) != 2 * dim or not all(math.isfinite(v) for v in values):
+        raise ParameterError(
+            "crop",
+            values,
+            f"{2 * dim} finite lengths [x0, x1{', y0, y1' if dim == 2 else ''}] in m",
+        )
+    sizes = [float(v) * to_metres for v in np.ravel(topography.physical_sizes)]
+    points = [int(v) for v in np.ravel(topography.nb_grid_pts)]
+    slices = []
+    new_sizes = []
+    for axis in range(dim):
+        lo, hi = values[2 * axis], values[2 * axis + 1]
+        if not (0.0 <= lo < hi <= sizes[axis] * (1 + 1e-12)):
+            name = "xy"[axis]
+            raise ParameterError(
+                "crop",
+                values,
+                f"0 <= {name}0 < {name}1 <= {sizes[axis]:.6g} m (the scan's size along {name})",
+            )
+        d = sizes[axis] / points[axis]
+        centres = (np.arange(points[axis]) + 0.5) * d
+        keep = np.flatnonzero((centres >= lo) & (centres <= hi))
+        if keep.size < 2:
+            raise ParameterError(
+                "crop", values, f"a range holding at least 2 pixels along {'xy'[axis]}"
+            )
+        slices.append(slice(int(keep[0]), int(keep[-1]) + 1))
+        new_sizes.append(keep.size * d / to_metres)
+    heights = topography.heights()[tuple(slices)]
+    if dim == 1:
+        return UniformLineScan(heights, new_sizes[0], unit=topography.unit, periodic=False)
+    return Topography(heights, tuple(new_sizes), unit=topography.unit, periodic=False)
+
+
+def _edge_steps(heights: FloatArray, sizes: list[float]) -> dict[str, float]:
+    """Largest slope of the step across the periodic wrap and of interior steps."""
+    edge = interior = 0.0
+    for axis in range(heights.ndim):
+        d = sizes[axis] / heights.shape[axis]
+        inner = np.abs(np.diff(heights, axis=axis))
+        wrap = np.abs(np.take(heights, 0, axis=axis) - np.take(heights, -1, axis=axis))
+        interior = max(interior, float(inner.max(initial=0.0)) / d)
+        edge = max(edge, float(wrap.max(initial=0.0)) / d)
+    return {"edge": edge, "interior": interior}
+
+
+def band_filter(
+    heights: ArrayLike,
+    sizes: list[float] | tuple[float, ...],
+    short_cutoff: float | None,
+    long_cutoff: float | None,
+) -> FloatArray:
+    """Periodic heights (m) with only wavelengths in [short_cutoff, long_cutoff] kept.
+
+    SurfaceTopography's ``shortcut`` and ``longcut`` filters (circular step in the
+    (q_x, q_y) plane) on the heights taken as one period; None: no cut on that side.
+    Pure (no I/O); the input is not modified.
+    """
+    from SurfaceTopography import Topography, UniformLineScan
+
+    h = np.array(heights, dtype=np.float64)
+    topo: Any = (
+        UniformLineScan(h, sizes[0], periodic=True)
+        if h.ndim == 1
+        else Topography(h, tuple(sizes), periodic=True)
+    )
+    if long_cutoff is not None:
+        topo = topo.longcut(cutoff_wavelength=long_cutoff)
+    if short_cutoff is not None:
+        topo = topo.shortcut(cutoff_wavelength=short_cutoff)
+    return np.array(topo.heights(), dtype=np.float64)
 
 
 def read_surface(
@@ -137,28 +379,80 @@ def read_surface(
     unit: str | None = None,
     physical_sizes: float | tuple[float, ...] | None = None,
 ) -> SampledProfile | SampledHeightMap:
-    """Read a measured surface file with SurfaceTopography and convert it (file I/O here only).
+    """Read a measured surface file: the surface of :func:`read_prepared`.
+
+    Every problem, bad options included, raises :class:`~frictionlab.errors.InputError`.
+    """
+    try:
+        prepared = read_prepared(
+            path,
+            periodicity=periodicity,
+            detrend=detrend,
+            fill_missing=fill_missing,
+            gradient=gradient,
+            format=format,
+            channel=channel,
+            unit=unit,
+            physical_sizes=physical_sizes,
+        )
+    except ParameterError as exc:
+        raise InputError(f"surface file '{os.fspath(path)}': {exc}") from None
+    return prepared.surface
+
+
+def read_prepared(
+    path: str | os.PathLike[str],
+    *,
+    periodicity: str,
+    detrend: str,
+    fill_missing: bool = False,
+    gradient: str = "fd",
+    format: str | None = None,
+    channel: int | None = None,
+    unit: str | None = None,
+    physical_sizes: float | tuple[float, ...] | None = None,
+    crop: tuple[float, ...] | None = None,
+    window: str | None = None,
+    short_cutoff: float | None = None,
+    long_cutoff: float | None = None,
+) -> PreparedSurface:
+    """Read a measured surface file with SurfaceTopography and prepare it (file I/O here only).
 
     ``format`` forces a reader (SurfaceTopography format id such as ``"x3p"``); ``channel``
-    selects a data channel (default: the file's default channel); ``unit`` and
-    ``physical_sizes`` supply metadata the file lacks (an error if the file has them).
-    The other arguments are those of :func:`from_topography`. Unreadable, unknown or
-    corrupt files raise :class:`~frictionlab.errors.InputError`.
+    selects a data channel (default: the file's default channel); ``unit`` (the length
+    unit of heights *and* sizes, e.g. ``"um"``) and ``physical_sizes`` (the scan's size
+    along x, y, **in that unit**) supply metadata the file lacks (an error if the file
+    has them). The other arguments are those of :func:`prepare_topography`; ``info``
+    gains the file name, its sha256, format and channel. Unreadable, unknown or corrupt
+    files raise :class:`~frictionlab.errors.InputError`; bad options a
+    :class:`~frictionlab.errors.ParameterError` naming the option.
     """
     from SurfaceTopography import open_topography
 
     name = os.fspath(path)
     try:
-        reader = open_topography(name, format=format)
+        with open(name, "rb") as handle:
+            digest = hashlib.file_digest(handle, "sha256").hexdigest()
     except FileNotFoundError:
         raise InputError(f"cannot read surface file '{name}': no such file") from None
+    except OSError as exc:
+        raise InputError(f"cannot read surface file '{name}': {_describe(exc)}") from None
+    if os.path.getsize(name) == 0:
+        raise InputError(f"cannot read surface file '{name}': the file is empty")
+    if unit is not None:
+        try:
+            _unit_factor(unit)
+        except KeyError:
+            raise ParameterError("unit", unit, f"a length unit, one of {_length_units()}") from None
+    try:
+        reader = open_topography(name, format=format)
     except Exception as exc:  # SurfaceTopography raises several exception types here
         raise InputError(f"cannot read surface file '{name}': {_describe(exc)}") from None
     kwargs: dict[str, Any] = {}
     if channel is not None:
         last = len(reader.channels) - 1
         if not (0 <= channel <= last):
-            raise InputError(f"channel = {channel} is invalid for '{name}': allowed 0 to {last}")
+            raise ParameterError("channel", channel, f"0 to {last} for '{name}'")
         kwargs["channel_index"] = channel
     if unit is not None:
         kwargs["unit"] = unit
@@ -167,17 +461,37 @@ def read_surface(
     try:
         topography = reader.topography(**kwargs)
     except Exception as exc:
-        raise InputError(f"cannot read surface file '{name}': {_describe(exc)}") from None
-    try:
-        return from_topography(
-            topography,
-            periodicity=periodicity,
-            detrend=detrend,
-            fill_missing=fill_missing,
-            gradient=gradient,
+        text = _describe(exc)
+        key = (
+            "unit"
+            if "unit" in text.lower()
+            else "physical_sizes"
+            if "size" in text.lower()
+            else None
         )
-    except ParameterError as exc:
-        raise InputError(f"surface file '{name}': {exc}") from None
+        if key is not None:
+            raise ParameterError(key, kwargs.get(key), f"accepted by '{name}' ({text})") from None
+        raise InputError(f"cannot read surface file '{name}': {text}") from None
+    prepared = prepare_topography(
+        topography,
+        periodicity=periodicity,
+        detrend=detrend,
+        fill_missing=fill_missing,
+        gradient=gradient,
+        crop=crop,
+        window=window,
+        short_cutoff=short_cutoff,
+        long_cutoff=long_cutoff,
+    )
+    source = {
+        "file": os.path.basename(name),
+        "sha256": digest,
+        "format": getattr(reader, "format", lambda: None)()
+        if callable(getattr(reader, "format", None))
+        else format,
+        "channel": channel,
+    }
+    return PreparedSurface(prepared.surface, {**source, **prepared.info}, prepared.warnings)
 
 
 def _describe(exc: Exception) -> str:

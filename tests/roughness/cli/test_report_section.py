@@ -48,3 +48,22 @@ def test_sections_generated_and_valid(tmp_path) -> None:
     assert np.all(np.ma.getmaskarray(adhesion["mu_apparent"]) == zero)
     life = read_csv(tmp_path / FOLDER / "fig14_hierarchy_wear.csv")
     np.testing.assert_allclose(life["mu_3"][-1], 0.3, rtol=1e-14)
+
+
+def test_measured_section(tmp_path) -> None:
+    from frictionlab.io.roughness_report import measured_section
+
+    section = measured_section(tmp_path)
+    assert section.title == "Lattice-spring roughness: a measured topography file"
+    paths = [f.path for f in section.figures]
+    assert paths == [f"{FOLDER}/measured_polar.png", f"{FOLDER}/measured_multiscale.png"]
+    for fig in section.figures:
+        assert (tmp_path / fig.path).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        caption = fig.caption.strip()
+        assert caption.endswith(".") and caption.count(". ") == 0
+        assert "nan" not in caption.lower()
+    table = read_csv(tmp_path / FOLDER / "measured_multiscale.csv")
+    assert np.all(np.asarray(table["valid"]))
+    mu = np.asarray(table["mu_over_mu0"], dtype=float).reshape(4, 3)
+    assert np.all(mu >= 1.0)  # rough bands only add friction to a flat counter-face
+    assert section.parameters

@@ -78,7 +78,7 @@ def test_missing_data(tmp_path) -> None:
     h[3, 4] = np.nan
     h[10, 2] = np.nan
     Topography(np.ma.masked_invalid(h), SIZE_UM, unit="um").to_x3p(str(path))
-    with pytest.raises(InputError, match=r"2 undefined.*fill_missing"):
+    with pytest.raises(InputError, match=r"2 undefined.*fill_missing = true"):
         read_surface(path, periodicity="assume", detrend="center")
     s = read_surface(path, periodicity="assume", detrend="center", fill_missing=True)
     assert np.all(np.isfinite(s.heights))

@@ -1,7 +1,8 @@
 """The lattice (both engines) against the independent per-spring reference loop.
 
 Tiny lattices (at most 48 stations, 16 time samples) so the plain-Python reference stays
-fast; agreement is to rounding (rtol 1e-10).
+fast; agreement is to rounding (rtol 1e-10). The time samples are used as given (no
+snapping) and full contact is time-sampled too, as the reference does.
 """
 
 from __future__ import annotations
@@ -12,9 +13,17 @@ import numpy as np
 import pytest
 
 from frictionlab.roughness import generators as gen
-from frictionlab.roughness.lattice import friction_polar
+from frictionlab.roughness import lattice
 
 from ..reference import reference_friction
+
+
+def friction_polar(*args, **options):
+    """The time-sampled lattice with exactly the requested samples (the reference's)."""
+    options.setdefault("snap_time_samples", False)
+    options.setdefault("full_contact", "lattice")
+    return lattice.friction_polar(*args, **options)
+
 
 ENGINES = ("numba", "numpy")
 
