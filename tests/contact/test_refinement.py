@@ -21,8 +21,13 @@ def test_the_global_friction_curve_converges_under_mesh_refinement() -> None:
     errors = []
     for h in sizes:
         x, q = _curve(h)
-        np.testing.assert_allclose(x, x_ref, rtol=1e-12, atol=1e-15)  # same load steps
-        errors.append(np.max(np.abs(q - q_ref)) / np.max(np.abs(q_ref)))
+        # compare at the reference's load steps: a mesh whose Newton needs a step cut near
+        # the peak (the law's response has kinks at the slip front) adds steps in between
+        # but still passes through every reference displacement
+        match = np.abs(x[:, None] - x_ref[None, :]) <= 1e-12 * np.max(np.abs(x_ref))
+        assert np.all(match.sum(axis=0) == 1), "every reference load step is reached"
+        q_at = q[np.argmax(match, axis=0)]
+        errors.append(np.max(np.abs(q_at - q_ref)) / np.max(np.abs(q_ref)))
     assert errors[0] > errors[1] > errors[2], errors
     # and at a rate: each halving at least a third off the error
     assert errors[1] < 0.67 * errors[0] and errors[2] < 0.67 * errors[1], errors
