@@ -71,6 +71,18 @@ def test_angle_sweep_is_continuous_for_every_surface(surface: str) -> None:
     assert np.max(jumps) <= bound
 
 
+def _switch_direction(traction: np.ndarray, law: dict) -> np.ndarray:  # type: ignore[type-arg]
+    """Unit slip direction with sum_i fhat_i du_i / A_i^2 = 0 in the principal axes."""
+    beta = np.asarray(law["rotation"])
+    A = np.asarray(law["orthotropy"])
+    c, s = math.cos(law["orthotropy_angle"]), math.sin(law["orthotropy_angle"])
+    Q = np.array([[c, s], [-s, c]])  # contact frame -> principal axes
+    h = Q @ (traction[:2] - traction[2] * beta)
+    d_p = np.array([-h[1] * A[0] ** 2, h[0] * A[1] ** 2])
+    d = Q.T @ d_p
+    return d / max(float(np.hypot(*d)), 1e-300)
+
+
 def _rotate(v: np.ndarray, phi: float) -> np.ndarray:
     c, s = math.cos(phi), math.sin(phi)
     out = np.array(v, dtype=float, copy=True)
@@ -100,9 +112,9 @@ def test_in_plane_rotation_of_the_whole_problem_rotates_the_answer(surface: str)
         du = np.zeros((1, 3))
         if d is not None:
             du[0, :2] = size * (1.0 + rng.uniform()) * np.array([math.cos(d), math.sin(d)])
-        if k % 5 == 4:  # at right angles to the current traction: the old switch point
-            t = a.traction[0, :2] / max(float(np.hypot(*a.traction[0, :2])), 1e-300)
-            du[0, :2] = size * np.array([-t[1], t[0]])
+        if k % 5 == 4:  # where the old code switched: (fhat . du) = 0 in the A-weighted
+            # metric of the principal axes, i.e. the smallest |fhat| of the path at its start
+            du[0, :2] = size * _switch_direction(a.traction[0], base)
         dt = 10.0 * rng.uniform() if k % 3 else 0.0
         sa = update(pa, a, du, dt, raise_on_failure=False)
         sb = update(pb, b, _rotate(du, phi), dt, raise_on_failure=False)
