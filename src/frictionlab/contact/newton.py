@@ -59,9 +59,17 @@ def newton_step(
     free = ~fixed
     K = disc.stiffness
     residuals: list[float] = []
-    response: InterfaceResponse | None = None
+
+    def evaluate(u_trial: np.ndarray) -> tuple[InterfaceResponse, np.ndarray, float]:
+        resp = respond(disc, params, state, u_trial - u_start, dt, tangent)
+        Ku = K @ u_trial
+        r = Ku - f_ext - resp.force
+        scale = max(np.linalg.norm(f_ext), np.linalg.norm(resp.force), np.linalg.norm(Ku))
+        norm = float(np.linalg.norm(r[free]))
+        return resp, r, float(norm / scale) if scale > 0 else norm
+
+    response, r, rel = evaluate(u)
     for it in range(max_iterations + 1):
-        response = respond(disc, params, state, u - u_start, dt, tangent)
         if not response.result.success:
             return NewtonOutcome(
                 False,
@@ -71,11 +79,6 @@ def newton_step(
                 residuals,
                 "the law's local solve failed: " + response.result.message,
             )
-        Ku = K @ u
-        r = Ku - f_ext - response.force
-        scale = max(np.linalg.norm(f_ext), np.linalg.norm(response.force), np.linalg.norm(Ku))
-        norm = float(np.linalg.norm(r[free]))
-        rel = float(norm / scale) if scale > 0 else norm
         if not np.isfinite(rel):
             return NewtonOutcome(False, u, response, it, residuals, "non-finite residual")
         residuals.append(rel)
@@ -89,7 +92,19 @@ def newton_step(
                 delta = solver.solve(response.moduli, -r[free])
         except (sla.LinAlgError, sla.LinAlgWarning, ValueError) as exc:
             return NewtonOutcome(False, u, response, it, residuals, f"singular tangent ({exc})")
-        u[free] += delta
+        # Backtracking: the law's response has kinks (stick/slip, the slip front), where a
+        # full Newton step can overshoot and cycle; halve the step (at most 4 times) while
+        # the residual does not decrease. Full steps are kept whenever they decrease it, so
+        # the quadratic convergence near the solution is untouched.
+        step = 1.0
+        for _ in range(5):
+            trial = u.copy()
+            trial[free] += step * delta
+            t_response, t_r, t_rel = evaluate(trial)
+            if (t_response.result.success and np.isfinite(t_rel) and t_rel < rel) or step <= 0.0625:
+                break
+            step *= 0.5
+        u, response, r, rel = trial, t_response, t_r, t_rel
     return NewtonOutcome(
         False,
         u,
