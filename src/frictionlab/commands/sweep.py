@@ -160,10 +160,13 @@ def _on_pool(tasks: Sequence[Task], workers: int) -> Iterator[TaskResult]:
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     context = multiprocessing.get_context("spawn")  # no fork of a threaded parent
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+    pool = ProcessPoolExecutor(max_workers=workers, mp_context=context)
+    try:
         futures = {pool.submit(run_task, task): task for task in tasks}
         for future in as_completed(futures):
             yield _result(futures[future], future.result)
+    finally:  # on Ctrl-C: drop the queued cases (a re-run does them), let running ones end
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 def _on_dask(tasks: Sequence[Task], address: str) -> Iterator[TaskResult]:
