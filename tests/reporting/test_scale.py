@@ -3,11 +3,15 @@
 from __future__ import annotations
 
 import tomllib
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+from frictionlab.cli import main
 from frictionlab.driver import History
+from frictionlab.errors import InputError
+from frictionlab.io.budget import check_run_size, largest
 from frictionlab.io.results import summarise
 from frictionlab.io.scenario import parse_scenario
 from frictionlab.plotting.law import MAX_CURVES, plot_friction, shown_points
@@ -94,3 +98,50 @@ def test_a_plot_of_many_points_says_it_shows_a_subset() -> None:
     assert len(ax_s.lines) == 2 * MAX_CURVES  # a curve and a hold marker per point drawn
     labels = [t.get_text() for t in ax_t.get_legend().get_texts()]
     assert f"{MAX_CURVES} of {MAX_CURVES + 10} points shown (evenly spaced)" in labels
+
+
+BIG = """
+[law]
+surface = "coulomb"
+mu_s = 0.5
+mu_k = 0.3
+[initial]
+normal_traction = 1.0
+[[program]]
+kind = "slide"
+velocity = 0.1
+distance = 0.02
+steps = 10
+"""
+
+
+@pytest.mark.parametrize(
+    ("override", "key"),
+    [
+        ("program.1.steps=1000000000000", "[[program]] #1.steps makes 1e+12 recorded rows"),
+        ("program.1.steps=9223372036854775807", "[[program]] #1.steps makes 9.223e+18"),
+        ("run.n_points=1000000000", "[run].n_points makes 2 recorded rows x 1000000000"),
+    ],
+)
+def test_absurd_work_is_refused_before_running(
+    override: str, key: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    scenario = tmp_path / "s.toml"
+    scenario.write_text(BIG)
+    out = tmp_path / "out"
+    assert main(["simulate", str(scenario), "--out", str(out), "--set", override]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and key in err[0] and "[run].allow_large = true" in err[0]
+    assert "of memory" in err[0] and "of history.csv" in err[0]
+    assert not out.exists()
+
+
+def test_max_step_sets_the_estimate_and_allow_large_overrides_it() -> None:
+    text = BIG.replace("steps = 10", "max_step = 1e-300")
+    with pytest.raises(InputError, match=r"\[\[program\]\] #1.max_step makes 2e\+298 recorded"):
+        parse_scenario(tomllib.loads(text))
+    estimate = largest([(10**9, "[[program]] #1.steps")], 3, "[run].n_points")
+    assert estimate.rows == 10**9 + 1 and estimate.key == "[[program]] #1.steps"
+    check_run_size(estimate, allow_large=True, memory=1)  # the user insists: no error
+    with pytest.raises(InputError, match=r"2\.1 TB of memory"):
+        check_run_size(estimate, allow_large=False, memory=2**30)
