@@ -132,7 +132,7 @@ def test_absurd_work_is_refused_before_running(
     assert main(["simulate", str(scenario), "--out", str(out), "--set", override]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and key in err[0] and "[run].allow_large = true" in err[0]
-    assert "of memory" in err[0] and "of history.csv" in err[0]
+    assert "of memory" in err[0] and "of output files" in err[0]
     assert not out.exists()
 
 
@@ -143,5 +143,5 @@ def test_max_step_sets_the_estimate_and_allow_large_overrides_it() -> None:
     estimate = largest([(10**9, "[[program]] #1.steps")], 3, "[run].n_points")
     assert estimate.rows == 10**9 + 1 and estimate.key == "[[program]] #1.steps"
     check_run_size(estimate, allow_large=True, memory=1)  # the user insists: no error
-    with pytest.raises(InputError, match=r"2\.1 TB of memory"):
+    with pytest.raises(InputError, match=r"2\.7 TB of memory"):
         check_run_size(estimate, allow_large=False, memory=2**30)

@@ -18,12 +18,16 @@ from frictionlab.errors import InputError
 
 __all__ = ["RunEstimate", "check_run_size", "largest", "physical_memory"]
 
-#: Peak memory of ``frictionlab simulate`` per point and recorded row [bytes]: the
-#: recorder's arrays, the long-format columns and the CSV text being written (measured
-#: on a 10^6-point run; see docs/reliability.md).
-MEMORY_PER_POINT_ROW = 700.0
-#: Size of ``history.csv`` per point and recorded row [bytes] (19 columns, full precision).
-CSV_PER_POINT_ROW = 260.0
+#: Peak memory of ``frictionlab simulate`` per point and recorded row [bytes] (the
+#: recorder's arrays, the long-format columns, the CSV text) and per point (the
+#: per-point entries of summary.json). Measured: 10^6 points x 6 rows peaked at
+#: 11.6 GB resident (docs/reliability.md); these constants give 11.4 GB there.
+MEMORY_PER_POINT_ROW = 900.0
+MEMORY_PER_POINT = 6000.0
+#: Output size per point and row (history.csv, 156 B measured) and per point
+#: (summary.json, 830 B measured) [bytes].
+CSV_PER_POINT_ROW = 160.0
+SUMMARY_PER_POINT = 850.0
 #: Fraction of the physical memory a run may plan to use.
 MEMORY_FRACTION = 0.5
 
@@ -55,12 +59,12 @@ class RunEstimate:
     @property
     def memory(self) -> float:
         """Estimated peak memory [bytes]."""
-        return float(self.rows) * self.points * MEMORY_PER_POINT_ROW
+        return self.points * (MEMORY_PER_POINT + float(self.rows) * MEMORY_PER_POINT_ROW)
 
     @property
     def output(self) -> float:
-        """Estimated size of history.csv [bytes]."""
-        return float(self.rows) * self.points * CSV_PER_POINT_ROW
+        """Estimated size of history.csv and summary.json [bytes]."""
+        return self.points * (SUMMARY_PER_POINT + float(self.rows) * CSV_PER_POINT_ROW)
 
 
 def largest(step_counts: Sequence[tuple[int, str]], points: int, points_key: str) -> RunEstimate:
@@ -78,6 +82,6 @@ def check_run_size(estimate: RunEstimate, allow_large: bool, memory: int | None 
     raise InputError(
         f"{estimate.key} makes {estimate.rows:.4g} recorded rows x {estimate.points} point(s): "
         f"about {_size(estimate.memory)} of memory and {_size(estimate.output)} of "
-        f"history.csv, beyond this machine ({_size(limit)} usable): allowed fewer steps or "
+        f"output files, beyond this machine ({_size(limit)} usable): allowed fewer steps or "
         "points, or [run].allow_large = true to run it anyway"
     )
