@@ -63,6 +63,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     except FrictionlabError as exc:
         print(f"frictionlab: computation failed: {exc}", file=sys.stderr)
         return EXIT_FAILED
+    except MemoryError:
+        print(
+            f"frictionlab: computation failed: out of memory in `{args.command}`: reduce the "
+            "number of points, steps or the grid size",
+            file=sys.stderr,
+        )
+        return EXIT_FAILED
+    except OSError as exc:  # a read or write the commands did not anticipate (disk, device)
+        where = f" ({exc.filename})" if exc.filename else ""
+        print(f"frictionlab: computation failed: {exc.strerror or exc}{where}", file=sys.stderr)
+        return EXIT_FAILED
     except KeyboardInterrupt:
         print("frictionlab: interrupted", file=sys.stderr)
         return EXIT_FAILED

@@ -24,8 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
+from frictionlab.commands._output import add_overwrite
 from frictionlab.commands._progress import progress_bar
-from frictionlab.errors import InputError
 
 HELP = "fit the law's anisotropy to the roughness polar mu(beta) and write a runnable law"
 
@@ -52,6 +52,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         help="override a scenario value, e.g. --set bridge.scale=roughness (repeatable)",
     )
     parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
 
 
@@ -60,21 +61,18 @@ def run(args: argparse.Namespace) -> int:
     from frictionlab.io.bridge_results import run_bridge, write_bridge
     from frictionlab.io.bridge_scenario import parse_bridge_scenario
     from frictionlab.io.config import apply_overrides, load_toml
+    from frictionlab.io.output_set import check_out, output_set
 
     path: Path = args.scenario
-    out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out} exists and is not a directory")
+    out = check_out(args.out, args.overwrite)
     scenario = parse_bridge_scenario(apply_overrides(load_toml(path), args.set), path.parent)
 
     def progress(description: str) -> AbstractContextManager[Callable[[int, int], None]]:
         return progress_bar(description, enabled=not args.quiet)
 
-    result = run_bridge(scenario, path, progress)
-    try:
-        written = write_bridge(out, result)
-    except OSError as exc:
-        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+    with output_set(out, args.overwrite) as oset:
+        result = run_bridge(scenario, path, progress)
+        written = [oset.shown(p) for p in write_bridge(oset.staging, result)]
     fit = result.fit
     if not args.quiet:
         beta = np.asarray(result.law.params.rotation)

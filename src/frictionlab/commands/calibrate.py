@@ -14,11 +14,12 @@ from __future__ import annotations
 import argparse
 import time
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
+from frictionlab.commands._output import add_overwrite
 from frictionlab.commands._progress import progress_bar
-from frictionlab.errors import InputError
 
 HELP = "fit the law's parameters to tribometer curves and write fitted.toml, fit.json, a report"
 
@@ -35,18 +36,24 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         help="override a value, e.g. --set fit.profile=false or --set law.mu_s=0.6",
     )
     parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from frictionlab.calibration import evaluate_columns, fit_law, profile_likelihood
     from frictionlab.io.calibration_config import load_calibration
+    from frictionlab.io.output_set import check_out, output_set
+
+    out = check_out(args.out, args.overwrite)
+    cfg = load_calibration(args.config, args.set)  # every input and data check happens here
+    with output_set(out, args.overwrite) as oset:
+        return _fit_and_write(args, cfg, oset)
+
+
+def _fit_and_write(args: argparse.Namespace, cfg: Any, oset: Any) -> int:
+    from frictionlab.calibration import evaluate_columns, fit_law, profile_likelihood
     from frictionlab.io.calibration_results import CalibrationRun, write_calibration
 
-    out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out} exists and is not a directory")
-    cfg = load_calibration(args.config, args.set)  # every input and data check happens here
     start = time.perf_counter()
     x0 = np.array([[float(getattr(cfg.params, n))] for n in cfg.names])
     start_models = tuple(evaluate_columns(cfg.params, cfg.names, x0, c)[0] for c in cfg.curves)
@@ -63,10 +70,8 @@ def run(args: argparse.Namespace) -> int:
                     fit, cfg.curves, name, points=cfg.profile_points, progress=progress
                 )
     result = CalibrationRun(cfg, fit, start_models, profiles)
-    try:
-        written = write_calibration(out, result, args.config.parent)
-    except OSError as exc:
-        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+    written = write_calibration(oset.staging, result, args.config.parent)
+    written = [oset.shown(p) for p in written]
     if not args.quiet:
         from frictionlab.io.calibration_results import identifiability
 

@@ -13,7 +13,7 @@ import sys
 import time
 from pathlib import Path
 
-from frictionlab.errors import InputError
+from frictionlab.commands._output import add_overwrite
 
 HELP = "run the finite-element contact model (a block on a rigid base) from a TOML file"
 
@@ -31,6 +31,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
 
 
@@ -40,28 +41,28 @@ def run(args: argparse.Namespace) -> int:
     from frictionlab.contact._fem import require_skfem
     from frictionlab.io.contact_results import write_contact_results
     from frictionlab.io.contact_scenario import load_contact_scenario
+    from frictionlab.io.output_set import check_out, output_set
 
-    out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out} exists and is not a directory")
+    out = check_out(args.out, args.overwrite)
     scenario = load_contact_scenario(args.scenario, args.set)  # every input check is here
     require_skfem()
-    start = time.perf_counter()
-    with progress_bar(f"contact {args.scenario.name}", enabled=not args.quiet) as progress:
-        history = run_contact(
-            scenario.block,
-            scenario.params,
-            scenario.normal,
-            scenario.program,
-            options=scenario.options,
-            drive=scenario.drive,
-            progress=(lambda fraction: progress(round(1000 * fraction), 1000)),
+    with output_set(out, args.overwrite) as oset:
+        start = time.perf_counter()
+        with progress_bar(f"contact {args.scenario.name}", enabled=not args.quiet) as progress:
+            history = run_contact(
+                scenario.block,
+                scenario.params,
+                scenario.normal,
+                scenario.program,
+                options=scenario.options,
+                drive=scenario.drive,
+                progress=(lambda fraction: progress(round(1000 * fraction), 1000)),
+            )
+        elapsed = time.perf_counter() - start
+        paths = write_contact_results(
+            oset.staging, scenario, history, elapsed, plots=not args.no_plots
         )
-    elapsed = time.perf_counter() - start
-    try:
-        paths = write_contact_results(out, scenario, history, elapsed, plots=not args.no_plots)
-    except OSError as exc:
-        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+        paths = [oset.shown(p) for p in paths]
     if not args.quiet:
         peak = history.peak_index
         steps = history.iterations[1:]

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from contextlib import AbstractContextManager
 from pathlib import Path
 
+from frictionlab.commands._output import add_overwrite
 from frictionlab.commands._progress import progress_bar
 
 
@@ -22,16 +23,15 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )
     parser.add_argument("--out", type=Path, default=Path("out/demo"), help="output directory")
     parser.add_argument("--quiet", action="store_true", help="no progress output")
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
     from frictionlab.demo import run_demo
-    from frictionlab.errors import InputError
+    from frictionlab.io.output_set import check_out, output_set
 
-    out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out} exists and is not a directory")
+    out = check_out(args.out, args.overwrite)
     start = time.perf_counter()
 
     def log(message: str) -> None:
@@ -41,7 +41,8 @@ def run(args: argparse.Namespace) -> int:
     def progress(description: str) -> AbstractContextManager[Callable[[int, int], None]]:
         return progress_bar(description, enabled=not args.quiet)
 
-    report = run_demo(out, progress=progress, log=log)
+    with output_set(out, args.overwrite) as oset:
+        report = oset.shown(run_demo(oset.staging, progress=progress, log=log))
     print(f"demo finished in {time.perf_counter() - start:.1f} s")
     print(f"report: {report.resolve()}")
     print(f"data and plots of each scenario: {out.resolve()}/<scenario>/")

@@ -57,10 +57,12 @@ from typing import Any
 import numpy as np
 
 from frictionlab._version import __version__
+from frictionlab.commands._output import add_overwrite
 from frictionlab.commands._progress import progress_bar
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_json_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
+from frictionlab.io.output_set import check_out, output_set
 from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
@@ -111,6 +113,7 @@ def add_parser(subparsers: Any) -> argparse.ArgumentParser:
     parser.add_argument(
         "--quiet", action="store_true", help="no progress bar, warnings or summary line"
     )
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
     return parser
 
@@ -118,11 +121,9 @@ def add_parser(subparsers: Any) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     """Run the command; returns the exit code (errors propagate to ``cli.main``)."""
     scenario_path = Path(args.scenario)
-    out_dir = Path(args.out)
     quiet = bool(getattr(args, "quiet", False))
     plots = not getattr(args, "no_plots", False)
-    if out_dir.exists() and not out_dir.is_dir():
-        raise InputError(f"--out '{out_dir}' exists and is not a directory")
+    out_dir = check_out(args.out, args.overwrite)
     data = apply_overrides(load_toml(scenario_path), args.set)
     scenario = parse_roughness_scenario(data, scenario_path.parent)
     if not quiet:
@@ -158,12 +159,13 @@ def run(args: argparse.Namespace) -> int:
     summary["files"] = ["polar.csv", "summary.json", *(["polar.png"] if plots else []), *extra]
     if plots:
         files["polar.png"] = _png(scenario, plot_polar)
-    for name, content in files.items():
-        if isinstance(content, bytes):
-            write_bytes_atomic(out_dir / name, content)
-        else:
-            write_text_atomic(out_dir / name, content)
-    write_json_atomic(out_dir / "summary.json", summary)
+    with output_set(out_dir, args.overwrite) as oset:
+        for name, content in files.items():
+            if isinstance(content, bytes):
+                write_bytes_atomic(oset.staging / name, content)
+            else:
+                write_text_atomic(oset.staging / name, content)
+        write_json_atomic(oset.staging / "summary.json", summary)
     ratio = polar.mu_over_mu0
     names = ", ".join(str(out_dir / name) for name in summary["files"])
     if not quiet:

@@ -5,6 +5,8 @@ programmes, ``DIR/traction_path.png`` (each atomically). Bad input (a wrong key 
 type, a missing value, an unknown surface or segment kind, a physically invalid
 parameter, an unreadable file) is reported on one line with exit code 2 before
 anything is written; a failed computation exits 1 and keeps the history computed so far.
+The files are written as one set (:mod:`frictionlab.io.output_set`): ``DIR`` holds either
+the complete earlier set or the complete new one, never a mixture.
 """
 
 from __future__ import annotations
@@ -14,8 +16,8 @@ import sys
 import time
 from pathlib import Path
 
+from frictionlab.commands._output import add_overwrite
 from frictionlab.commands._progress import progress_bar
-from frictionlab.errors import InputError
 
 HELP = "run a scenario file (TOML) and write history.csv, summary.json and plots"
 
@@ -33,25 +35,24 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    from frictionlab.io.output_set import check_out, output_set
     from frictionlab.io.results import write_results
     from frictionlab.io.scenario import load_scenario
 
-    out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out} exists and is not a directory")
+    out = check_out(args.out, args.overwrite)
     scenario = load_scenario(args.scenario, args.set)  # every input check happens here
-    start = time.perf_counter()
-    with progress_bar(f"simulate {args.scenario.name}", enabled=not args.quiet) as progress:
-        history = scenario.run(progress=progress)
-    elapsed = time.perf_counter() - start
-    try:
-        paths = write_results(out, scenario, history, elapsed, plots=not args.no_plots)
-    except OSError as exc:
-        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+    with output_set(out, args.overwrite) as oset:
+        start = time.perf_counter()
+        with progress_bar(f"simulate {args.scenario.name}", enabled=not args.quiet) as progress:
+            history = scenario.run(progress=progress)
+        elapsed = time.perf_counter() - start
+        paths = write_results(oset.staging, scenario, history, elapsed, plots=not args.no_plots)
+        paths = [oset.shown(p) for p in paths]
     if not args.quiet:
         _report(scenario.labels, history, elapsed)
         print("wrote " + ", ".join(str(p) for p in paths))

@@ -96,10 +96,13 @@ def history_columns(
     return cols, units
 
 
-def _point_summary(history: History, i: int, label: str) -> dict[str, Any]:
-    ratio = history.friction_ratio[:, i]
+def _point_summary(
+    history: History, i: int, label: str, ratios: np.ndarray, paths: np.ndarray
+) -> dict[str, Any]:
+    """Peak and final values of point ``i`` (``ratios``, ``paths``: (rows, N), computed once)."""
+    ratio = ratios[:, i]
     k = int(np.argmax(ratio))
-    path = history.path_length[:, i]
+    path = paths[:, i]
     return {
         "point": i + 1,
         "label": label,
@@ -123,8 +126,8 @@ def _point_summary(history: History, i: int, label: str) -> dict[str, Any]:
     }
 
 
-def _segment_summary(history: History, seg: Any) -> dict[str, Any]:
-    ratio = history.friction_ratio[seg.rows]
+def _segment_summary(history: History, seg: Any, ratios: np.ndarray) -> dict[str, Any]:
+    ratio = ratios[seg.rows]
     resolved = {
         k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in seg.resolved.items()
     }
@@ -149,8 +152,13 @@ def summarise(
     outputs: list[str],
     healing: Healing | None = None,
 ) -> dict[str, Any]:
-    """The content of ``summary.json``."""
+    """The content of ``summary.json``.
+
+    Linear in the number of points and rows: the friction ratio and the path length
+    are computed once for the whole history, not once per point or segment.
+    """
     labels = list(scenario.labels) + [""] * history.n_points
+    ratios, paths = history.friction_ratio, history.path_length
     out: dict[str, Any] = {
         "frictionlab": __version__,
         "scenario": scenario.source,
@@ -161,8 +169,10 @@ def summarise(
         "n_points": history.n_points,
         "steps": history.n_rows - 1,
         "inputs": scenario.inputs,
-        "points": [_point_summary(history, i, labels[i]) for i in range(history.n_points)],
-        "segments": [_segment_summary(history, seg) for seg in history.segments],
+        "points": [
+            _point_summary(history, i, labels[i], ratios, paths) for i in range(history.n_points)
+        ],
+        "segments": [_segment_summary(history, seg, ratios) for seg in history.segments],
         "work": dict(history.work),
         "elapsed_seconds": round(elapsed, 3),
         "outputs": outputs,

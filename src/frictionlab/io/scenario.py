@@ -6,7 +6,7 @@ The schema (public contract, docs/driver.md has every key with its default and u
     description = "..."           # optional
     [law]                         # -> SubloadingParams (same names)
     [initial]                     # normal_traction (required), tangential_traction, F
-    [run]                         # optional: n_points, accuracy, max_halvings
+    [run]                         # optional: n_points, accuracy, max_halvings, allow_large
     [[program]]                   # segments, in order; kind = slide | hold | reverse |
                                   # turn | cycle | normal | traction | table
     [machine]                     # instead of [[program]]: the stick-slip spring-slider
@@ -44,6 +44,7 @@ from frictionlab.driver import (
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.simulate import ProgressCallback, count_points
 from frictionlab.errors import InputError, ParameterError
+from frictionlab.io.budget import RunEstimate, check_run_size, largest
 from frictionlab.io.config import REQUIRED, apply_overrides, load_toml
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
@@ -288,6 +289,7 @@ class RunOptions:
     n_points: int | None = None
     accuracy: float | None = None
     max_halvings: int = 10
+    allow_large: bool = False
 
 
 def _parse_run(t: TomlTable | None) -> RunOptions:
@@ -297,6 +299,7 @@ def _parse_run(t: TomlTable | None) -> RunOptions:
         n_points=_int(t, "n_points", None, 1),
         accuracy=_positive(t, "accuracy"),
         max_halvings=_int(t, "max_halvings", 10, 0),
+        allow_large=t.get("allow_large", bool, False),
     )
     t.finish()
     return opts
@@ -598,13 +601,23 @@ def parse_scenario(
     n = _reraise(
         "scenario", lambda: count_points(params, program or (), init, opts.n_points, sizes)
     )
+    # points alone (one step) before anything of size N is built, then with the steps
+    check_run_size(RunEstimate(2, n, "[run].n_points"), opts.allow_large)
     try:
         init.state(params, n)
     except ParameterError as exc:  # the snap-back check names a [law] field
         section = "[law]" if exc.field in LAW_KEYS else "[initial]"
         raise ParameterError(f"{section}.{exc.field}", exc.value, exc.allowed) from None
     if program is not None:
-        _reraise("[[program]]", lambda: plan_program(program, n))
+        plans = _reraise("[[program]]", lambda: plan_program(program, n))
+        counts = [
+            (p.estimated_steps, f"[[program]] #{i}.{_steps_key(seg)}")
+            for i, (p, seg) in enumerate(zip(plans, program, strict=True), start=1)
+        ]
+    else:
+        assert machine is not None
+        counts = [(_machine_steps(machine), f"[machine].{_steps_key(machine)}")]
+    check_run_size(largest(counts, n, "[run].n_points"), opts.allow_large)
     inputs: dict[str, Any] = {
         "title": title,
         "description": description,
@@ -623,6 +636,18 @@ def parse_scenario(
         n_points=n, program=program, machine=machine, inputs=inputs,
         labels=_labels(n, varying), source=source,
     )  # fmt: skip
+
+
+def _steps_key(seg: Any) -> str:
+    """The key that sets a segment's step count: max_step when given, else steps."""
+    return "max_step" if getattr(seg, "max_step", None) is not None else "steps"
+
+
+def _machine_steps(m: MachineRun) -> int:
+    if m.max_step is not None:
+        longest = float(np.max(np.asarray(m.duration, dtype=np.float64)))
+        return max(1, math.ceil(longest / m.max_step))
+    return m.steps or 1000
 
 
 def load_scenario(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> Scenario:

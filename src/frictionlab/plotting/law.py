@@ -65,7 +65,27 @@ def _colors(n: int) -> list[Any]:
 
     if n <= 10:
         return [colormaps["tab10"](i) for i in range(n)]
-    return [colormaps["viridis"](i / max(n - 1, 1)) for i in range(n)]
+    return list(colormaps["viridis"](np.linspace(0.0, 1.0, n)))  # one vectorised call
+
+
+#: Above this many points the plots draw an evenly spaced subset (first and last
+#: included) and say so in the legend: a million curves would take hours to draw.
+MAX_CURVES = 40
+
+
+def shown_points(n: int) -> np.ndarray:
+    """Indices of the points a plot draws: all up to :data:`MAX_CURVES`, else a subset."""
+    if n <= MAX_CURVES:
+        return np.arange(n)
+    return np.unique(np.round(np.linspace(0.0, n - 1, MAX_CURVES)).astype(int))
+
+
+def _note_subset(ax: Axes, n: int, shown: np.ndarray) -> bool:
+    """Add a legend entry "k of n points shown" when a subset is drawn; True then."""
+    if shown.size >= n:
+        return False
+    ax.plot([], [], " ", label=f"{shown.size} of {n} points shown (evenly spaced)")
+    return True
 
 
 def _log_time(t: np.ndarray) -> bool:
@@ -99,7 +119,9 @@ def plot_friction(
     names = _labels(labels, n)
     colors = _colors(n)
     log_time = _log_time(history.time)
-    for i in range(n):
+    shown_idx = shown_points(n)
+    subset = _note_subset(ax_t, n, shown_idx)
+    for i in shown_idx:
         ax_s.plot(x[:, i], ratio[:, i], color=colors[i], lw=1.2, label=names[i])
         shown = history.time[:, i] > 0 if log_time else slice(None)
         ax_t.plot(history.time[shown, i], ratio[shown, i], color=colors[i], lw=1.2, label=names[i])
@@ -107,7 +129,7 @@ def plot_friction(
     for seg in history.segments:
         if not seg.is_hold:
             continue
-        for i in range(n):
+        for i in shown_idx:
             t0, t1 = history.time[seg.first_row - 1, i], history.time[seg.last_row, i]
             ax_t.axvspan(t0, t1, color="0.6", alpha=0.15, lw=0, label=None if marked else "hold")
             ax_s.plot(x[seg.last_row, i], ratio[seg.last_row, i], "o", color=colors[i], ms=4,
@@ -122,7 +144,7 @@ def plot_friction(
     ax_t.set_ylabel(y_label)
     for ax in (ax_s, ax_t):
         ax.grid(alpha=0.3)
-    if any(names) or marked:
+    if any(names) or marked or subset:
         ax_t.legend(fontsize=8, loc="best")
     if title:
         fig.suptitle(title)
@@ -178,7 +200,9 @@ def plot_traction_path(
             curve = _yield_curve(params, value, float(fn[0, 0]))
             if curve.size:
                 ax.plot(curve[0], curve[1], style, color="0.35", lw=1.0, label=name)
-    for i in range(n):
+    shown_idx = shown_points(n)
+    _note_subset(ax, n, shown_idx)
+    for i in shown_idx:
         ax.plot(r1[:, i], r2[:, i], color=colors[i], lw=1.2, label=names[i])
         ax.plot(r1[-1, i], r2[-1, i], "o", color=colors[i], ms=4)
     ax.set_aspect("equal", adjustable="datalim")
@@ -206,7 +230,9 @@ def plot_spring_slider(
     names = _labels(labels, n)
     colors = _colors(n)
     ratio = history.friction_ratio
-    for i in range(n):
+    shown_idx = shown_points(n)
+    subset = _note_subset(ax_f, n, shown_idx)
+    for i in shown_idx:
         ax_f.plot(load[:, i], ratio[:, i], color=colors[i], lw=1.0, label=names[i])
         rel = np.abs(speed[:, i]) / (V[i] if V[i] > 0 else 1.0)
         ax_v.plot(load[:, i], np.maximum(rel, 1e-6), color=colors[i], lw=1.0, label=names[i])
@@ -217,7 +243,7 @@ def plot_spring_slider(
     ax_v.set_ylabel("slider speed / V [-]")
     for ax in (ax_f, ax_v):
         ax.grid(alpha=0.3)
-    if any(names):
+    if any(names) or subset:
         ax_f.legend(fontsize=8, loc="best")
     return fig
 

@@ -168,32 +168,10 @@ def update(
         raise ParameterError("params", f"{params.n_points} points", f"{n} points, as in the state")
     table = params._kernel_table
     out = kernels.empty_outputs(n)
-    kernels.step_points(
-        np.ascontiguousarray(state.traction),
-        np.ascontiguousarray(state.F),
-        np.ascontiguousarray(state.R),
-        np.ascontiguousarray(state.gap),
-        np.ascontiguousarray(du),
-        np.ascontiguousarray(dt),
-        table,
-        dt.shape[0] == 1,
-        SURFACE_CODES[params.surface],
-        params.tear_k,
-        _U_CODES[params.U_law],
-        _INTEG_CODES[params.F_integrator],
-        _FORM_CODES[params.recovery_form],
-        params.open_recovery == "frozen",
-        out["traction"],
-        out["F"],
-        out["R"],
-        out["gap"],
-        out["dlam"],
-        out["vp"],
-        out["diss"],
-        out["tangent"],
-        out["status"],
-        out["iterations"],
-    )
+    try:
+        _step_points(params, state, du, dt, table, out)
+    except ArithmeticError:  # a division by an underflowed value (f_n ~ 1e-300): no result
+        _keep_old_state(state, out)
     new_state = ContactState._trusted(
         traction=out["traction"],
         F=out["F"],
@@ -222,3 +200,51 @@ def update(
             result=result,
         )
     return result
+
+
+def _step_points(
+    params: SubloadingParams,
+    state: ContactState,
+    du: np.ndarray,
+    dt: np.ndarray,
+    table: np.ndarray,
+    out: dict[str, np.ndarray],
+) -> None:
+    """Call the compiled kernel for every point, filling ``out``."""
+    kernels.step_points(
+        np.ascontiguousarray(state.traction),
+        np.ascontiguousarray(state.F),
+        np.ascontiguousarray(state.R),
+        np.ascontiguousarray(state.gap),
+        np.ascontiguousarray(du),
+        np.ascontiguousarray(dt),
+        table,
+        dt.shape[0] == 1,
+        SURFACE_CODES[params.surface],
+        params.tear_k,
+        _U_CODES[params.U_law],
+        _INTEG_CODES[params.F_integrator],
+        _FORM_CODES[params.recovery_form],
+        params.open_recovery == "frozen",
+        out["traction"],
+        out["F"],
+        out["R"],
+        out["gap"],
+        out["dlam"],
+        out["vp"],
+        out["diss"],
+        out["tangent"],
+        out["status"],
+        out["iterations"],
+    )
+
+
+def _keep_old_state(state: ContactState, out: dict[str, np.ndarray]) -> None:
+    """Fill ``out`` as for failed points: the old state kept, nothing dissipated."""
+    out["traction"][:] = state.traction
+    out["F"][:] = state.F
+    out["R"][:] = state.R
+    out["gap"][:] = state.gap
+    for key in ("dlam", "vp", "diss", "tangent", "iterations"):
+        out[key][:] = 0
+    out["status"][:] = Status.FAILED

@@ -206,6 +206,8 @@ def ratio_of(params: SubloadingParams, traction: np.ndarray, F: np.ndarray) -> n
     p1 = c * fhat[:, 0] + s * fhat[:, 1]
     p2 = -s * fhat[:, 0] + c * fhat[:, 1]
     w = np.hypot(p1 / axes[:, 0], p2 / axes[:, 1])
+    if params.is_cone:  # Phi = w/f_n only: the derivatives (w/f_n^2) underflow at tiny f_n
+        return w / traction[:, 2] / F
     out = np.empty(n)
     for i in range(n):
         out[i] = potential(code, params.tear_k, float(w[i]), float(traction[i, 2]))[0] / F[i]

@@ -1,0 +1,147 @@
+"""Scale: the summary costs a fixed number of whole-history passes; plots draw a subset."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from frictionlab.cli import main
+from frictionlab.driver import History
+from frictionlab.errors import InputError
+from frictionlab.io.budget import check_run_size, largest
+from frictionlab.io.results import summarise
+from frictionlab.io.scenario import parse_scenario
+from frictionlab.plotting.law import MAX_CURVES, plot_friction, shown_points
+
+SCENARIO = """
+[law]
+surface = "coulomb"
+mu_s = 0.5
+mu_k = 0.3
+[initial]
+normal_traction = 1.0
+[run]
+n_points = {n}
+[[program]]
+kind = "slide"
+velocity = 0.1
+distance = 0.02
+steps = 4
+[[program]]
+kind = "hold"
+duration = 1.0
+steps = 2
+[[program]]
+kind = "slide"
+velocity = 0.1
+distance = 0.02
+steps = 4
+"""
+
+
+def _run(n: int) -> tuple[object, History]:
+    scenario = parse_scenario(tomllib.loads(SCENARIO.format(n=n)))
+    return scenario, scenario.run()
+
+
+def test_summary_makes_a_fixed_number_of_whole_history_passes(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Counting the (rows, N) passes: the same for 3 and 300 points (was one per point)."""
+    calls = {"friction_ratio": 0, "path_length": 0}
+    for name in calls:
+        original = getattr(History, name)
+
+        def counted(self: History, _name: str = name, _original: property = original) -> object:
+            calls[_name] += 1
+            return _original.fget(self)  # type: ignore[misc]
+
+        monkeypatch.setattr(History, name, property(counted))
+    counts = []
+    for n in (3, 300):
+        scenario, history = _run(n)
+        for name in calls:
+            calls[name] = 0
+        summary = summarise(scenario, history, 0.0, [])  # type: ignore[arg-type]
+        assert len(summary["points"]) == n
+        counts.append(dict(calls))
+    assert counts[0] == counts[1]
+    assert counts[1]["friction_ratio"] <= 2 and counts[1]["path_length"] <= 2
+
+
+def test_summary_values_match_a_per_point_reference() -> None:
+    scenario, history = _run(5)
+    summary = summarise(scenario, history, 0.0, [])  # type: ignore[arg-type]
+    for i, point in enumerate(summary["points"]):
+        ratio = history.point(i)["friction_ratio"]
+        k = int(np.argmax(ratio))
+        assert point["peak"]["step"] == k
+        assert point["peak"]["friction_ratio"] == pytest.approx(ratio[k], rel=1e-15, abs=0)
+        travelled = np.abs(np.diff(history.slip[: k + 1, i, 0])).sum()
+        assert point["peak"]["slip_distance"] == pytest.approx(travelled, rel=1e-12, abs=1e-300)
+
+
+@pytest.mark.parametrize("n", [1, MAX_CURVES, MAX_CURVES + 1, 10**6])
+def test_plots_draw_an_evenly_spaced_subset(n: int) -> None:
+    shown = shown_points(n)
+    assert shown.size == min(n, MAX_CURVES)
+    assert shown[0] == 0 and shown[-1] == n - 1 and np.all(np.diff(shown) > 0)
+
+
+def test_a_plot_of_many_points_says_it_shows_a_subset() -> None:
+    _, history = _run(MAX_CURVES + 10)
+    fig = plot_friction(history)
+    ax_s, ax_t = fig.axes
+    assert len(ax_s.lines) == 2 * MAX_CURVES  # a curve and a hold marker per point drawn
+    labels = [t.get_text() for t in ax_t.get_legend().get_texts()]
+    assert f"{MAX_CURVES} of {MAX_CURVES + 10} points shown (evenly spaced)" in labels
+
+
+BIG = """
+[law]
+surface = "coulomb"
+mu_s = 0.5
+mu_k = 0.3
+[initial]
+normal_traction = 1.0
+[[program]]
+kind = "slide"
+velocity = 0.1
+distance = 0.02
+steps = 10
+"""
+
+
+@pytest.mark.parametrize(
+    ("override", "key"),
+    [
+        ("program.1.steps=1000000000000", "[[program]] #1.steps makes 1e+12 recorded rows"),
+        ("program.1.steps=9223372036854775807", "[[program]] #1.steps makes 9.223e+18"),
+        ("run.n_points=1000000000", "[run].n_points makes 2 recorded rows x 1000000000"),
+    ],
+)
+def test_absurd_work_is_refused_before_running(
+    override: str, key: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    scenario = tmp_path / "s.toml"
+    scenario.write_text(BIG)
+    out = tmp_path / "out"
+    assert main(["simulate", str(scenario), "--out", str(out), "--set", override]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and key in err[0] and "[run].allow_large = true" in err[0]
+    assert "of memory" in err[0] and "of output files" in err[0]
+    assert not out.exists()
+
+
+def test_max_step_sets_the_estimate_and_allow_large_overrides_it() -> None:
+    text = BIG.replace("steps = 10", "max_step = 1e-300")
+    with pytest.raises(InputError, match=r"\[\[program\]\] #1.max_step makes 2e\+298 recorded"):
+        parse_scenario(tomllib.loads(text))
+    estimate = largest([(10**9, "[[program]] #1.steps")], 3, "[run].n_points")
+    assert estimate.rows == 10**9 + 1 and estimate.key == "[[program]] #1.steps"
+    check_run_size(estimate, allow_large=True, memory=1)  # the user insists: no error
+    with pytest.raises(InputError, match=r"2\.7 TB of memory"):
+        check_run_size(estimate, allow_large=False, memory=2**30)
