@@ -52,7 +52,9 @@ def run(path: Path, out: Path, *extra: str) -> int:
 
 def read_rows(path: Path) -> list[dict[str, str]]:
     with open(path, newline="") as handle:
-        return list(csv.DictReader(line for line in handle if not line.startswith("#")))
+        return [
+            {t.rpartition(" [")[0]: v for t, v in row.items()} for row in csv.DictReader(handle)
+        ]
 
 
 def test_bridge_writes_a_law_that_simulate_runs_as_it_is(tmp_path: Path) -> None:

@@ -38,7 +38,9 @@ def calibrated(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path, in
 
 def read_csv(path: Path, keys: tuple[str, ...]) -> dict[str, np.ndarray]:
     with open(path, newline="") as handle:
-        rows = list(csv.DictReader(line for line in handle if not line.startswith("#")))
+        rows = [
+            {t.rpartition(" [")[0]: v for t, v in row.items()} for row in csv.DictReader(handle)
+        ]
     return {k: np.array([float(r[k]) for r in rows]) for k in keys}
 
 

@@ -360,6 +360,10 @@ def _parse_segment(t: TomlTable, base_dir: Path) -> Any:
     return _reraise(t.where, lambda: cls(**kwargs))
 
 
+#: SI units of the columns of a ``kind = "table"`` file (titles may carry them: ``time [s]``).
+TABLE_UNITS = {"time": "s", "slip_1": "m", "slip_2": "m", "normal_traction": "Pa", "approach": "m"}
+
+
 def _parse_table_segment(t: TomlTable, base_dir: Path) -> Table:
     name = t.get("file", str)
     path = Path(name) if Path(name).is_absolute() else base_dir / name
@@ -378,6 +382,12 @@ def _parse_table_segment(t: TomlTable, base_dir: Path) -> Table:
         raise InputError(
             f"{where}: unknown column '{extra[0]}'; allowed: {', '.join(sorted(allowed))}"
         )
+    for key in cols:
+        unit = cols.units.get(key)
+        if unit is not None and unit != TABLE_UNITS[key]:
+            raise InputError(
+                f"{where}: column '{key}' is in [{unit}]; allowed: [{TABLE_UNITS[key]}] (SI)"
+            )
     for key, arr in cols.items():
         if arr.dtype != np.float64:
             bad = next(v for v in arr if not _is_float(v))
