@@ -16,7 +16,15 @@ from frictionlab._version import __version__
 from frictionlab.errors import FrictionlabError, InputError, ParameterError, ValidityError
 
 #: Subcommand modules under ``frictionlab.commands`` (one job each).
-COMMANDS: tuple[str, ...] = ("demo", "simulate", "roughness", "bridge", "calibrate", "contact")
+COMMANDS: tuple[str, ...] = (
+    "demo",
+    "simulate",
+    "roughness",
+    "bridge",
+    "calibrate",
+    "contact",
+    "example",
+)
 
 EXIT_OK = 0
 EXIT_FAILED = 1
@@ -25,9 +33,24 @@ EXIT_BAD_INPUT = 2
 
 def build_parser() -> argparse.ArgumentParser:
     """Build the argument parser with every registered subcommand."""
+    from importlib import resources
+
+    scenarios = resources.files("frictionlab") / "data" / "scenarios"
     parser = argparse.ArgumentParser(
         prog="frictionlab",
         description="Anisotropic friction: subloading-friction law and lattice-spring roughness.",
+        epilog=(
+            "getting started:\n"
+            "  frictionlab demo --out out/demo     run everything, open out/demo/report.html\n"
+            "  frictionlab example                 list the commented starter scenarios\n"
+            "  frictionlab example simulate > my.toml && "
+            "frictionlab simulate my.toml --out out/my\n"
+            f"bundled scenarios (used by the demo): {scenarios}\n"
+            "documentation: README.md and docs/ in the source tree "
+            "(`make docs` builds the site into site/)\n"
+            "exit codes: 0 success, 1 a computation failed, 2 bad input"
+        ),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("--version", action="version", version=f"frictionlab {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")

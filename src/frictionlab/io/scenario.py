@@ -44,7 +44,7 @@ from frictionlab.driver import (
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.simulate import ProgressCallback, count_points
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.config import REQUIRED, apply_overrides, load_toml
+from frictionlab.io.config import REQUIRED, apply_overrides, load_toml, unknown_key
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
 from frictionlab.subloading import SURFACES, SubloadingParams
@@ -157,9 +157,7 @@ def _reject_unknown(t: TomlTable, allowed: Sequence[str]) -> None:
     """Report a misspelt key before any missing-key error it would cause."""
     for key in t.mapping():
         if key not in allowed:
-            raise InputError(
-                f"unknown key {t.where}.{key}; allowed keys here: {', '.join(sorted(allowed))}"
-            )
+            raise InputError(unknown_key(f"{t.where}.{key}", key, allowed))
 
 
 def _reraise(where: str, call: Callable[[], Any]) -> Any:
