@@ -70,8 +70,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return EXIT_BAD_INPUT
+    from frictionlab.io.provenance import command_line
+
     try:
-        return int(args.handler(args))
+        with command_line(["frictionlab", *(sys.argv[1:] if argv is None else argv)]):
+            return int(args.handler(args))
     except (InputError, ParameterError, ValidityError) as exc:
         print(f"frictionlab: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT

@@ -57,13 +57,13 @@ def read_rows(path: Path) -> list[dict[str, str]]:
         ]
 
 
-def test_bridge_writes_a_law_that_simulate_runs_as_it_is(tmp_path: Path) -> None:
+def test_bridge_writes_a_law_that_simulate_runs_as_it_is(tmp_path: Path, check_summary) -> None:
     out = tmp_path / "out"
     assert run(scenario(tmp_path), out) == 0
     assert sorted(p.name for p in out.iterdir()) == [
         "bridge.json", "bridge.png", "directions.csv", "fitted_law.toml",
     ]  # fmt: skip
-    summary = json.loads((out / "bridge.json").read_text())
+    summary = check_summary(out / "bridge.json")
     # ratchet: beta along +x (tests/bridge/test_fit.py derives the sign); the extra direction
     # 5 deg without a mirror partner at -5 deg tilts beta_y slightly off zero
     assert (

@@ -61,6 +61,7 @@ from frictionlab.commands._progress import progress_bar
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_json_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
+from frictionlab.io.provenance import stamp
 from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
@@ -163,6 +164,7 @@ def run(args: argparse.Namespace) -> int:
             write_bytes_atomic(out_dir / name, content)
         else:
             write_text_atomic(out_dir / name, content)
+    summary = stamp(summary, summary["files"], _input_files(scenario_path, data))
     write_json_atomic(out_dir / "summary.json", summary)
     ratio = polar.mu_over_mu0
     names = ", ".join(str(out_dir / name) for name in summary["files"])
@@ -551,6 +553,16 @@ def _summary(
         },
         "files": ["polar.csv", "summary.json", "polar.png"],
     }
+
+
+def _input_files(scenario_path: Path, data: dict[str, Any]) -> list[Path]:
+    """The scenario file and the topography files it reads (for the provenance block)."""
+    out = [scenario_path]
+    for side in ("lower", "upper"):
+        table = data.get(side)
+        if isinstance(table, dict) and table.get("kind") == "file":
+            out.append(scenario_path.parent / str(table["path"]))  # absolute paths stay
+    return out
 
 
 def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:

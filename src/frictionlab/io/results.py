@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from frictionlab._version import __version__
-from frictionlab.driver import History
+from frictionlab.driver import History, Table
 from frictionlab.driver.healing import Healing, healing_analysis
 from frictionlab.driver.spring_slider import (
     count_slip_events,
@@ -25,6 +25,7 @@ from frictionlab.driver.spring_slider import (
 from frictionlab.driver.table import HISTORY_UNITS, history_columns
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_json_atomic
+from frictionlab.io.provenance import stamp
 from frictionlab.io.scenario import Scenario
 from frictionlab.io.tables import write_csv_atomic
 
@@ -152,9 +153,18 @@ def write_results(
         if healing is not None:
             written.append(_plot_healing(out, scenario, healing))
     names = [p.name for p in written] + ["summary.json"]
-    summary = summarise(scenario, history, elapsed, names, healing)
+    summary = stamp(summarise(scenario, history, elapsed, names, healing), names, _inputs(scenario))
     written.append(write_json_atomic(out / "summary.json", summary))
     return written
+
+
+def _inputs(scenario: Scenario) -> list[Path]:
+    """The scenario file and the table files its programme reads."""
+    if not scenario.source:
+        return []
+    source = Path(scenario.source)
+    tables = [seg.source for seg in scenario.program or () if isinstance(seg, Table) and seg.source]
+    return [source, *(source.parent / name for name in tables)]
 
 
 def _write_healing(out: Path, healing: Healing) -> Path:
