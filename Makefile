@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= out/demo
 
-.PHONY: demo test check lint typecheck pytest bench clean venv
+.PHONY: demo test check lint typecheck docs pytest bench clean venv
 
 venv: $(STAMP)
 
@@ -19,8 +19,8 @@ demo: $(STAMP)
 	$(BIN)/python -c "import skfem" 2>/dev/null || $(BIN)/python -m pip install --quiet -e ".[fem]"
 	$(BIN)/frictionlab demo --out $(OUT)
 
-# The whole test suite: lint, type check, then every test.
-test: check pytest
+# The whole test suite: lint, type check, the docs site (strict), then every test.
+test: check docs pytest
 
 check: lint typecheck
 
@@ -31,6 +31,11 @@ lint: $(STAMP)
 typecheck: $(STAMP)
 	$(BIN)/mypy
 
+# The documentation site (mkdocs + mkdocstrings, API pages from the docstrings) into site/;
+# --strict: any warning (a broken link, a docstring that does not parse) is an error.
+docs: $(STAMP)
+	$(BIN)/mkdocs build --strict --quiet
+
 pytest: $(STAMP)
 	$(BIN)/python -m pytest -n auto -q
 
@@ -38,4 +43,4 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py
 
 clean:
-	rm -rf $(VENV) out .pytest_cache .mypy_cache .ruff_cache .hypothesis
+	rm -rf $(VENV) out site .pytest_cache .mypy_cache .ruff_cache .hypothesis

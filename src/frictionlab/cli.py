@@ -24,6 +24,7 @@ COMMANDS: tuple[str, ...] = (
     "calibrate",
     "contact",
     "sweep",
+    "example",
 )
 
 EXIT_OK = 0
@@ -33,9 +34,24 @@ EXIT_BAD_INPUT = 2
 
 def build_parser() -> argparse.ArgumentParser:
     """Build the argument parser with every registered subcommand."""
+    from importlib import resources
+
+    scenarios = resources.files("frictionlab") / "data" / "scenarios"
     parser = argparse.ArgumentParser(
         prog="frictionlab",
         description="Anisotropic friction: subloading-friction law and lattice-spring roughness.",
+        epilog=(
+            "getting started:\n"
+            "  frictionlab demo --out out/demo     run everything, open out/demo/report.html\n"
+            "  frictionlab example                 list the commented starter scenarios\n"
+            "  frictionlab example simulate > my.toml && "
+            "frictionlab simulate my.toml --out out/my\n"
+            f"bundled scenarios (used by the demo): {scenarios}\n"
+            "documentation: README.md and docs/ in the source tree "
+            "(`make docs` builds the site into site/)\n"
+            "exit codes: 0 success, 1 a computation failed, 2 bad input"
+        ),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("--version", action="version", version=f"frictionlab {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
@@ -55,8 +71,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return EXIT_BAD_INPUT
+    from frictionlab.io.provenance import command_line
+
     try:
-        return int(args.handler(args))
+        with command_line(["frictionlab", *(sys.argv[1:] if argv is None else argv)]):
+            return int(args.handler(args))
     except (InputError, ParameterError, ValidityError) as exc:
         print(f"frictionlab: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT

@@ -38,17 +38,20 @@ def calibrated(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path, in
 
 def read_csv(path: Path, keys: tuple[str, ...]) -> dict[str, np.ndarray]:
     with open(path, newline="") as handle:
-        rows = list(csv.DictReader(line for line in handle if not line.startswith("#")))
+        rows = [
+            {t.rpartition(" [")[0]: v for t, v in row.items()} for row in csv.DictReader(handle)
+        ]
     return {k: np.array([float(r[k]) for r in rows]) for k in keys}
 
 
-def test_outputs_and_fit_json(calibrated) -> None:
+def test_outputs_and_fit_json(calibrated, check_summary) -> None:
     _, out, code = calibrated
     assert code == 0
     for name in ("fitted.toml", "fit.json", "curves.csv", "curve_1.png", "correlation.png",
                  "report.html"):  # fmt: skip
         assert (out / name).is_file(), name
-    fit = json.loads((out / "fit.json").read_text())
+    fit = check_summary(out / "fit.json")
+    assert [Path(i["path"]).suffix for i in fit["provenance"]["inputs"]] == [".toml", ".csv"]
     assert list(fit["parameters"]) == NAMES
     for name, entry in fit["parameters"].items():
         assert abs(entry["value"] - TRUE[name]) < 4.0 * entry["stderr"], name

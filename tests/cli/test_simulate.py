@@ -37,9 +37,15 @@ def mu_ss(v: float) -> float:
 
 
 def read_history(out: Path) -> dict[int, dict[str, np.ndarray]]:
-    """history.csv -> {point: {column: array}}, read with the csv module only."""
+    """history.csv -> {point: {column: array}}, read with the csv module only.
+
+    Titles are ``name [unit]``; the keys here are the names.
+    """
     with open(out / "history.csv", newline="") as handle:
-        rows = list(csv.DictReader(line for line in handle if not line.startswith("#")))
+        rows = [
+            {title.rpartition(" [")[0]: value for title, value in row.items()}
+            for row in csv.DictReader(handle)
+        ]
     points: dict[int, dict[str, list[str]]] = {}
     for row in rows:
         cols = points.setdefault(int(row["point"]), {})
@@ -172,10 +178,9 @@ def test_outputs_of_a_2d_programme(tmp_path: Path) -> None:
     for name in ("friction.png", "traction_path.png"):
         assert (tmp_path / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     lines = (tmp_path / "history.csv").read_text().splitlines()
-    units = next(line for line in lines if line.startswith("# units:"))
-    assert "time [s]" in units and "traction_1 [Pa]" in units and "slip_1 [m]" in units
-    header = next(line for line in lines if not line.startswith("#")).split(",")
-    assert set(REQUIRED_COLUMNS) <= set(header)
+    titles = lines[0].split(",")  # pandas-ready: the header row comes first
+    assert {"time [s]", "traction_1 [Pa]", "slip_1 [m]", "R [-]"} <= set(titles)
+    assert set(REQUIRED_COLUMNS) <= {t.rpartition(" [")[0] for t in titles}
     s = summary(tmp_path)
     assert s["success"] and s["frictionlab"] and s["n_points"] == 6
     assert set(s["outputs"]) == {"history.csv", "friction.png", "traction_path.png", "summary.json"}
@@ -318,11 +323,21 @@ def test_bad_override_and_out_path(tmp_path: Path, capsys: pytest.CaptureFixture
     assert "not a directory" in capsys.readouterr().err
 
 
-def test_table_segment_from_csv(tmp_path: Path) -> None:
-    (tmp_path / "path.csv").write_text(
-        "# a tribometer record\ntime,slip_1,slip_2,normal_traction\n"
-        "0,0,0,1\n1,0.1,0,1\n2,0.2,0,2\n3,0.2,0.1,2\n"
-    )
+PATH_ROWS = "0,0,0,1\n1,0.1,0,1\n2,0.2,0,2\n3,0.2,0.1,2\n"
+PANDAS_ROWS = "".join(f"{i},{row}\n" for i, row in enumerate(PATH_ROWS.splitlines()))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "# a tribometer record\ntime,slip_1,slip_2,normal_traction\n" + PATH_ROWS,
+        # pandas.DataFrame.to_csv: an index column with an empty title, units in the titles
+        ",time [s],slip_1 [m],slip_2 [m],normal_traction [Pa]\n" + PANDAS_ROWS,
+    ],
+    ids=["plain", "pandas-to-csv"],
+)
+def test_table_segment_from_csv(tmp_path: Path, text: str) -> None:
+    (tmp_path / "path.csv").write_text(text)
     scenario = tmp_path / "s.toml"
     scenario.write_text(
         GOOD.replace(
@@ -335,6 +350,17 @@ def test_table_segment_from_csv(tmp_path: Path) -> None:
     assert h["slip_2"][-1] == pytest.approx(0.1, rel=1e-12)
     assert h["traction_n"][-1] == pytest.approx(2.0, rel=1e-12)
     assert h["time"][-1] == pytest.approx(2.0 + 3.0, rel=1e-12)
+
+
+def test_table_segment_in_other_units_is_refused(tmp_path: Path, capsys) -> None:
+    (tmp_path / "path.csv").write_text("time [ms],slip_1 [m]\n0,0\n1,0.1\n")
+    scenario = tmp_path / "s.toml"
+    scenario.write_text(
+        GOOD.replace('kind = "hold"\nduration = 10.0', 'kind = "table"\nfile = "path.csv"')
+    )
+    assert simulate(scenario, tmp_path / "out", "--no-plots") == 2
+    err = capsys.readouterr().err
+    assert "column 'time' is in [ms]; allowed: [s]" in err and err.count("\n") == 1
 
 
 def test_failed_computation_exits_1_and_keeps_the_history(

@@ -18,15 +18,18 @@ SMALL = [
 ]  # fmt: skip
 
 
-def test_bundled_example_end_to_end(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_bundled_example_end_to_end(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], check_summary
+) -> None:
     out = tmp_path / "run"
     with bundled_contact_scenario("pmma_block") as path:
         assert main(["contact", str(path), "--out", str(out), "--quiet", *SMALL]) == 0
     names = {p.name for p in out.iterdir()}
     assert names == {"global.csv", "interface.csv", "summary.json", "friction.png",
                      "interface_map.png", "deformed_mesh.png"}  # fmt: skip
-    summary = json.loads((out / "summary.json").read_text())
+    summary = check_summary(out / "summary.json")  # against docs/schemas/summary.schema.json
     assert summary["success"] is True
+    assert summary["provenance"]["inputs"][0]["path"] == str(path)
     assert summary["inputs"]["block"]["element_size"] == 0.0125
     assert summary["inputs"]["solver"]["tangent"] == "consistent"  # defaults echoed
     g = read_csv(out / "global.csv")

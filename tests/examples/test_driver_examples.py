@@ -17,7 +17,7 @@ def test_slide_hold_slide_example(tmp_path: Path) -> None:
         capture_output=True, text=True, timeout=300,
     )  # fmt: skip
     assert out.returncode == 0, out.stderr
-    rows = np.loadtxt(tmp_path / "restart_peaks.csv", delimiter=",", skiprows=3)
+    rows = np.loadtxt(tmp_path / "restart_peaks.csv", delimiter=",", skiprows=1)
     hold, mu_end, closed, peak = rows.T
     np.testing.assert_array_equal(hold, [1.0, 10.0, 100.0, 1000.0, 1e4])
     np.testing.assert_allclose(mu_end, closed, rtol=1e-12)  # hold recovery in closed form

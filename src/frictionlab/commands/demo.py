@@ -19,7 +19,15 @@ from frictionlab.commands._progress import progress_bar
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser(
-        "demo", help="run the bundled scenarios and write an HTML report (OUT/report.html)"
+        "demo",
+        help="run the bundled scenarios and write an HTML report (OUT/report.html)",
+        description=(
+            "Run the bundled scenarios (the subloading-friction law, the lattice-spring "
+            "roughness model, the bridge between them and the finite-element contact model) "
+            "and write OUT/report.html: each figure with what it shows and the parameters "
+            "used. The data (CSV, JSON) and a copy of each scenario file sit in "
+            "OUT/<section>/. Takes a few minutes."
+        ),
     )
     parser.add_argument("--out", type=Path, default=Path("out/demo"), help="output directory")
     parser.add_argument("--quiet", action="store_true", help="no progress output")

@@ -63,6 +63,7 @@ from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_json_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
 from frictionlab.io.output_set import check_out, output_set
+from frictionlab.io.provenance import stamp
 from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
@@ -159,6 +160,7 @@ def run(args: argparse.Namespace) -> int:
     summary["files"] = ["polar.csv", "summary.json", *(["polar.png"] if plots else []), *extra]
     if plots:
         files["polar.png"] = _png(scenario, plot_polar)
+    summary = stamp(summary, summary["files"], _input_files(scenario_path, data))
     with output_set(out_dir, args.overwrite) as oset:
         for name, content in files.items():
             if isinstance(content, bytes):
@@ -553,6 +555,16 @@ def _summary(
         },
         "files": ["polar.csv", "summary.json", "polar.png"],
     }
+
+
+def _input_files(scenario_path: Path, data: dict[str, Any]) -> list[Path]:
+    """The scenario file and the topography files it reads (for the provenance block)."""
+    out = [scenario_path]
+    for side in ("lower", "upper"):
+        table = data.get(side)
+        if isinstance(table, dict) and table.get("kind") == "file":
+            out.append(scenario_path.parent / str(table["path"]))  # absolute paths stay
+    return out
 
 
 def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:

@@ -219,6 +219,23 @@ class History:
         """True when slip and traction stay on the e_1 axis (a 1-D programme)."""
         return bool(np.all(self.slip[..., 1] == 0.0) and np.all(self.traction[..., 1] == 0.0))
 
+    def __repr__(self) -> str:
+        return (
+            f"History({self.n_points} points x {self.n_rows} rows, "
+            f"{len(self.segments)} segments, success={self.success})"
+        )
+
+    def to_dataframe(self, cone: bool = True) -> Any:
+        """The history as a long-format :class:`pandas.DataFrame`, as in ``history.csv``.
+
+        One row per point and recorded step (point-major); titles ``name [unit]``
+        (``time [s]``, ``traction_1 [Pa]``, ...). ``cone=False`` gives F in Pa (closed
+        sliding-yield surfaces). pandas is imported on call.
+        """
+        from frictionlab.driver.table import history_dataframe
+
+        return history_dataframe(self, cone)
+
     def point(self, i: int) -> dict[str, np.ndarray]:
         """The series of point ``i`` as 1-D arrays (vectors split into components)."""
         out = {

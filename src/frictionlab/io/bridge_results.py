@@ -35,6 +35,7 @@ from frictionlab.errors import FrictionlabError, InputError, ParameterError
 from frictionlab.io.atomic import write_bytes_atomic, write_json_atomic, write_text_atomic
 from frictionlab.io.bridge_scenario import BridgeScenario
 from frictionlab.io.config import format_toml
+from frictionlab.io.provenance import stamp
 from frictionlab.io.scenario import law_table, parse_scenario
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.lattice import FrictionPolar, friction_polar, merge_polars
@@ -353,5 +354,6 @@ def write_bridge(out: Path, run: BridgeRun) -> list[Path]:
             written.append(write_bytes_atomic(out / name, content))
         else:
             written.append(write_text_atomic(out / name, content))
-    written.append(write_json_atomic(out / "bridge.json", summary(run)))
+    names = [p.name for p in written] + ["bridge.json"]
+    written.append(write_json_atomic(out / "bridge.json", stamp(summary(run), names, [run.source])))
     return written

@@ -38,7 +38,7 @@ from frictionlab.calibration.fit import make_space
 from frictionlab.calibration.model import FITTABLE, Curve, program_duration
 from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.config import Table, apply_overrides, load_toml
+from frictionlab.io.config import Table, apply_overrides, load_toml, unknown_key
 from frictionlab.io.scenario import parse_initial_table, parse_law_table, parse_program_tables
 from frictionlab.io.tribometer import SLIP_UNITS, TIME_UNITS, read_tribometer
 from frictionlab.subloading import SubloadingParams
@@ -102,9 +102,7 @@ def _mapping(t: Table, key: str, allowed: dict[str, Any]) -> dict[str, str]:
     out = {}
     for k in sub.mapping():
         if k not in allowed:
-            raise InputError(
-                f"unknown key {sub.where}.{k}; allowed keys here: {', '.join(sorted(allowed))}"
-            )
+            raise InputError(unknown_key(f"{sub.where}.{k}", k, allowed))
         choices = allowed[k]
         out[k] = sub.get(k, str, choices=tuple(choices) if choices else None)
     sub.finish()

@@ -26,6 +26,7 @@ from frictionlab.calibration import (
 from frictionlab.io.atomic import write_json_atomic, write_text_atomic
 from frictionlab.io.calibration_config import CalibrationConfig
 from frictionlab.io.config import format_toml
+from frictionlab.io.provenance import stamp
 from frictionlab.io.report import Report, Section, format_value
 from frictionlab.io.scenario import law_table
 from frictionlab.io.tables import write_csv_atomic
@@ -267,5 +268,10 @@ def write_calibration(
         )
     written.append(report.write(out / "report.html"))
     names = [p.name for p in written] + ["fit.json"]
-    written.append(write_json_atomic(out / "fit.json", fit_summary(run, names)))
+    cfg = run.config
+    inputs = []
+    if cfg.source:  # the config file, then the data files it names (relative to it)
+        inputs = [Path(cfg.source)] + [Path(cfg.source).parent / e["file"] for e in cfg.data_echo]
+    summary = stamp(fit_summary(run, names), names, inputs)
+    written.append(write_json_atomic(out / "fit.json", summary))
     return written

@@ -8,6 +8,7 @@ never silently ignored.
 
 from __future__ import annotations
 
+import difflib
 import math
 import os
 import tomllib
@@ -19,7 +20,7 @@ import tomli_w
 
 from frictionlab.errors import InputError
 
-__all__ = ["REQUIRED", "Table", "apply_overrides", "format_toml", "load_toml"]
+__all__ = ["REQUIRED", "Table", "apply_overrides", "format_toml", "load_toml", "unknown_key"]
 
 
 class _Required:
@@ -226,8 +227,15 @@ class Table:
         """Reject keys that were never read."""
         unknown = [k for k in self._data if k not in self._used]
         if unknown:
-            allowed = ", ".join(sorted(self._used)) or "none"
-            raise InputError(f"unknown key {self._name(unknown[0])}; allowed keys here: {allowed}")
+            raise InputError(unknown_key(self._name(unknown[0]), unknown[0], self._used))
+
+
+def unknown_key(name: str, key: str, allowed: Iterable[str]) -> str:
+    """The message for an unknown key ``name``, with the nearest allowed key when one is close."""
+    keys = sorted(allowed)
+    near = difflib.get_close_matches(str(key), keys, n=1)
+    hint = f" (did you mean '{near[0]}'?)" if near else ""
+    return f"unknown key {name}{hint}; allowed keys here: {', '.join(keys) or 'none'}"
 
 
 def _describe(value: Any) -> str:

@@ -19,6 +19,7 @@ from frictionlab.contact.history import ContactHistory, front_arrival, slip_fron
 from frictionlab.driver.simulate import status_labels
 from frictionlab.io.atomic import write_json_atomic
 from frictionlab.io.contact_scenario import ContactScenario
+from frictionlab.io.provenance import stamp
 from frictionlab.io.tables import write_csv_atomic
 
 __all__ = ["contact_summary", "write_contact_results"]
@@ -171,7 +172,8 @@ def write_contact_results(
         written.extend(_plots(out, scenario, history))
     names = [p.name for p in written] + ["summary.json"]
     summary = contact_summary(scenario, history, elapsed, names)
-    written.append(write_json_atomic(out / "summary.json", summary))
+    inputs = [scenario.source] if scenario.source else []
+    written.append(write_json_atomic(out / "summary.json", stamp(summary, names, inputs)))
     return written
 
 

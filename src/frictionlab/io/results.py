@@ -1,7 +1,7 @@
 """Outputs of a simulated scenario: ``history.csv``, ``summary.json`` and the plots.
 
 ``history.csv`` is long format, one row per point and recorded step (point-major),
-with a ``# units:`` header line. ``summary.json`` echoes the inputs with defaults
+with units in the column titles (``time [s]``). ``summary.json`` echoes the inputs with defaults
 filled, and gives peaks, final values, per-segment values, work counters, success and
 the version. Every file is written atomically.
 """
@@ -15,85 +15,21 @@ from typing import Any
 import numpy as np
 
 from frictionlab._version import __version__
-from frictionlab.driver import History, status_labels
+from frictionlab.driver import History, Table
 from frictionlab.driver.healing import Healing, healing_analysis
 from frictionlab.driver.spring_slider import (
     count_slip_events,
     critical_stiffness,
     friction_oscillation,
 )
+from frictionlab.driver.table import HISTORY_UNITS, history_columns
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_json_atomic
+from frictionlab.io.provenance import stamp
 from frictionlab.io.scenario import Scenario
 from frictionlab.io.tables import write_csv_atomic
 
 __all__ = ["HISTORY_UNITS", "history_columns", "summarise", "write_results"]
-
-#: Units of the history columns (F is in Pa for closed surfaces, see history_columns).
-HISTORY_UNITS: dict[str, str] = {
-    "point": "-",
-    "step": "-",
-    "segment": "-",
-    "kind": "-",
-    "time": "s",
-    "slip_1": "m",
-    "slip_2": "m",
-    "approach": "m",
-    "traction_1": "Pa",
-    "traction_2": "Pa",
-    "traction_n": "Pa",
-    "friction_ratio": "-",
-    "R": "-",
-    "F": "-",
-    "plastic_slip": "m",
-    "dissipation": "J/m^2",
-    "status": "-",
-    "substeps": "-",
-    "iterations": "-",
-}
-
-
-def history_columns(
-    history: History, cone: bool = True
-) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    """The history as long-format columns (point-major) and their units."""
-    rows, n = history.n_rows, history.n_points
-
-    def flat(arr: np.ndarray) -> np.ndarray:
-        return np.ascontiguousarray(np.asarray(arr).T).reshape(n * rows)
-
-    kinds = np.array(["initial"] + [""] * (rows - 1), dtype=object)
-    for seg in history.segments:
-        kinds[seg.first_row : seg.last_row + 1] = seg.kind
-    per_step = np.broadcast_to(np.arange(rows)[:, None], (rows, n))
-    cols: dict[str, np.ndarray] = {
-        "point": flat(np.broadcast_to(np.arange(1, n + 1), (rows, n))),
-        "step": flat(per_step),
-        "segment": flat(np.broadcast_to(history.segment[:, None], (rows, n))),
-        "kind": flat(np.broadcast_to(kinds[:, None], (rows, n))),
-        "time": flat(history.time),
-        "slip_1": flat(history.slip[..., 0]),
-        "slip_2": flat(history.slip[..., 1]),
-        "approach": flat(history.approach),
-        "traction_1": flat(history.traction[..., 0]),
-        "traction_2": flat(history.traction[..., 1]),
-        "traction_n": flat(history.traction[..., 2]),
-        "friction_ratio": flat(history.friction_ratio),
-        "R": flat(history.R),
-        "F": flat(history.F),
-        "plastic_slip": flat(history.plastic_slip),
-        "dissipation": flat(history.dissipation),
-        "status": flat(status_labels(history.status)),
-        "substeps": flat(np.broadcast_to(history.substeps[:, None], (rows, n))),
-        "iterations": flat(history.iterations),
-    }
-    units = dict(HISTORY_UNITS)
-    if not cone:
-        units["F"] = "Pa"
-    for key, arr in history.extra.items():
-        cols[key] = flat(arr)
-        units[key] = history.extra_units.get(key, "-")
-    return cols, units
 
 
 def _point_summary(
@@ -227,9 +163,18 @@ def write_results(
         if healing is not None:
             written.append(_plot_healing(out, scenario, healing))
     names = [p.name for p in written] + ["summary.json"]
-    summary = summarise(scenario, history, elapsed, names, healing)
+    summary = stamp(summarise(scenario, history, elapsed, names, healing), names, _inputs(scenario))
     written.append(write_json_atomic(out / "summary.json", summary))
     return written
+
+
+def _inputs(scenario: Scenario) -> list[Path]:
+    """The scenario file and the table files its programme reads."""
+    if not scenario.source:
+        return []
+    source = Path(scenario.source)
+    tables = [seg.source for seg in scenario.program or () if isinstance(seg, Table) and seg.source]
+    return [source, *(source.parent / name for name in tables)]
 
 
 def _write_healing(out: Path, healing: Healing) -> Path:

@@ -45,7 +45,7 @@ from frictionlab.driver.program import segment_fields
 from frictionlab.driver.simulate import ProgressCallback, count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.budget import RunEstimate, check_run_size, largest
-from frictionlab.io.config import REQUIRED, apply_overrides, load_toml
+from frictionlab.io.config import REQUIRED, apply_overrides, load_toml, unknown_key
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
 from frictionlab.subloading import SURFACES, SubloadingParams
@@ -158,9 +158,7 @@ def _reject_unknown(t: TomlTable, allowed: Sequence[str]) -> None:
     """Report a misspelt key before any missing-key error it would cause."""
     for key in t.mapping():
         if key not in allowed:
-            raise InputError(
-                f"unknown key {t.where}.{key}; allowed keys here: {', '.join(sorted(allowed))}"
-            )
+            raise InputError(unknown_key(f"{t.where}.{key}", key, allowed))
 
 
 def _reraise(where: str, call: Callable[[], Any]) -> Any:
@@ -363,6 +361,10 @@ def _parse_segment(t: TomlTable, base_dir: Path) -> Any:
     return _reraise(t.where, lambda: cls(**kwargs))
 
 
+#: SI units of the columns of a ``kind = "table"`` file (titles may carry them: ``time [s]``).
+TABLE_UNITS = {"time": "s", "slip_1": "m", "slip_2": "m", "normal_traction": "Pa", "approach": "m"}
+
+
 def _parse_table_segment(t: TomlTable, base_dir: Path) -> Table:
     name = t.get("file", str)
     path = Path(name) if Path(name).is_absolute() else base_dir / name
@@ -381,6 +383,12 @@ def _parse_table_segment(t: TomlTable, base_dir: Path) -> Table:
         raise InputError(
             f"{where}: unknown column '{extra[0]}'; allowed: {', '.join(sorted(allowed))}"
         )
+    for key in cols:
+        unit = cols.units.get(key)
+        if unit is not None and unit != TABLE_UNITS[key]:
+            raise InputError(
+                f"{where}: column '{key}' is in [{unit}]; allowed: [{TABLE_UNITS[key]}] (SI)"
+            )
     for key, arr in cols.items():
         if arr.dtype != np.float64:
             bad = next(v for v in arr if not _is_float(v))

@@ -1,22 +1,23 @@
-"""CSV tables with a units header, written atomically and read back exactly.
+"""CSV tables with units in the column titles, written atomically and read back exactly.
 
-Layout of a file written by :func:`write_csv_atomic`::
+Layout of a file written by :func:`write_csv_atomic`: a header row, then the data::
 
-    # <header comment line 1>
-    # <header comment line 2>
-    # units: time [s], slip_1 [m], traction_1 [Pa], status [1]
-    time,slip_1,traction_1,status
+    time [s],slip_1 [m],traction_1 [Pa],status [-]
     0.0,0.0,0.0,initial
     ...
 
-Comment lines start with ``#``; the units line is the last comment line and gives one
-``name [unit]`` per column (``1`` for dimensionless and text columns). Floats are written
-in the shortest form that reads back to the same float64 (``repr``), so a round trip is
-exact. Non-finite values are refused: a table never carries NaN or infinity. Booleans are
-written as ``true``/``false``; text cells may not contain commas or line breaks. An
-undefined value is given as a masked entry (``numpy.ma``) and written as an empty field.
+Every file opens with ``pandas.read_csv(path)`` and no other argument. Each title is
+``name [unit]`` (``-`` for dimensionless and text columns; the one spelling used
+everywhere). Floats are written in the shortest form that reads back to the same float64
+(``repr``), so a round trip is exact. Non-finite values are refused: a table never carries
+NaN or infinity. Booleans are written as ``true``/``false``; text cells may not contain
+commas or line breaks. An undefined value is given as a masked entry (``numpy.ma``) and
+written as an empty field.
+
 :func:`read_csv` reads such files (a numeric column with empty fields comes back as a
-masked array), and any plain CSV with a header row.
+masked array), files of earlier versions (``#`` comment lines, a ``# units:`` line),
+files written by ``pandas.DataFrame.to_csv`` (the index column is dropped), and any
+plain CSV with a header row.
 """
 
 from __future__ import annotations
@@ -26,9 +27,11 @@ import math
 import os
 from collections.abc import Iterator, Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
+from frictionlab._frames import column_title, normalise_unit, split_title, to_dataframe
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.atomic import write_text_atomic
 
@@ -40,7 +43,8 @@ _UNITS_PREFIX = "# units:"
 class CsvTable(Mapping[str, np.ndarray]):
     """A table read by :func:`read_csv`: a mapping column name -> array, plus units and comments.
 
-    Numeric columns are float64 arrays, other columns object arrays of strings.
+    Names are the titles without their ``[unit]``. Numeric columns are float64 arrays,
+    other columns object arrays of strings.
     """
 
     def __init__(
@@ -59,15 +63,25 @@ class CsvTable(Mapping[str, np.ndarray]):
     def __len__(self) -> int:
         return len(self.columns)
 
+    def __repr__(self) -> str:
+        rows = len(next(iter(self.columns.values()))) if self.columns else 0
+        return f"CsvTable({rows} rows; columns: {', '.join(self.columns)})"
+
+    def to_dataframe(self) -> Any:
+        """The table as a :class:`pandas.DataFrame` (titles ``name [unit]``; empty -> NaN)."""
+        return to_dataframe(self.columns, self.units)
+
 
 def format_csv(
     columns: Mapping[str, np.ndarray],
     units: Mapping[str, str] | None = None,
     header_comment: str | None = None,
 ) -> str:
-    """Render ``columns`` (equal-length 1-D arrays) as CSV text with a units header.
+    """Render ``columns`` (equal-length 1-D arrays) as CSV text, titles ``name [unit]``.
 
-    Raises :class:`~frictionlab.errors.ParameterError` for ragged columns, non-finite
+    ``header_comment`` is accepted for compatibility and not written: the file is plain
+    CSV that any reader opens without options (descriptions live in ``summary.json``
+    and the docs). Raises :class:`~frictionlab.errors.ParameterError` for ragged columns, non-finite
     values, column names or text that would break the format, or units of unknown columns.
     """
     if not columns:
@@ -89,12 +103,7 @@ def format_csv(
     if unknown:
         raise ParameterError("units", unknown[0], f"one of the columns {names}")
     out = io.StringIO()
-    if header_comment:
-        for line in header_comment.splitlines():
-            out.write(f"# {line}".rstrip() + "\n")
-    unit_items = ", ".join(f"{name} [{units.get(name, '1')}]" for name in names)
-    out.write(f"{_UNITS_PREFIX} {unit_items}\n")
-    out.write(",".join(names) + "\n")
+    out.write(",".join(column_title(name, units.get(name)) for name in names) + "\n")
     columns_text = [_format_column(name, a) for name, a in zip(names, arrays, strict=True)]
     for row in zip(*columns_text, strict=True):
         out.write(",".join(row) + "\n")
@@ -130,7 +139,7 @@ def write_csv_atomic(
     units: Mapping[str, str] | None = None,
     header_comment: str | None = None,
 ) -> Path:
-    """Write ``columns`` as CSV with a units header line, atomically; return the path.
+    """Write ``columns`` as CSV with titles ``name [unit]``, atomically; return the path.
 
     Parameters
     ----------
@@ -140,18 +149,20 @@ def write_csv_atomic(
         Column name -> 1-D array (all of the same length).
     units:
         Column name -> unit string (SI, e.g. ``"m"``, ``"Pa"``, ``"deg"``); columns
-        without an entry are written as dimensionless (``1``).
+        without an entry are written as dimensionless (``-``).
     header_comment:
-        Free text written as ``#`` comment lines above the units line.
+        Accepted for compatibility, not written (see :func:`format_csv`).
     """
     return write_text_atomic(path, format_csv(columns, units, header_comment))
 
 
 def read_csv(path: str | os.PathLike[str]) -> CsvTable:
-    """Read a CSV file with a header row; ``#`` lines are comments (the units line is parsed).
+    """Read a CSV file with a header row; ``#`` lines are comments (a units line is parsed).
 
-    A column whose every cell is a number becomes a float64 array (a masked array when some
-    cells are empty: undefined values), any other column an object array of strings.
+    Titles ``name [unit]`` give the column ``name`` and its unit. A first column with an
+    empty title (or ``Unnamed: 0``) is an index written by ``pandas.DataFrame.to_csv``
+    and is dropped. A column whose every cell is a number becomes a float64 array (a masked
+    array when some cells are empty: undefined values), any other column an object array of strings.
     Unreadable, empty or ragged files raise :class:`~frictionlab.errors.InputError` naming
     the file and the line.
     """
@@ -169,16 +180,26 @@ def read_csv(path: str | os.PathLike[str]) -> CsvTable:
         stripped = line.strip()
         if stripped.startswith(_UNITS_PREFIX):
             for item in stripped[len(_UNITS_PREFIX) :].split(","):
-                name, _, unit = item.strip().partition(" [")
-                if name:
-                    units[name] = unit.rstrip("]")
+                name, unit = split_title(item)
+                if name and unit is not None:
+                    units[name] = unit
         elif stripped.startswith("#"):
             comments.append(stripped[1:].strip())
         elif stripped:
             body.append((lineno, [cell.strip() for cell in line.split(",")]))
     if not body:
         raise InputError(f"table '{p}' has no header row")
-    header_line, names = body[0]
+    header_line, titles = body[0]
+    if len(titles) > 1 and titles[0] in ("", "Unnamed: 0"):  # a pandas index column
+        body = [(lineno, row[1:]) for lineno, row in body]
+        titles = titles[1:]
+    names = []
+    for title in titles:
+        name, unit = split_title(title)
+        names.append(name)
+        if unit is not None:
+            units[name] = unit
+    units = {name: normalise_unit(unit) for name, unit in units.items()}
     if any(not name for name in names) or len(set(names)) != len(names):
         raise InputError(f"table '{p}' line {header_line}: empty or repeated column names")
     for lineno, row in body[1:]:

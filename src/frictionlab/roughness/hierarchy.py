@@ -45,6 +45,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab._arrays import readonly as _ro
+from frictionlab._frames import short_repr, to_dataframe
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import scaled
@@ -185,6 +186,16 @@ class HierarchyResult:
     @property
     def success(self) -> bool:
         return bool(np.all(self.valid))
+
+    def __repr__(self) -> str:
+        return short_repr(self, self.columns())
+
+    def to_dataframe(self) -> Any:
+        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
+
+        Undefined (masked) values become NaN; pandas is imported on call.
+        """
+        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """A long table, one row per (level, beta), level-major; invalid entries masked."""
@@ -405,6 +416,16 @@ class HierarchyWearHistory:
     @property
     def n_levels(self) -> int:
         return int(self.wear_time.size)
+
+    def __repr__(self) -> str:
+        return short_repr(self, self.columns())
+
+    def to_dataframe(self) -> Any:
+        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
+
+        Undefined (masked) values become NaN; pandas is imported on call.
+        """
+        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """A long table, one row per (time, beta): B_i and mu_i of every level."""

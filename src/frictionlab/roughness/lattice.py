@@ -43,6 +43,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab._arrays import readonly
+from frictionlab._frames import short_repr, to_dataframe
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness import _kernels
 from frictionlab.roughness.closed_forms import max_mu0
@@ -422,6 +423,21 @@ class FrictionPolar:
     def tangential_force(self) -> FloatArray:
         """|R_xy^(c)|: magnitude of the resisting force of the compressed springs (N/spring)."""
         return np.asarray(np.hypot(self.force_x, self.force_y), dtype=np.float64)
+
+    def __repr__(self) -> str:
+        return short_repr(self, self.columns())
+
+    def units(self) -> dict[str, str]:
+        """Units of :meth:`columns` (``-`` for dimensionless ones)."""
+        force = {"tangential_force": "N", "compressed_force": "N"}
+        return {k: "deg" if k == "beta_deg" else force.get(k, "-") for k in self.columns()}
+
+    def to_dataframe(self) -> Any:
+        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
+
+        Undefined (masked) values become NaN; pandas is imported on call.
+        """
+        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """The per-direction arrays as named columns (for tables).

@@ -122,7 +122,13 @@ def initial_state(
     n_points: int | None = None,
     frame: Any = None,
 ) -> ContactState:
-    """A virgin (fully recovered) contact state, spec §3.3.
+    """A virgin (fully recovered) contact state.
+
+    The initial ratio is ``R = f(f, beta)/F`` (Eq 22): ``|beta|/mu_s`` for the cone
+    with rotation, ``f_n g(|beta|/M)/F_s`` for a closed surface. The state is checked
+    for the domain of the law (``f_n < F_k`` for closed surfaces: the normal traction
+    must lie inside the kinetic sliding-yield surface; ``R <= 1``) and for the
+    no-snap-back condition (:func:`check_snap_back`).
 
     Parameters
     ----------
@@ -138,11 +144,6 @@ def initial_state(
         N, when every other input is shared.
     frame:
         (3, 3) or (N, 3, 3) rows e_1, e_2, n; default the global axes.
-
-    The initial ratio is ``R = f(f, beta)/F`` (Eq 22): ``|beta|/mu_s`` for the cone
-    with rotation, ``f_n g(|beta|/M)/F_s`` for a closed surface. The state is checked
-    for the domain of the law (pitfall 3: ``f_n < F_k`` for closed surfaces, ``R <= 1``)
-    and for the no-snap-back condition (pitfall 7, :func:`check_snap_back`).
     """
     fn = np.asarray(normal_traction, dtype=np.float64)
     ft = np.asarray(tangential_traction, dtype=np.float64)
@@ -171,7 +172,7 @@ def initial_state(
         raise ParameterError(
             "normal_traction",
             fn,
-            "f_n < F_k for a closed surface (pitfall 3: the normal traction must stay inside "
+            "f_n < F_k for a closed surface (the normal traction must stay inside "
             "the kinetic sliding-yield surface)",
         )
     traction = np.column_stack([ft, fn])

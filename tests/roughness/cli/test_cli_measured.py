@@ -58,7 +58,7 @@ def run(tmp_path: Path, text: str, *extra: str) -> tuple[int, Path]:
     return main(["roughness", str(path), "--out", str(out), *extra]), out
 
 
-def test_provenance_multiscale_and_quiet(tmp_path, capsys) -> None:
+def test_provenance_multiscale_and_quiet(tmp_path, capsys, check_summary) -> None:
     write_map(tmp_path / "map.x3p")
     text = scenario("map.x3p", "long_cutoff = 1.0e-3") + "[multiscale]\ncutoffs = [40.0e-6]\n"
     code, out = run(tmp_path, text, "--quiet")
@@ -67,9 +67,13 @@ def test_provenance_multiscale_and_quiet(tmp_path, capsys) -> None:
     assert captured.out == "" and captured.err == ""
     names = sorted(p.name for p in out.iterdir())
     assert names == ["multiscale.csv", "multiscale.png", "polar.csv", "polar.png", "summary.json"]
-    summary = json.loads((out / "summary.json").read_text())
+    summary = check_summary(out / "summary.json")
     source = summary["sources"]["lower"]
     digest = hashlib.sha256((tmp_path / "map.x3p").read_bytes()).hexdigest()
+    inputs = summary["provenance"]["inputs"]
+    assert [Path(i["path"]).name for i in inputs] == ["scenario.toml", "map.x3p"]
+    assert inputs[1]["sha256"] == digest
+    assert summary["provenance"]["command"][:2] == ["frictionlab", "roughness"]
     assert source["file"] == "map.x3p" and source["sha256"] == digest
     assert source["periodicity"] == "mirror" and source["detrend"] == "center"
     assert source["long_cutoff_m"] == 1e-3 and source["short_cutoff_m"] is None

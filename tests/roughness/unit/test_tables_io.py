@@ -19,14 +19,12 @@ def test_round_trip_is_exact(tmp_path) -> None:
     )
     text = path.read_text()
     lines = text.splitlines()
-    assert lines[0] == "# first line" and lines[1] == "# second line"
-    assert lines[2] == "# units: beta_deg [deg], mu [1], n [1], ok [1]"
-    assert lines[3] == "beta_deg,mu,n,ok"
+    assert lines[0] == "beta_deg [deg],mu [-],n [-],ok [-]"
     table = read_csv(path)
     np.testing.assert_array_equal(table["mu"], values)
     np.testing.assert_array_equal(table["n"], np.arange(7.0))
-    assert table.units == {"beta_deg": "deg", "mu": "1", "n": "1", "ok": "1"}
-    assert table.comments == ["first line", "second line"]
+    assert table.units == {"beta_deg": "deg", "mu": "-", "n": "-", "ok": "-"}
+    assert table.comments == []
     assert list(table["ok"]) == ["true"] * 7
 
 
@@ -52,4 +50,4 @@ def test_bad_tables_are_refused_and_nothing_is_written(tmp_path, columns, units,
 
 def test_format_without_comment() -> None:
     text = format_csv({"x": np.array([1.5])})
-    assert text == "# units: x [1]\nx\n1.5\n"
+    assert text == "x [-]\n1.5\n"
