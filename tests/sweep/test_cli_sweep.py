@@ -64,6 +64,14 @@ def test_grid_runs_every_case_into_its_own_directory(tmp_path: Path, capsys) -> 
     by_hold = table.set_index("program.2.duration")
     assert by_hold.loc[1000.0, "delta_mu"] > by_hold.loc[1.0, "delta_mu"] + 0.05
     assert (out / "sweep.png").read_bytes()[:4] == b"\x89PNG"
+    # a case's outputs are those of the command run on its own with the same overrides
+    alone = tmp_path / "alone"
+    sets = ["--set", "program.2.duration=1000.0", "--set", "program.3.velocity=0.1"]
+    assert main(["simulate", str(tmp_path / "base.toml"), "--out", str(alone), "--quiet",
+                 "--no-plots", *sets]) == 0  # fmt: skip
+    case = out / "cases" / table["id"][1]
+    assert (case / "history.csv").read_bytes() == (alone / "history.csv").read_bytes()
+    assert (case / "healing.csv").read_bytes() == (alone / "healing.csv").read_bytes()
     assert "2 cases (0 done before, 2 run" in capsys.readouterr().out
     # a second run finds everything done and repeats nothing
     stamps = {p: p.stat().st_mtime_ns for p in out.glob("cases/*/*")}
