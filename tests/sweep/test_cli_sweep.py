@@ -178,4 +178,9 @@ def test_bundled_example_validates(tmp_path: Path) -> None:
     path = Path(str(resources.files("frictionlab") / "data" / "sweeps" / "slide_hold_slide.toml"))
     spec, command, tasks = load_spec(path, plots=False)
     assert command == "simulate" and len(tasks) == 12
-    assert spec.keys == ("program.2.duration", "program.3.velocity")
+    assert spec.keys == ("program.2.duration", "program.1.velocity+program.3.velocity")
+    assert tasks[1].sets == (
+        "program.2.duration=1.0",
+        "program.1.velocity=1e-05",
+        "program.3.velocity=1e-05",
+    )
