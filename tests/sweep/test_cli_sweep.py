@@ -170,6 +170,13 @@ def test_bad_input_exits_2_with_one_line_before_running(
     assert not out.exists()  # validated before anything ran or was written
 
 
+def test_unwritable_out_is_bad_input(tmp_path: Path, capsys) -> None:
+    sweep = write_sweep(tmp_path, '[grid]\n"law.mu_s" = [0.5]\n')
+    (tmp_path / "file").write_text("")
+    assert main(["sweep", str(sweep), "--out", str(tmp_path / "file" / "out")]) == 2
+    assert "cannot write to --out" in capsys.readouterr().err
+
+
 def test_bundled_example_validates(tmp_path: Path) -> None:
     from importlib import resources
 
