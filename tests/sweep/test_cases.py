@@ -23,6 +23,18 @@ def test_grid_is_the_cartesian_product_last_key_fastest() -> None:
     assert combos[-1] == {"a.x": 2, "b.y": "r"}
 
 
+def test_linked_grid_keys_share_one_axis() -> None:
+    combos = expand_grid({"p.1.v+p.3.v": [1, 2], "p.2.t": [5, 6, 7]})
+    assert len(combos) == 6
+    assert combos[4] == {"p.1.v": 2, "p.3.v": 2, "p.2.t": 6}
+    spec = parse_sweep({"base": "b.toml", "grid": {"p.1.v+p.3.v": [1, 2]}}, Path("."))
+    assert spec.keys == ("p.1.v+p.3.v",)
+    table = sweep_table(spec.cases, spec.keys, {}, {})
+    assert table["p.1.v+p.3.v"].tolist() == [1, 2] and set(table["status"]) == {"pending"}
+    with pytest.raises(InputError, match="empty key around"):
+        parse_sweep({"base": "b.toml", "grid": {"p.1.v+": [1]}}, Path("."))
+
+
 def test_case_id_is_deterministic_and_order_free() -> None:
     one = case_id({"law.mu_s": 0.6, "program.2.duration": 10.0})
     assert one == case_id({"program.2.duration": 10.0, "law.mu_s": 0.6})

@@ -64,6 +64,14 @@ def test_grid_runs_every_case_into_its_own_directory(tmp_path: Path, capsys) -> 
     by_hold = table.set_index("program.2.duration")
     assert by_hold.loc[1000.0, "delta_mu"] > by_hold.loc[1.0, "delta_mu"] + 0.05
     assert (out / "sweep.png").read_bytes()[:4] == b"\x89PNG"
+    # a case's outputs are those of the command run on its own with the same overrides
+    alone = tmp_path / "alone"
+    sets = ["--set", "program.2.duration=1000.0", "--set", "program.3.velocity=0.1"]
+    assert main(["simulate", str(tmp_path / "base.toml"), "--out", str(alone), "--quiet",
+                 "--no-plots", *sets]) == 0  # fmt: skip
+    case = out / "cases" / table["id"][1]
+    assert (case / "history.csv").read_bytes() == (alone / "history.csv").read_bytes()
+    assert (case / "healing.csv").read_bytes() == (alone / "healing.csv").read_bytes()
     assert "2 cases (0 done before, 2 run" in capsys.readouterr().out
     # a second run finds everything done and repeats nothing
     stamps = {p: p.stat().st_mtime_ns for p in out.glob("cases/*/*")}
@@ -162,6 +170,13 @@ def test_bad_input_exits_2_with_one_line_before_running(
     assert not out.exists()  # validated before anything ran or was written
 
 
+def test_unwritable_out_is_bad_input(tmp_path: Path, capsys) -> None:
+    sweep = write_sweep(tmp_path, '[grid]\n"law.mu_s" = [0.5]\n')
+    (tmp_path / "file").write_text("")
+    assert main(["sweep", str(sweep), "--out", str(tmp_path / "file" / "out")]) == 2
+    assert "cannot write to --out" in capsys.readouterr().err
+
+
 def test_bundled_example_validates(tmp_path: Path) -> None:
     from importlib import resources
 
@@ -170,4 +185,9 @@ def test_bundled_example_validates(tmp_path: Path) -> None:
     path = Path(str(resources.files("frictionlab") / "data" / "sweeps" / "slide_hold_slide.toml"))
     spec, command, tasks = load_spec(path, plots=False)
     assert command == "simulate" and len(tasks) == 12
-    assert spec.keys == ("program.2.duration", "program.3.velocity")
+    assert spec.keys == ("program.2.duration", "program.1.velocity+program.3.velocity")
+    assert tasks[1].sets == (
+        "program.2.duration=1.0",
+        "program.1.velocity=1e-05",
+        "program.3.velocity=1e-05",
+    )

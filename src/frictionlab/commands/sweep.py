@@ -81,7 +81,10 @@ def run(args: argparse.Namespace) -> int:
     skipped = len(spec.cases) - len(todo)
     by_id = {c.id: c for c in spec.cases}
     writer = _TableWriter(out, spec, command)
-    writer.write(records, force=True)
+    try:
+        writer.write(records, force=True)  # before anything runs: is --out writable?
+    except OSError as exc:
+        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
     started = time.perf_counter()
     with progress_bar(f"sweep {args.sweep.name}", enabled=not args.quiet) as progress:
         progress(skipped, len(spec.cases))

@@ -14,7 +14,7 @@ import tomli_w
 
 from frictionlab.errors import InputError
 
-__all__ = ["Case", "case_id", "check_key", "expand_grid", "override_strings"]
+__all__ = ["LINK", "Case", "case_id", "check_key", "expand_grid", "override_strings"]
 
 
 @dataclass(frozen=True)
@@ -32,10 +32,20 @@ def case_id(overrides: Mapping[str, Any]) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()[:12]
 
 
+#: Joins keys that take the same value together in a grid (``"a.x+b.y" = [1, 2]``).
+LINK = "+"
+
+
 def expand_grid(grid: Mapping[str, Sequence[Any]]) -> list[dict[str, Any]]:
-    """Cartesian product of ``{key: [values]}``; the last key varies fastest."""
-    keys = list(grid)
-    return [dict(zip(keys, combo, strict=True)) for combo in itertools.product(*grid.values())]
+    """Cartesian product of ``{key: [values]}``; the last key varies fastest.
+
+    A key ``"a.x+b.y"`` links keys: each value is given to all of them (one axis).
+    """
+    keys = [key.split(LINK) for key in grid]
+    return [
+        {path: value for paths, value in zip(keys, combo, strict=True) for path in paths}
+        for combo in itertools.product(*grid.values())
+    ]
 
 
 def make_cases(overrides: Sequence[dict[str, Any]]) -> tuple[Case, ...]:

@@ -7,13 +7,13 @@
     command = "simulate"               # optional: "simulate" or "roughness" (else detected)
     [grid]                             # cartesian product, the last key varying fastest
     "program.2.duration" = [1.0, 10.0, 100.0]
-    "program.1.velocity" = [1e-6, 1e-5]
+    "program.1.velocity+program.3.velocity" = [1e-6, 1e-5]   # linked: one value for both
     # or, instead of [grid], one table per case:
     # [[case]]
     # "law.mu_s" = 0.6
 
-Keys are the dotted names of ``--set`` (bare dotted keys work too). Every key must be
-present in the base scenario.
+Keys are the dotted names of ``--set`` (bare dotted keys work too); ``+`` links grid keys
+that take the same value. Every key must be present in the base scenario.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ from pathlib import Path
 from typing import Any
 
 from frictionlab.errors import InputError
-from frictionlab.sweep.cases import Case, expand_grid, make_cases
+from frictionlab.sweep.cases import LINK, Case, expand_grid, make_cases
 
 __all__ = ["COMMANDS", "SweepSpec", "detect_command", "parse_sweep"]
 
@@ -115,6 +115,8 @@ def _grid(raw: Any) -> dict[str, list[Any]]:
     if not grid:
         raise InputError('[grid] is empty: give at least one "section.key" = [values]')
     for key, values in grid.items():
+        if not all(key.split(LINK)):
+            raise InputError(f"[grid].'{key}' has an empty key around '{LINK}'")
         if not isinstance(values, list) or not values:
             raise InputError(f"[grid].'{key}' must be a non-empty list of values, got {values!r}")
         for v in values:

@@ -8,7 +8,7 @@ from typing import Any
 
 import pandas as pd
 
-from frictionlab.sweep.cases import Case
+from frictionlab.sweep.cases import LINK, Case
 
 __all__ = ["format_table", "sweep_table"]
 
@@ -23,7 +23,8 @@ def sweep_table(
 ) -> pd.DataFrame:
     """Rows in case order; a case without a record is ``pending``.
 
-    Columns: case (1-based), id, status (ok, failed, pending), the swept keys, the
+    Columns: case (1-based), id, status (ok, failed, pending), the swept keys (linked grid
+    keys as one column), the
     summary figures (the union over cases, in order of appearance), seconds, error.
     """
     figure_names = list(dict.fromkeys(name for f in figures.values() for name in f))
@@ -36,7 +37,7 @@ def sweep_table(
             "status": record.get("status", "pending"),
         }
         for key in keys:
-            row[key] = _cell(case.overrides.get(key))
+            row[key] = _cell(case.overrides.get(key.split(LINK)[0]))
         values = figures.get(case.id, {})
         for name in figure_names:
             row[name] = values.get(name)
