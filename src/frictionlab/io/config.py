@@ -222,12 +222,12 @@ class Table:
             raise InputError(f"{self._name(key)} must be an array of tables ([[{key}]])")
         return [Table(v, f"[[{key}]] #{i + 1}") for i, v in enumerate(value)]
 
-    def finish(self) -> None:
-        """Reject keys that were never read."""
+    def finish(self, allowed: Sequence[str] = ()) -> None:
+        """Reject keys that were never read; the message lists those read and ``allowed``."""
         unknown = [k for k in self._data if k not in self._used]
         if unknown:
-            allowed = ", ".join(sorted(self._used)) or "none"
-            raise InputError(f"unknown key {self._name(unknown[0])}; allowed keys here: {allowed}")
+            listed = ", ".join(sorted(self._used | set(allowed))) or "none"
+            raise InputError(f"unknown key {self._name(unknown[0])}; allowed keys here: {listed}")
 
 
 def _describe(value: Any) -> str:
