@@ -74,4 +74,5 @@ def _short(value: Any) -> str:
     arr = np.asarray(value) if not isinstance(value, str) else None
     if arr is not None and arr.ndim > 0 and arr.size > 6:
         return f"array(shape={arr.shape}, first={arr.ravel()[:3].tolist()}...)"
-    return repr(value) if isinstance(value, str) else str(value)
+    # one line: a small 2-D array prints over several lines
+    return repr(value) if isinstance(value, str) else str(value).replace("\n", "")

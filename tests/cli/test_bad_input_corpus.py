@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from frictionlab.cli import main
@@ -137,6 +138,10 @@ def _cases() -> list[object]:
         ("roughness", ROUGHNESS, 'kind = "flat"', 'kind = "file"\npath = "missing.x3p"{file}',
          "missing.x3p"),
         ("roughness", ROUGHNESS, "[lower]", "[lowr]", "lower"),
+        ("roughness", ROUGHNESS, "stations = 2000", "stations = 100000000000",
+         "[lattice].stations = [100000000000]"),
+        ("roughness", ROUGHNESS, "[lattice]", "[lattice]\nspeed = 3",
+         "allowed keys here: engine, full_contact, k_c, k_t, max_return_periods"),
         ("roughness", ROUGHNESS, "[lattice]", "[lattice\n", "TOML"),
     ]  # fmt: skip
     structural = [(c, b, o, n.replace("{file}", FILE), k) for c, b, o, n, k in structural]
@@ -253,4 +258,40 @@ def test_tiny_normal_traction_fails_in_one_line(
 
 
 def test_the_corpus_is_large() -> None:
-    assert len(CASES) + 4 + 10 >= 150
+    assert len(CASES) + 4 + 10 >= 150  # scenario values, topography files, command lines
+
+
+def test_a_nan_in_a_table_csv_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "nan.csv").write_text("time,slip_1\n0,0\n1,nan\n")
+    text = SIMULATE.replace('kind = "hold"\nduration = 10.0', 'kind = "table"\nfile = "nan.csv"')
+    (tmp_path / "s.toml").write_text(text)
+    code = main(["simulate", str(tmp_path / "s.toml"), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1
+    assert "'nan.csv'.slip" in lines[0] and "finite values" in lines[0]
+
+
+@pytest.mark.parametrize("defined", [0, 1])
+def test_filling_a_mostly_undefined_topography_is_refused(
+    defined: int, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """All-NaN with fill_missing used to be filled flat (mu/mu0 = 1, exit 0)."""
+    heights = np.full((8, 8), np.nan)
+    heights.ravel()[:defined] = 1e-6
+    np.savetxt(tmp_path / "nan.txt", heights)
+    text = ROUGHNESS.replace(
+        'kind = "flat"',
+        'kind = "file"\npath = "nan.txt"\nunit = "m"\nphysical_sizes = [1e-3, 1e-3]'
+        f"{FILE}\nfill_missing = true",
+    ).replace("stations = 2000", "stations = [8, 8]")
+    text = text.replace(
+        "angles_deg = [30.0, 15.0]\nwavelength = 1.0e-3",
+        "amplitude = 1e-5\nwavelengths = [1e-3, 1e-3]",
+    ).replace('"wedge"', '"sinusoid"')
+    (tmp_path / "s.toml").write_text(text)
+    code = main(["roughness", str(tmp_path / "s.toml"), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1, lines
+    assert f"{64 - defined} of 64 points undefined" in lines[0] and "fill_missing" in lines[0]

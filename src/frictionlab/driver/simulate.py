@@ -144,8 +144,8 @@ class History:
     dissipation:
         (rows, N) accumulated dissipation sum of f . Delta u^p [J/m^2].
     status:
-        (rows, N) :class:`~frictionlab.subloading.Status` code of each step (SLIP if any
-        substep slid); row 0 holds ``STATUS_INITIAL`` (-1).
+        (rows, N) :class:`~frictionlab.subloading.Status` code of each step (OPEN when
+        the step ends open, else SLIP if any substep slid); row 0 holds ``STATUS_INITIAL`` (-1).
     segment:
         (rows,) 1-based segment index of each row (0 for the initial row).
     substeps, solves:

@@ -46,7 +46,7 @@ class Attempt:
     state: ContactState
     du: np.ndarray  #: (N, 3) slip increment actually applied [m]
     dissipation: np.ndarray  #: (N,) f . Delta u^p summed over substeps [J/m^2]
-    status: np.ndarray  #: (N,) Status code of the step (SLIP if any substep slid)
+    status: np.ndarray  #: (N,) Status: OPEN if the step ends open, else SLIP if a substep slid
     iterations: np.ndarray  #: (N,) local Newton iterations summed over solves
     solves: int  #: calls of the law's update
     ok: bool

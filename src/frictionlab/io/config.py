@@ -223,11 +223,13 @@ class Table:
             raise InputError(f"{self._name(key)} must be an array of tables ([[{key}]])")
         return [Table(v, f"[[{key}]] #{i + 1}") for i, v in enumerate(value)]
 
-    def finish(self) -> None:
-        """Reject keys that were never read."""
+    def finish(self, allowed: Sequence[str] = ()) -> None:
+        """Reject keys that were never read; the message lists those read and ``allowed``."""
         unknown = [k for k in self._data if k not in self._used]
         if unknown:
-            raise InputError(unknown_key(self._name(unknown[0]), unknown[0], self._used))
+            raise InputError(
+                unknown_key(self._name(unknown[0]), unknown[0], self._used | set(allowed))
+            )
 
 
 def unknown_key(name: str, key: str, allowed: Iterable[str]) -> str:

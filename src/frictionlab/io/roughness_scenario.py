@@ -252,7 +252,7 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
             options["full_contact"] = lattice.get("full_contact", str, choices=FULL_CONTACT_METHODS)
         if "snap_time_samples" in lattice:
             options["snap_time_samples"] = lattice.get("snap_time_samples", bool)
-        lattice.finish()
+        lattice.finish(allowed=_LATTICE_KEYS)
     try:
         settings = LatticeSettings(**options)
     except ParameterError as exc:
@@ -281,6 +281,11 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
     if multiscale_table is not None:
         multiscale = _multiscale(multiscale_table, lower, upper, betas)
     top.finish()
+    try:  # the station count is checked against the surfaces now, not mid-computation
+        lattice_geometry(lower, upper, settings.stations)
+    except ParameterError as exc:
+        if exc.field == "stations":
+            raise InputError(f"[lattice].{exc}") from None
     return RoughnessScenario(
         mu0=mu0,
         lower=lower,
@@ -297,6 +302,13 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         warnings=tuple(notes.get("warnings", ())),
         multiscale=multiscale,
     )
+
+
+#: Every key of [lattice] (listed when an unknown one is given).
+_LATTICE_KEYS = (
+    "stations", "time_samples", "max_return_periods", "k_c", "k_t", "travel",
+    "mu_definition", "engine", "full_contact", "snap_time_samples",
+)  # fmt: skip
 
 
 def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:

@@ -225,6 +225,14 @@ def prepare_topography(
                 "complete data: set fill_missing = true to fill them by harmonic "
                 "interpolation, or crop them away",
             )
+        total = int(np.prod(topography.nb_grid_pts))
+        if 2 * n_bad > total:  # filling would invent the surface (all-NaN: a flat one)
+            raise ParameterError(
+                "heights",
+                f"{n_bad} of {total} points undefined",
+                "at least half of the points defined for fill_missing = true (crop the "
+                "defined region instead)",
+            )
         topography = topography.interpolate_undefined_data()
     info["filled_points"] = n_bad
     info["detrend"] = detrend
