@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import platform
 import re
 from html.parser import HTMLParser
@@ -122,3 +123,16 @@ def test_the_restart_zoom_zooms_in_friction_too() -> None:
     lo, hi = _zoom_limits(x, y, (0.9, 1.3))
     inside = y[x >= 0.9]
     assert lo < inside.min() and hi > inside.max() and hi - lo < 0.03  # not 0 to 0.5
+
+
+def test_stability_map_labels_do_not_overlap(tmp_path: Path) -> None:
+    from frictionlab.plotting.law import plot_stability_map, save_figure, spaced_ticks
+
+    ratio = np.array([0.25, 0.5, 0.8, 0.9, 1.1, 1.25, 2.0, 4.0])
+    assert spaced_ticks(ratio, keep=1.0) == [0.25, 0.5, 1.0, 2.0, 4.0]
+    ax = plot_stability_map(ratio, np.geomspace(1e-1, 1e-12, ratio.size), 1e-3)
+    save_figure(ax.figure, tmp_path / "map.png")
+    ax.figure.draw_without_rendering()  # type: ignore[union-attr]  # tick label extents
+    boxes = [t.get_window_extent() for t in ax.get_xticklabels() if t.get_text()]
+    assert len(boxes) == 5
+    assert all(a.x1 < b.x0 for a, b in itertools.pairwise(boxes))  # no overlap
