@@ -136,3 +136,13 @@ def test_stability_map_labels_do_not_overlap(tmp_path: Path) -> None:
     boxes = [t.get_window_extent() for t in ax.get_xticklabels() if t.get_text()]
     assert len(boxes) == 5
     assert all(a.x1 < b.x0 for a, b in itertools.pairwise(boxes))  # no overlap
+
+
+def test_family_legends_say_what_each_case_is() -> None:
+    from frictionlab.plotting.roughness import legend_label
+    from frictionlab.roughness.families import CASE_DESCRIPTIONS, WEDGE_CASES
+
+    assert set(CASE_DESCRIPTIONS) == set(WEDGE_CASES)
+    assert legend_label("A") == "A: flat on symmetric teeth"
+    assert legend_label("l2pi_3pi") == "wavelengths 2pi x 3pi (x, y)"
+    assert legend_label("other") == "other"

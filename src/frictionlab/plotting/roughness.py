@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 import textwrap
 from typing import TYPE_CHECKING, Any
 
@@ -23,6 +24,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "figure_png_bytes",
+    "legend_label",
     "new_figure",
     "plot_family_lines",
     "plot_polar",
@@ -148,6 +150,22 @@ def plot_surface(
     return ax
 
 
+def legend_label(case: str) -> str:
+    """A readable legend entry for a family case name.
+
+    ``"A"`` .. ``"F"`` (the wedge cases) -> ``"A: flat on symmetric teeth"``;
+    ``"l2pi_3pi"`` (wavelengths of a 2-D sinusoid) -> ``"wavelengths 2pi x 3pi"``.
+    """
+    from frictionlab.roughness.families import CASE_DESCRIPTIONS
+
+    if case in CASE_DESCRIPTIONS:
+        return f"{case}: {CASE_DESCRIPTIONS[case]}"
+    match = re.fullmatch(r"l([0-9.]+)pi_([0-9.]+)pi", case)
+    if match:
+        return f"wavelengths {match[1]}pi x {match[2]}pi (x, y)"
+    return case
+
+
 def plot_family_lines(
     table: FamilyTable,
     *,
@@ -161,12 +179,13 @@ def plot_family_lines(
         ax = new_figure().add_subplot()
     for name, values in table.columns.items():
         if name.startswith(prefix):
-            ax.plot(table[x], values, marker=".", label=name[len(prefix) :])
+            ax.plot(table[x], values, marker=".", label=legend_label(name[len(prefix) :]))
     ax.set_xlabel("beta (deg)" if x == "beta_deg" else x)
     ax.set_ylabel(ylabel)
     ax.set_title("\n".join(textwrap.wrap(table.description, 80)), fontsize=8)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    # below the axes (constrained layout makes room): the entries never hide a curve
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
     return ax
 
 
