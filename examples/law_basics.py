@@ -16,21 +16,22 @@ from frictionlab.subloading import SubloadingParams, initial_state, steady_size,
 
 def main() -> dict[str, np.ndarray]:
     mu_s = np.array([0.35, 0.45, 0.55, 0.65])  # one static coefficient per contact point
+    # A contact at 1 MPa: stiffness 1 MPa per um, R saturates over ~10 um, softening ~1 mm
     params = SubloadingParams(
-        surface="coulomb", alpha_n=1000.0, alpha_t=1000.0, mu_s=mu_s, mu_k=0.3,
-        u=100.0, kappa=1.0, xi=1e-3,
-    )  # fmt: skip
+        surface="coulomb", alpha_n=1e12, alpha_t=1e12, mu_s=mu_s, mu_k=0.3,
+        u=1e5, kappa=1e3, xi=1e-3,
+    )  # fmt: skip  # alpha in Pa/m, u and kappa in 1/m, xi in 1/s
     n = mu_s.size
-    state = initial_state(params, normal_traction=np.ones(n))  # 1 Pa, compression positive
-    velocity, dx, steps = 0.1, 2e-3, 2500  # m/s, m, slide 5 m
+    state = initial_state(params, normal_traction=np.full(n, 1e6))  # Pa, compression positive
+    velocity, dx, steps = 1e-4, 2e-6, 2500  # 0.1 mm/s in 2 um increments: slide 5 mm
     slip_increment = np.tile([dx, 0.0, 0.0], (n, 1))
     peak = np.zeros(n)
     for _ in range(steps):
         step = update(params, state, slip_increment, dx / velocity)
         state = step.state
-        peak = np.maximum(peak, step.traction[:, 0])
+        peak = np.maximum(peak, step.traction[:, 0] / step.traction[:, 2])  # friction ratio
     steady = state.traction[:, 0] / state.traction[:, 2]
-    expected = steady_size(velocity, 1.0, 1e-3, mu_s, 0.3)
+    expected = steady_size(velocity, 1e3, 1e-3, mu_s, 0.3)
     print(f"{'mu_s':>6} {'peak':>8} {'steady':>8} {'mu_ss(V)':>9}")
     for row in zip(mu_s, peak, steady, expected, strict=True):
         print(" ".join(f"{v:8.4f}" for v in row))

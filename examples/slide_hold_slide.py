@@ -15,19 +15,21 @@ from pathlib import Path
 
 import numpy as np
 
-from frictionlab.driver import simulate, slide_hold_slide
+from frictionlab.driver import InitialConditions, simulate, slide_hold_slide
 from frictionlab.io.tables import write_csv_atomic
 from frictionlab.plotting.law import plot_friction, save_figure
 from frictionlab.subloading import SubloadingParams, hold_recovery
 
 
 def main(out_dir: Path) -> dict[str, np.ndarray]:
+    # A contact at 1 MPa: stiffness 1 MPa per um, softening over ~1 mm of slip
     params = SubloadingParams(
-        surface="coulomb", alpha_n=1000.0, alpha_t=1000.0, mu_s=0.5, mu_k=0.3,
-        u=100.0, kappa=1.0, xi=1e-3,
-    )  # fmt: skip
+        surface="coulomb", alpha_n=1e12, alpha_t=1e12, mu_s=0.5, mu_k=0.3,
+        u=1e5, kappa=1e3, xi=1e-3,
+    )  # fmt: skip  # alpha in Pa/m, u and kappa in 1/m, xi in 1/s
     hold_time = np.array([1.0, 10.0, 100.0, 1000.0, 1e4])  # s, one per point
-    history = simulate(params, slide_hold_slide(velocity=0.1, distance=1.0, hold_time=hold_time))
+    program = slide_hold_slide(velocity=1e-4, distance=1e-3, hold_time=hold_time)  # 0.1 mm/s, 1 mm
+    history = simulate(params, program, InitialConditions(normal_traction=1e6))
     slide, hold, again = history.segments
     mu_stop = history.F[slide.last_row]
     mu_end = history.F[hold.last_row]
@@ -38,7 +40,7 @@ def main(out_dir: Path) -> dict[str, np.ndarray]:
         {"hold_time": hold_time, "mu_end_of_hold": mu_end, "mu_closed_form": expected,
          "restart_peak": peak},
         {"hold_time": "s"},
-        "slide-hold-slide, parameter set A of the specification",
+        "slide-hold-slide at 1 MPa",
     )  # fmt: skip
     labels = [f"hold {t:g} s" for t in hold_time]
     save_figure(plot_friction(history, labels, "Slide-hold-slide"), out_dir / "friction.png")

@@ -81,13 +81,22 @@ def test_report_is_well_formed_and_complete(demo_dir: Path) -> None:
     page.close()
     assert page.errors == [] and page.stack == []
     n = len(default_builders())  # the law's 6, the roughness model's 3, the bridge, contact
-    assert n == 11 and page.sections == n and page.tables == n  # one parameter table each
+    # one parameter table per section, and the environment block's table
+    assert n == 11 and page.sections == n and page.tables == n + 1
     assert len(page.images) >= 12
     for fig in page.figures:
         assert fig["img"] and len(str(fig["caption"]).split()) >= 8  # a real sentence
         path = demo_dir / str(fig["img"])
         assert path.is_file() and path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert not list(demo_dir.rglob(".*.tmp*"))
+    # every figure links the data it was drawn from; one environment block
+    text = (demo_dir / "report.html").read_text(encoding="utf-8")
+    figures = re.findall(r"<figure>(.*?)</figure>", text, re.S)
+    assert len(figures) == len(page.figures)
+    for block in figures:
+        links = re.findall(r'<p class="data">Data: .*?href="([^"]+)"', block, re.S)
+        assert links and (demo_dir / html.unescape(links[0])).is_file(), block[:200]
+    assert text.count('<details class="env">') == 1
 
 
 def test_every_bundled_scenario_ran_and_can_be_rerun(demo_dir: Path) -> None:

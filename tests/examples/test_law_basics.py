@@ -16,6 +16,6 @@ def test_law_basics_example() -> None:
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     out = module.main()
-    # steady friction after 5 m equals mu_ss(V) (spec §2.6), the peak lies below mu_s
+    # steady friction after 5 mm equals mu_ss(V), the peak lies below mu_s
     np.testing.assert_allclose(out["steady"], out["mu_ss"], rtol=1e-6)
     assert np.all(out["peak"] < out["mu_s"]) and np.all(np.diff(out["peak"]) > 0)

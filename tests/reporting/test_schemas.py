@@ -84,3 +84,12 @@ def test_schema_keys_are_the_parser_keys() -> None:
         kind = rule["if"]["properties"]["kind"]["const"]
         keys = allowed_by_the_parser(lambda d, k=kind: d["program"][0].update(kind=k, zzz=1))
         assert keys == set(rule["then"]["propertyNames"]["enum"]), kind
+
+
+def test_the_readme_scenario_matches_the_schema_and_runs(tmp_path: Path) -> None:
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text(encoding="utf-8")
+    text = re.search(r"```toml\n(.*?)```", readme, re.S).group(1)  # type: ignore[union-attr]
+    jsonschema.validate(tomllib.loads(text), schema("scenario"))
+    (tmp_path / "s.toml").write_text(text)
+    args = ["simulate", str(tmp_path / "s.toml"), "--out", str(tmp_path / "o"), "--quiet"]
+    assert main([*args, "--no-plots"]) == 0

@@ -88,6 +88,14 @@ def run_bundled(
     return scenario, history, rel
 
 
+def _zoom_limits(x: np.ndarray, y: np.ndarray, window: tuple[float, float]) -> tuple[float, float]:
+    """y-limits that fit the curves inside the x-window (with a margin), so a zoom zooms."""
+    inside = y[(x >= window[0]) & (x <= window[1])]
+    lo, hi = float(inside.min()), float(inside.max())
+    pad = 0.08 * (hi - lo) if hi > lo else 0.01 * max(abs(hi), 1e-12)
+    return lo - pad, hi + pad
+
+
 def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
     """Parameter table rows: the law, the initial contact and the programme."""
     law = scenario.inputs["law"]
@@ -186,7 +194,9 @@ def slide_hold_slide_section(ctx: DemoContext) -> Section:
     )
     save_figure(ax.figure, ctx.out_dir / rel / "restart.png")  # type: ignore[arg-type]
     zoom = plot_friction(h, sc.labels, "Restart after the hold")
-    zoom.axes[0].set_xlim(0.9, 1.3)
+    window = (0.9, 1.3)  # slip [m]: the end of the first slide, the hold and the restart
+    zoom.axes[0].set_xlim(*window)
+    zoom.axes[0].set_ylim(*_zoom_limits(h.slip[..., 0], h.friction_ratio, window))
     save_figure(zoom, ctx.out_dir / rel / "restart_zoom.png")
     sec = Section("Slide-hold-slide: recovery of static friction", sc.description,
                   parameters=_parameters(sc))  # fmt: skip

@@ -2,6 +2,8 @@
 
 Figures are PNG files stored next to ``report.html`` (in its directory or below it) and
 linked with relative paths, so the output directory can be moved or zipped as a whole.
+Under each figure the report links the data it was drawn from (:func:`data_files`), and
+one environment block at the top gives the versions, platform and time of the run.
 :meth:`Report.write` refuses to write a report whose images are missing or whose
 figures have no caption. Other parts of frictionlab append their own sections with
 :meth:`Report.add_section`.
@@ -19,7 +21,10 @@ from frictionlab._version import __version__
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
 
-__all__ = ["Figure", "Report", "Section", "format_value"]
+__all__ = ["Figure", "Report", "Section", "data_files", "format_value"]
+
+#: Data files linked under a figure.
+DATA_SUFFIXES = (".csv", ".json", ".toml")
 
 
 @dataclass(frozen=True)
@@ -62,7 +67,9 @@ table.params { border-collapse: collapse; font-size: .9em; margin: .8em 0; }
 table.params td, table.params th { border: 1px solid #ccc; padding: .2em .6em; text-align: left; }
 table.params th { background: #f2f2f2; }
 nav ol { columns: 2; }
-p.meta { color: #666; font-size: .9em; }
+p.meta, p.data { color: #666; font-size: .9em; }
+p.data { margin: .2em 0 0; }
+details.env { margin: .8em 0; font-size: .9em; }
 """
 
 
@@ -79,9 +86,18 @@ class Report:
         self.sections.append(section)
         return section
 
-    def render(self) -> str:
-        """The HTML text (well-formed HTML5, all text escaped)."""
+    def render(
+        self,
+        data: dict[str, list[str]] | None = None,
+        environment: dict[str, str] | None = None,
+    ) -> str:
+        """The HTML text (well-formed HTML5, all text escaped).
+
+        ``data`` maps a figure's path to the data files linked under it (see
+        :meth:`write`); ``environment`` gives the rows of the environment block.
+        """
         e = html.escape
+        data = data or {}
         out = [
             "<!DOCTYPE html>",
             '<html lang="en">',
@@ -97,6 +113,12 @@ class Report:
         if self.intro:
             out.append(f"<p>{e(self.intro)}</p>")
         out.append(f'<p class="meta">frictionlab {e(__version__)}</p>')
+        if environment:
+            out.append('<details class="env"><summary>Environment of this run</summary>')
+            out.append('<table class="params">')
+            for key, value in environment.items():
+                out.append(f"<tr><td>{e(key)}</td><td>{e(value)}</td></tr>")
+            out.append("</table></details>")
         anchors = self._anchors()
         out.append("<nav><ol>")
         for sec, anchor in zip(self.sections, anchors, strict=True):
@@ -114,6 +136,10 @@ class Report:
                 out.append("<figure>")
                 out.append(f'<img src="{e(fig.path)}" alt="{e(alt)}">')
                 out.append(f"<figcaption>{e(fig.caption)}</figcaption>")
+                links = data.get(fig.path, [])
+                if links:
+                    items = ", ".join(f'<a href="{e(f)}">{e(f)}</a>' for f in links)
+                    out.append(f'<p class="data">Data: {items}</p>')
                 out.append("</figure>")
             if sec.parameters:
                 out.append('<table class="params">')
@@ -154,10 +180,59 @@ class Report:
                     )
 
     def write(self, path: str | os.PathLike[str]) -> Path:
-        """Check the figures and write the report atomically to ``path``."""
+        """Check the figures and write the report atomically to ``path``.
+
+        Each figure links its data files (:func:`data_files`); the environment block
+        holds the versions, platform and UTC time (:func:`~frictionlab.io.provenance.provenance`).
+        """
+        from frictionlab.io.provenance import provenance
+
         target = Path(path)
-        self.check(target.parent)
-        return write_text_atomic(target, self.render())
+        root = target.parent
+        self.check(root)
+        data = {
+            fig.path: data_files(root, fig.path) for sec in self.sections for fig in sec.figures
+        }
+        return write_text_atomic(target, self.render(data, environment(provenance())))
+
+
+def data_files(root: str | os.PathLike[str], figure: str) -> list[str]:
+    """The data a figure was drawn from, as paths relative to ``root``.
+
+    Files beside the figure with its stem (``fig.csv``, ``fig_case.csv`` for ``fig.png``);
+    otherwise every data file (CSV, JSON, TOML) beside it; otherwise those one folder
+    below (a figure summarising several runs).
+    """
+    base = Path(root)
+    image = base / figure
+    folder, stem = image.parent, image.stem
+
+    def rel(paths: Iterable[Path]) -> list[str]:
+        return sorted(p.relative_to(base).as_posix() for p in paths)
+
+    beside = [p for p in folder.glob("*") if p.suffix in DATA_SUFFIXES and p.is_file()]
+    named = [p for p in beside if p.stem == stem or p.stem.startswith(stem + "_")]
+    if named:
+        return rel(named)
+    if beside:
+        return rel(beside)
+    return rel(p for p in folder.glob("*/*") if p.suffix in DATA_SUFFIXES and p.is_file())
+
+
+def environment(prov: dict[str, object]) -> dict[str, str]:
+    """Rows of the report's environment block from a provenance block."""
+    deps = prov.get("dependencies", {})
+    command = prov.get("command", [])
+    rows = {
+        "frictionlab": str(prov.get("frictionlab_version", "")),
+        "Python": str(prov.get("python", "")),
+        "platform": str(prov.get("platform", "")),
+        "written (UTC)": str(prov.get("timestamp", "")),
+        "command": " ".join(str(a) for a in command) if isinstance(command, list) else "",
+    }
+    if isinstance(deps, dict):
+        rows.update({name: str(version) for name, version in deps.items()})
+    return rows
 
 
 def format_value(value: object) -> str:

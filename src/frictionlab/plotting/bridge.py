@@ -11,6 +11,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from frictionlab.plotting.roughness import radial_limits
+
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
@@ -74,8 +76,10 @@ def bridge_figure(
     ax_p.plot(np.radians(fit.beta_deg), data_mag, "o", ms=3.5, color="C0", label="roughness")
     t_c, r_c = _closed(curve_deg, np.hypot(curve_fit[:, 0], curve_fit[:, 1]))
     ax_p.plot(t_c, r_c, "-", lw=1.6, color="C1", label="fitted law (kinetic)")
-    ax_p.set_rlim(0.0, 1.1 * max(float(data_mag.max()), float(r_c.max())))  # type: ignore[attr-defined]
-    ax_p.set_title("|mu| against the sliding direction", fontsize=9)
+    r_lo, r_hi = radial_limits(np.concatenate([data_mag, r_c]))
+    ax_p.set_rlim(r_lo, r_hi)  # type: ignore[attr-defined]
+    origin = f" (radial axis from {r_lo:.3g})" if r_lo > 0 else ""
+    ax_p.set_title(f"|mu| against the sliding direction{origin}", fontsize=9)
     ax_p.legend(loc="lower left", bbox_to_anchor=(-0.1, -0.16), fontsize=7, ncol=2)
 
     series = {

@@ -35,6 +35,7 @@ __all__ = [
     "plot_steady_friction",
     "plot_traction_path",
     "save_figure",
+    "spaced_ticks",
 ]
 
 
@@ -374,6 +375,16 @@ def plot_pressure_dependence(
     return ax
 
 
+def spaced_ticks(values: np.ndarray, keep: float, min_decades: float = 0.12) -> list[float]:
+    """Positive ``values`` to label on a log axis: ``keep`` and those at least
+    ``min_decades`` (in log10) from every label already chosen, smallest first."""
+    chosen = [float(keep)]
+    for v in sorted(float(x) for x in values if x > 0):
+        if all(abs(np.log10(v / c)) >= min_decades for c in chosen):
+            chosen.append(v)
+    return sorted(chosen)
+
+
 def plot_stability_map(
     ratio: np.ndarray, oscillation: np.ndarray, velocity: float, ax: Axes | None = None
 ) -> Axes:
@@ -386,7 +397,10 @@ def plot_stability_map(
     ax.set_yscale("log")
     from matplotlib.ticker import NullFormatter, ScalarFormatter
 
-    ax.set_xticks(np.unique(np.concatenate([ratio, [1.0]])))
+    values = np.unique(np.concatenate([ratio, [1.0]]))
+    labelled = spaced_ticks(values, keep=1.0)
+    ax.set_xticks(labelled)  # labels far enough apart to be read
+    ax.set_xticks([v for v in values if v not in labelled], minor=True)  # the rest unlabelled
     ax.xaxis.set_major_formatter(ScalarFormatter())
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel("machine stiffness k / k_c [-]")

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 import textwrap
 from typing import TYPE_CHECKING, Any
 
@@ -23,11 +24,13 @@ if TYPE_CHECKING:
 
 __all__ = [
     "figure_png_bytes",
+    "legend_label",
     "new_figure",
     "plot_family_lines",
     "plot_polar",
     "plot_surface",
     "plot_wavelength_map",
+    "radial_limits",
     "scenario_figure",
 ]
 
@@ -47,6 +50,24 @@ def figure_png_bytes(fig: Figure, dpi: int = 120) -> bytes:
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=dpi)
     return buffer.getvalue()
+
+
+def radial_limits(values: np.ndarray) -> tuple[float, float]:
+    """Radial axis limits that show a small anisotropy (not 0 to max).
+
+    With the axis from 0, a 4 % anisotropy draws as a circle. The axis starts below the
+    smallest value by half the range (at 0 when the range is large), so the plotted
+    radius varies by at least a factor of about 3 between the extremes.
+    """
+    finite = np.asarray(values, dtype=float)
+    finite = finite[np.isfinite(finite)]
+    if finite.size == 0:
+        return 0.0, 1.0
+    lo, hi = float(finite.min()), float(finite.max())
+    span = hi - lo
+    if span <= 1e-12 * max(abs(hi), 1.0):  # isotropic: a circle, +-10 %
+        return (0.9 * lo if lo > 0 else 0.0), (1.1 * hi if hi > 0 else 1.0)
+    return max(0.0, lo - 0.5 * span), hi + 0.1 * span
 
 
 def plot_polar(
@@ -78,9 +99,13 @@ def plot_polar(
         sel = np.isin(np.round(beta, 9), np.round(req, 9))
         ax.plot(np.radians(beta[sel]), np.asarray(polar.mu, dtype=float)[sel] / scale, ".", ms=5)
     ax.set_thetalim(0.0, 2.0 * math.pi)  # type: ignore[attr-defined]
-    ax.set_rlim(0.0, float(np.nanmax(radius)) * 1.08 if radius.size else 1.0)  # type: ignore[attr-defined]
+    r_lo, r_hi = radial_limits(radius)
+    ax.set_rlim(r_lo, r_hi)  # type: ignore[attr-defined]
     name = "mu/mu0" if scale != 1.0 else "mu"
-    ax.set_title(f"{name} vs sliding direction beta ({polar.settings.mu_definition})", fontsize=9)
+    origin = f"; radial axis from {r_lo:.3g}" if r_lo > 0 else ""
+    ax.set_title(
+        f"{name} vs sliding direction beta ({polar.settings.mu_definition}{origin})", fontsize=9
+    )
     return ax
 
 
@@ -125,6 +150,22 @@ def plot_surface(
     return ax
 
 
+def legend_label(case: str) -> str:
+    """A readable legend entry for a family case name.
+
+    ``"A"`` .. ``"F"`` (the wedge cases) -> ``"A: flat on symmetric teeth"``;
+    ``"l2pi_3pi"`` (wavelengths of a 2-D sinusoid) -> ``"wavelengths 2pi x 3pi"``.
+    """
+    from frictionlab.roughness.families import CASE_DESCRIPTIONS
+
+    if case in CASE_DESCRIPTIONS:
+        return f"{case}: {CASE_DESCRIPTIONS[case]}"
+    match = re.fullmatch(r"l([0-9.]+)pi_([0-9.]+)pi", case)
+    if match:
+        return f"wavelengths {match[1]}pi x {match[2]}pi (x, y)"
+    return case
+
+
 def plot_family_lines(
     table: FamilyTable,
     *,
@@ -138,12 +179,13 @@ def plot_family_lines(
         ax = new_figure().add_subplot()
     for name, values in table.columns.items():
         if name.startswith(prefix):
-            ax.plot(table[x], values, marker=".", label=name[len(prefix) :])
+            ax.plot(table[x], values, marker=".", label=legend_label(name[len(prefix) :]))
     ax.set_xlabel("beta (deg)" if x == "beta_deg" else x)
     ax.set_ylabel(ylabel)
     ax.set_title("\n".join(textwrap.wrap(table.description, 80)), fontsize=8)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    # below the axes (constrained layout makes room): the entries never hide a curve
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
     return ax
 
 
@@ -161,7 +203,7 @@ def plot_wavelength_map(
     for i in range(fx.size):
         for j in range(fy.size):
             colour = "k" if matrix[i, j] > middle else "w"
-            ax.text(j, i, f"{matrix[i, j]:.3f}", ha="center", va="center", fontsize=6, color=colour)
+            ax.text(j, i, f"{matrix[i, j]:.3f}", ha="center", va="center", fontsize=8, color=colour)
     ax.set_xticks(range(fy.size), [f"{v:g}pi" for v in fy])
     ax.set_yticks(range(fx.size), [f"{v:g}pi" for v in fx])
     ax.set_xlabel("lambda_y")

@@ -47,6 +47,7 @@ from frictionlab.roughness.wear import WearHistory, WearSettings, wear_history
 
 __all__ = [
     "AD_LOADS",
+    "CASE_DESCRIPTIONS",
     "FAMILY_WEAR",
     "WEDGE_CASES",
     "FamilyTable",
@@ -65,7 +66,7 @@ __all__ = [
 
 FloatArray = NDArray[np.float64]
 
-#: The six configuration types of Fig 6 (spec scenario T2) as (phi1, phi2, phi3, phi4)
+#: The six configuration types of Fig 6 as (phi1, phi2, phi3, phi4)
 #: built from a steep angle "S" and a shallow angle "s" (0: flat face pair).
 WEDGE_CASES: Mapping[str, tuple[str, str, str, str]] = MappingProxyType(
     {
@@ -75,6 +76,18 @@ WEDGE_CASES: Mapping[str, tuple[str, str, str, str]] = MappingProxyType(
         "D": ("s", "S", "0", "0"),  # flat on asymmetric, first slope shallower
         "E": ("S", "s", "S", "s"),  # rough/rough, phi1 = phi3 > phi2 = phi4
         "F": ("s", "S", "s", "S"),  # rough/rough, phi1 = phi3 < phi2 = phi4
+    }
+)
+
+#: What each case of :data:`WEDGE_CASES` is, for legends (lower surface on upper surface).
+CASE_DESCRIPTIONS: Mapping[str, str] = MappingProxyType(
+    {
+        "A": "flat on symmetric teeth",
+        "B": "symmetric on symmetric teeth",
+        "C": "flat on asymmetric teeth, steep face first",
+        "D": "flat on asymmetric teeth, shallow face first",
+        "E": "asymmetric on asymmetric, steep faces aligned",
+        "F": "asymmetric on asymmetric, shallow faces aligned",
     }
 )
 
