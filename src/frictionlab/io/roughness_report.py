@@ -277,9 +277,10 @@ def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
             "SurfaceTopography) as a user would: the file ships with frictionlab "
             f"(data/topography/{path.name}, a synthetic ground surface with grooves along y). "
             "The tilt is removed, the map is mirrored to make it periodic, and a flat "
-            "counter-face slides over it in full contact (the area average of spec section "
-            "2.6). The spectrum is then split into bands, each band one level of the "
-            "hierarchical model, to see which scales make friction anisotropic."
+            "counter-face slides over it in full contact (the friction is then the area "
+            "average of the local friction over both surfaces). The spectrum is then split "
+            "into bands, each band one level of the hierarchical model, to see which scales "
+            "make friction anisotropic."
         ),
         anchor="roughness-measured",
     )

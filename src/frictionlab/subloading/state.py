@@ -239,7 +239,8 @@ def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list
         for i in np.flatnonzero(~(alpha_t > slope)):
             out[i] = (
                 f"alpha_t > C_max f_n kappa (mu_s/mu_k - 1)^m = {slope[i]:.6g} at f_n = "
-                f"{fn[i]:.6g} Pa (no snap-back in softening, spec pitfall 7)"
+                f"{fn[i]:.6g} Pa (no snap-back in softening: below it the local solution "
+                "may not be unique)"
             )
         return out
     from frictionlab.subloading.surfaces import g_function, g_inverse
@@ -260,8 +261,8 @@ def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list
         F_val = float(grid[row, int(np.argmax(bad[row]))])
         out[point] = (
             f"alpha_t g'(chi*)/M_max > kappa (F/F_k - 1)^m on the yield surface "
-            f"(no snap-back in softening; fails at F = {F_val:.6g}, f_n = {fn[point]:.6g}; "
-            "spec pitfall 7)"
+            f"(no snap-back in softening; fails at F = {F_val:.6g}, f_n = {fn[point]:.6g}: "
+            "the local solution may not be unique)"
         )
     return out
 
