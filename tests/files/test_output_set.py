@@ -159,3 +159,27 @@ def test_kill_9_at_random_moments_leaves_a_complete_set(tmp_path: Path) -> None:
     _write_set(out, {"summary.json": "{}"})  # the next run cleans what the kills left
     assert _names(tmp_path) == ["out"]
     assert len(seen) > 1
+
+
+def test_disk_full_during_simulate_exits_1_and_keeps_the_old_set(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """ENOSPC while writing summary.json (history.csv already written): exit 1, old set kept."""
+    import frictionlab.io.results as results
+
+    scenario = tmp_path / "s.toml"
+    scenario.write_text(SCENARIO)
+    out = tmp_path / "out"
+    assert main(["simulate", str(scenario), "--out", str(out), "--quiet", "--no-plots"]) == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+
+    def full(*args: object, **kw: object) -> None:
+        raise OSError(28, os.strerror(28), "summary.json")
+
+    monkeypatch.setattr(results, "write_json_atomic", full)
+    scenario.write_text(SCENARIO.replace("mu_k = 0.3", "mu_k = 0.2"))
+    assert main(["simulate", str(scenario), "--out", str(out), "--quiet", "--no-plots"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "No space left on device; nothing was changed" in err[0]
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert _names(tmp_path) == ["out", "s.toml"]

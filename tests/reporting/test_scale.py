@@ -11,7 +11,7 @@ import pytest
 from frictionlab.cli import main
 from frictionlab.driver import History
 from frictionlab.errors import InputError
-from frictionlab.io.budget import check_run_size, largest
+from frictionlab.io.budget import check_grid_size, check_run_size, largest
 from frictionlab.io.results import summarise
 from frictionlab.io.scenario import parse_scenario
 from frictionlab.plotting.law import MAX_CURVES, plot_friction, shown_points
@@ -145,3 +145,33 @@ def test_max_step_sets_the_estimate_and_allow_large_overrides_it() -> None:
     check_run_size(estimate, allow_large=True, memory=1)  # the user insists: no error
     with pytest.raises(InputError, match=r"2\.7 TB of memory"):
         check_run_size(estimate, allow_large=False, memory=2**30)
+
+
+SELF_AFFINE = """
+mu0 = 0.3
+[lower]
+kind = "flat"
+[upper]
+kind = "self_affine"
+hurst = 0.8
+physical_sizes = [1e-3, 1e-3]
+points = [200000, 200000]
+seed = 1
+rms_slope = 0.1
+[sliding]
+beta_deg = [0.0]
+load = 1e-6
+"""
+
+
+def test_a_huge_surface_grid_is_refused_before_allocating(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """[200000, 200000] used to die with MemoryError (298 GiB) after minutes."""
+    (tmp_path / "s.toml").write_text(SELF_AFFINE)
+    assert main(["roughness", str(tmp_path / "s.toml"), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[upper].points = [200000, 200000] makes 4e+10 grid points" in err[0]
+    assert "4 TB of memory" in err[0] and "[upper].allow_large = true" in err[0]
+    check_grid_size("[upper].points", [200000, 200000], allow_large=True, memory=1)
+    check_grid_size("[upper].points", [64, 64], allow_large=False, memory=2**30)

@@ -142,7 +142,9 @@ class History:
     plastic_slip:
         (rows, N) accumulated plastic slip u^p [m].
     dissipation:
-        (rows, N) accumulated dissipation sum of f . Delta u^p [J/m^2].
+        (rows, N) accumulated plastic work sum of f . Delta u^p [J/m^2]: >= 0 without a
+        rotation vector; with beta != 0 the term f_n beta . Delta u^p can make it negative
+        (plastic work, not a dissipation; the name is kept for compatibility).
     status:
         (rows, N) :class:`~frictionlab.subloading.Status` code of each step (OPEN when
         the step ends open, else SLIP if any substep slid); row 0 holds ``STATUS_INITIAL`` (-1).

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from frictionlab.errors import InputError
 
-__all__ = ["RunEstimate", "check_run_size", "largest", "physical_memory"]
+__all__ = ["RunEstimate", "check_grid_size", "check_run_size", "largest", "physical_memory"]
 
 #: Peak memory of ``frictionlab simulate`` per point and recorded row [bytes] (the
 #: recorder's arrays, the long-format columns, the CSV text) and per point (the
@@ -28,6 +28,9 @@ MEMORY_PER_POINT = 6000.0
 #: (summary.json, 830 B measured) [bytes].
 CSV_PER_POINT_ROW = 160.0
 SUMMARY_PER_POINT = 850.0
+#: Memory per grid point of a generated surface [bytes]: the heights, their spectrum
+#: (complex) and the working copies of the FFT and the lattice (a conservative count).
+MEMORY_PER_GRID_POINT = 100.0
 #: Fraction of the physical memory a run may plan to use.
 MEMORY_FRACTION = 0.5
 
@@ -84,4 +87,27 @@ def check_run_size(estimate: RunEstimate, allow_large: bool, memory: int | None 
         f"about {_size(estimate.memory)} of memory and {_size(estimate.output)} of "
         f"output files, beyond this machine ({_size(limit)} usable): allowed fewer steps or "
         "points, or [run].allow_large = true to run it anyway"
+    )
+
+
+def check_grid_size(
+    key: str, points: Sequence[int], allow_large: bool, memory: int | None = None
+) -> None:
+    """Raise InputError (one line) when a surface grid would need more than half the memory.
+
+    ``key`` names the setting (``[lower].points``); the override is ``allow_large`` in the
+    same table.
+    """
+    total = 1.0
+    for p in points:
+        total *= float(p)
+    need = total * MEMORY_PER_GRID_POINT
+    limit = MEMORY_FRACTION * (physical_memory() if memory is None else memory)
+    if allow_large or need <= limit:
+        return
+    section = key.rsplit(".", 1)[0]
+    raise InputError(
+        f"{key} = {list(points)} makes {total:.4g} grid points: about {_size(need)} of "
+        f"memory, beyond this machine ({_size(limit)} usable): allowed fewer points, or "
+        f"{section}.allow_large = true to run it anyway"
     )

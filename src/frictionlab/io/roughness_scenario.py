@@ -66,7 +66,8 @@ Layout (every unknown key is an error; lengths in m, angles in degrees)::
 Surface kinds and their keys:
 
 * ``flat``: none.
-* ``self_affine``: ``hurst``, ``physical_sizes`` (1 or 2 values), ``points`` (same count),
+* ``self_affine``: ``hurst``, ``physical_sizes`` (1 or 2 values), ``points`` (same count;
+  grids beyond half the machine's memory are refused unless ``allow_large = true``),
   ``seed`` (integer), exactly one of ``rms_height`` (m) or ``rms_slope``; optional
   ``short_cutoff``, ``long_cutoff`` (m).
 * ``file``: ``path`` (relative to the scenario file), ``periodicity`` (require | assume |
@@ -88,6 +89,7 @@ from typing import Any
 import numpy as np
 
 from frictionlab.errors import InputError, ParameterError
+from frictionlab.io.budget import check_grid_size
 from frictionlab.io.config import Table
 from frictionlab.roughness import generators
 from frictionlab.roughness.hierarchy import (
@@ -539,6 +541,8 @@ def _build(kind: str, table: Table, base_dir: Path, info: dict[str, Any]) -> Sur
         hurst = table.get("hurst", float, check=lambda v: 0.0 < v <= 1.0, allowed="0 < hurst <= 1")
         sizes = table.get_list("physical_sizes", float, length=(1, 2))
         points = table.get_list("points", int, length=len(sizes))
+        allow_large = table.get("allow_large", bool, False)
+        check_grid_size(f"{table.where}.points", points, allow_large)
         seed = table.get("seed", int, check=lambda v: v >= 0, allowed="an integer >= 0")
         rms_height = _positive(table, "rms_height") if "rms_height" in table else None
         rms_slope = _positive(table, "rms_slope") if "rms_slope" in table else None
