@@ -93,6 +93,10 @@ class StepResult:
         return ("all points converged: " if self.success else "local solve failed: ") + text
 
 
+#: Batches of at least this many points run on numba's threads (measured cross-over on a
+#: 2-core machine: below ~1e4 points the threads' start-up costs more than it saves).
+PARALLEL_MIN_POINTS = 10_000
+
 _U_CODES = {"cot": U_COT, "ln": U_LN}
 _INTEG_CODES = {"exponential": EXPONENTIAL, "backward_euler": BACKWARD_EULER}
 _FORM_CODES = {"one_minus": ONE_MINUS, "ratio": RATIO}
@@ -130,6 +134,8 @@ def update(
     time_increment: Any,
     *,
     raise_on_failure: bool = True,
+    tangent: bool = True,
+    out: dict[str, np.ndarray] | None = None,
 ) -> StepResult:
     """Advance N contact points by one increment with the implicit return map (spec §4.2).
 
@@ -148,6 +154,19 @@ def update(
         When True (default) a failed local solve raises :class:`ConvergenceError` whose
         ``mask`` marks the failed points and whose ``result`` is this StepResult; when
         False the failure is only reported through ``status``.
+    tangent:
+        When False the consistent tangent is not computed (``StepResult.tangent`` then
+        has zero rows); the state and every other output are unchanged.
+    out:
+        Optional preallocated outputs, ``kernels.empty_outputs(N, tangent)``, reused
+        in place (no allocation per call). The returned state and result are views of
+        these buffers, left writeable, and are overwritten by the next call that is
+        given the same buffers: alternate two sets when the previous state must stay
+        valid. A buffer that shares memory with ``state`` is refused.
+
+    Points are shared among numba's threads when N >= ``PARALLEL_MIN_POINTS`` (the
+    result is identical to the serial loop; smaller batches stay serial, where the
+    threads' start-up would cost more than it saves).
 
     Returns
     -------
@@ -167,8 +186,11 @@ def update(
     if params.per_point and params.n_points != n:
         raise ParameterError("params", f"{params.n_points} points", f"{n} points, as in the state")
     table = params._kernel_table
-    out = kernels.empty_outputs(n)
-    kernels.step_points(
+    buffers = kernels.empty_outputs(n, tangent) if out is None else _checked_buffers(out, n, state)
+    if tangent and buffers["tangent"].shape[0] != n:
+        raise ParameterError("out", "tangent buffer without rows", "empty_outputs(N, tangent=True)")
+    kernel = kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
+    kernel(
         np.ascontiguousarray(state.traction),
         np.ascontiguousarray(state.F),
         np.ascontiguousarray(state.R),
@@ -183,36 +205,49 @@ def update(
         _INTEG_CODES[params.F_integrator],
         _FORM_CODES[params.recovery_form],
         params.open_recovery == "frozen",
-        out["traction"],
-        out["F"],
-        out["R"],
-        out["gap"],
-        out["dlam"],
-        out["vp"],
-        out["diss"],
-        out["tangent"],
-        out["status"],
-        out["iterations"],
+        tangent,
+        buffers["traction"],
+        buffers["F"],
+        buffers["R"],
+        buffers["gap"],
+        buffers["dlam"],
+        buffers["vp"],
+        buffers["diss"],
+        buffers["tangent"],
+        buffers["status"],
+        buffers["iterations"],
     )
-    new_state = ContactState._trusted(
-        traction=out["traction"],
-        F=out["F"],
-        R=out["R"],
-        plastic_slip=state.plastic_slip + out["dlam"],
-        gap=out["gap"],
-        frame=state.frame,
-    )
-    for key in ("traction", "tangent", "vp", "dlam", "diss", "status", "iterations"):
-        out[key].setflags(write=False)
+    if out is None:
+        slip = state.plastic_slip + buffers["dlam"]
+        new_state = ContactState._trusted(
+            traction=buffers["traction"],
+            F=buffers["F"],
+            R=buffers["R"],
+            plastic_slip=slip,
+            gap=buffers["gap"],
+            frame=state.frame,
+        )
+        for key in ("traction", "tangent", "vp", "dlam", "diss", "status", "iterations"):
+            buffers[key].setflags(write=False)
+    else:
+        slip = np.add(state.plastic_slip, buffers["dlam"], out=buffers["plastic_slip"])
+        new_state = ContactState._views(
+            traction=buffers["traction"],
+            F=buffers["F"],
+            R=buffers["R"],
+            plastic_slip=slip,
+            gap=buffers["gap"],
+            frame=state.frame,
+        )
     result = StepResult(
         state=new_state,
         traction=new_state.traction,
-        tangent=out["tangent"],
-        plastic_slip_increment=out["vp"],
-        plastic_multiplier=out["dlam"],
-        dissipation=out["diss"],
-        status=out["status"],
-        iterations=out["iterations"],
+        tangent=buffers["tangent"],
+        plastic_slip_increment=buffers["vp"],
+        plastic_multiplier=buffers["dlam"],
+        dissipation=buffers["diss"],
+        status=buffers["status"],
+        iterations=buffers["iterations"],
     )
     if raise_on_failure and not result.success:
         raise ConvergenceError(
@@ -222,3 +257,33 @@ def update(
             result=result,
         )
     return result
+
+
+def _checked_buffers(
+    out: dict[str, np.ndarray], n: int, state: ContactState
+) -> dict[str, np.ndarray]:
+    """Check user-supplied output buffers: complete, the right shapes, not aliasing ``state``."""
+    template = kernels.empty_outputs(0, True)
+    template["plastic_slip"] = np.empty(0)
+    for key, empty in template.items():
+        arr = out.get(key)
+        if arr is None:
+            raise ParameterError("out", f"no '{key}' buffer", "kernels.empty_outputs(N)")
+        rows = arr.shape[0] if key == "tangent" and arr.shape[0] == 0 else n
+        if (
+            arr.shape != (rows, *empty.shape[1:])
+            or arr.dtype != empty.dtype
+            or not arr.flags.c_contiguous
+            or not arr.flags.writeable
+        ):
+            raise ParameterError(
+                "out", f"'{key}' {arr.shape} {arr.dtype}", "kernels.empty_outputs(N) buffers"
+            )
+        for name in ("traction", "F", "R", "plastic_slip", "gap"):
+            if np.shares_memory(arr, getattr(state, name)):
+                raise ParameterError(
+                    "out",
+                    f"'{key}' shares memory with state.{name}",
+                    "buffers apart from the state",
+                )
+    return out

@@ -100,6 +100,14 @@ class ContactState:
             object.__setattr__(obj, name, arr)
         return obj
 
+    @classmethod
+    def _views(cls, **arrays: np.ndarray) -> ContactState:
+        """A state over caller-owned output buffers (kept writeable; see update's ``out``)."""
+        obj = object.__new__(cls)
+        for name, arr in arrays.items():
+            object.__setattr__(obj, name, arr)
+        return obj
+
     def take(self, index: Any) -> ContactState:
         """The sub-state of the points selected by ``index`` (mask or integer array)."""
         return ContactState(**{f.name: getattr(self, f.name)[index] for f in fields(self)})
