@@ -16,7 +16,9 @@ from frictionlab._version import __version__
 from frictionlab.errors import FrictionlabError, InputError, ParameterError, ValidityError
 
 #: Subcommand modules under ``frictionlab.commands`` (one job each).
-COMMANDS: tuple[str, ...] = ("demo", "simulate", "roughness", "bridge", "calibrate", "contact")
+COMMANDS: tuple[str, ...] = (
+    "demo", "simulate", "roughness", "bridge", "calibrate", "contact", "bench",
+)  # fmt: skip
 
 EXIT_OK = 0
 EXIT_FAILED = 1
