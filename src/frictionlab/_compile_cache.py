@@ -4,15 +4,18 @@ numba's own default writes the cache next to the sources (``__pycache__``), whic
 read-only installs, and keys each entry on the time stamp of the function's own file only:
 a kernel that calls a function of another module is not recompiled when that module
 changes (a stale compiled caller). So frictionlab points numba at a per-user cache
-directory *keyed on the package version and a hash of every source file of the package*:
+directory *keyed on the package version and a hash of every source file that uses numba*
+(kernels call only kernels, and those live in files that import numba):
 
     <user cache>/frictionlab/numba/<version>-<source hash>/
 
 with ``<user cache>`` = ``$XDG_CACHE_HOME`` or ``~/.cache`` (``%LOCALAPPDATA%`` on
 Windows), falling back to the system temporary directory when that cannot be created.
-Any change of any source file gives a fresh directory, so no stale compiled code is ever
-loaded. ``FRICTIONLAB_CACHE_DIR`` overrides the location (the key is still appended);
-a user's own ``NUMBA_CACHE_DIR`` is respected as it is.
+Any change of a compiled module gives a fresh directory (and one full recompilation,
+about a minute on a 2-core machine), so no stale compiled code is ever loaded; edits
+elsewhere (CLI, I/O) keep the cache. ``FRICTIONLAB_CACHE_DIR`` overrides the location
+(the key is still appended); a user's own ``NUMBA_CACHE_DIR`` is respected as it is.
+Directories of earlier versions are not removed (a few MB each).
 
 :func:`configure` runs when :mod:`frictionlab` is imported, before any kernel is
 decorated (numba reads ``config.CACHE_DIR`` when a ``cache=True`` function is defined).
@@ -35,12 +38,15 @@ _chosen: Path | None = None
 
 
 def source_hash() -> str:
-    """SHA-256 (first 16 hex digits) over the names and bytes of every ``.py`` file."""
+    """SHA-256 (first 16 hex digits) over the names and bytes of the ``.py`` files using numba."""
     digest = hashlib.sha256()
     for path in sorted(_PACKAGE.rglob("*.py")):
+        data = path.read_bytes()
+        if b"numba" not in data:
+            continue
         digest.update(path.relative_to(_PACKAGE).as_posix().encode())
         digest.update(b"\0")
-        digest.update(path.read_bytes())
+        digest.update(data)
     return digest.hexdigest()[:16]
 
 

@@ -41,12 +41,14 @@ def test_unwritable_location_falls_back_and_user_setting_is_respected(tmp_path: 
     assert _run({"NUMBA_CACHE_DIR": str(tmp_path / "mine")}) == str(tmp_path / "mine")
 
 
-def test_source_hash_changes_with_any_source(tmp_path: Path, monkeypatch) -> None:
+def test_source_hash_changes_with_any_compiled_module(tmp_path: Path, monkeypatch) -> None:
     copy = tmp_path / "pkg"
     (copy / "sub").mkdir(parents=True)
     (copy / "a.py").write_text("x = 1\n")
-    (copy / "sub" / "b.py").write_text("y = 2\n")
+    (copy / "sub" / "b.py").write_text("import numba\ny = 2\n")
     monkeypatch.setattr(_compile_cache, "_PACKAGE", copy)
     before = _compile_cache.source_hash()
-    (copy / "sub" / "b.py").write_text("y = 3\n")
+    (copy / "a.py").write_text("x = 2\n")  # no kernel in it: the same cache
+    assert _compile_cache.source_hash() == before
+    (copy / "sub" / "b.py").write_text("import numba\ny = 3\n")
     assert _compile_cache.source_hash() != before
