@@ -133,10 +133,14 @@ def _recovery_rate(F: float, Fs: float, n: float, form: int) -> tuple[float, flo
         x = 1.0 - F / Fs
         if x <= 0.0:
             return 0.0, (-1.0 / Fs if n == 1.0 else (0.0 if n > 1.0 else -math.inf))
+        if n == 1.0:  # the default exponent without pow (the same numbers)
+            return x, -1.0 / Fs
         return x**n, -n * x ** (n - 1.0) / Fs
     x = Fs / F - 1.0
     if x <= 0.0:
         return 0.0, (-Fs / (F * F) if n == 1.0 else (0.0 if n > 1.0 else -math.inf))
+    if n == 1.0:
+        return x, -Fs / (F * F)
     return x**n, -n * x ** (n - 1.0) * Fs / (F * F)
 
 
@@ -150,6 +154,8 @@ def _softening_rate(F: float, Fk: float, m: float) -> tuple[float, float]:
     x = F / Fk - 1.0
     if x <= 0.0:
         return 0.0, (1.0 / Fk if m == 1.0 else (0.0 if m > 1.0 else math.inf))
+    if m == 1.0:
+        return x, 1.0 / Fk
     return x**m, m * x ** (m - 1.0) / Fk
 
 
