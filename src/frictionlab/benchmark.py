@@ -76,14 +76,26 @@ def coulomb_return(traction, du, alpha_t, alpha_n, mu, out_traction, out_dlam): 
 
 
 def _median(func: Callable[[], object], repeats: int) -> dict[str, float]:
-    """Warm-up call, then ``repeats`` timed calls: median and minimum [s]."""
+    """Warm-up call, then ``repeats`` timed calls: median and minimum wall time [s].
+
+    Also the median process CPU time (all threads summed): on a shared machine a serial
+    run's CPU time is what it costs, whatever the wait for a core.
+    """
     func()
     times = []
+    cpu = []
     for _ in range(repeats):
         start = time.perf_counter()
+        start_cpu = time.process_time()
         func()
+        cpu.append(time.process_time() - start_cpu)
         times.append(time.perf_counter() - start)
-    return {"median_s": statistics.median(times), "min_s": min(times), "runs": repeats}
+    return {
+        "median_s": statistics.median(times),
+        "min_s": min(times),
+        "cpu_median_s": statistics.median(cpu),
+        "runs": repeats,
+    }
 
 
 def _sliding(params: Any, n: int, fn: float) -> tuple[Any, np.ndarray]:
@@ -134,14 +146,16 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
     serial = _median(lambda: kernels.step_points(*args), repeats)
     parallel = _median(lambda: kernels.step_points_parallel(*args), repeats)
     log(f"kernel serial / parallel     {serial['median_s'] / points * 1e6:8.4f} / "
-        f"{parallel['median_s'] / points * 1e6:.4f} us/point")  # fmt: skip
+        f"{parallel['median_s'] / points * 1e6:.4f} us/point (serial CPU time "
+        f"{serial['cpu_median_s'] / points * 1e6:.4f} us/point)")  # fmt: skip
 
     m = python_points
     small = tuple(a[:m] if isinstance(a, np.ndarray) and a.shape[:1] == (points,) else a
                   for a in args)  # fmt: skip
     python = _median(lambda: interpreted.step_points(*small), max(repeats, 5))
     python_per_point = python["median_s"] / m
-    log(f"per-point Python loop        {python_per_point * 1e6:8.1f} us/point")
+    log(f"per-point Python loop        {python_per_point * 1e6:8.1f} us/point (CPU time "
+        f"{python['cpu_median_s'] / m * 1e6:.1f})")  # fmt: skip
 
     mcc = SubloadingParams(surface="modified_cam_clay", F_s=1.0, F_k=0.6, M=0.5, u=100.0,
                            kappa=1.0, xi=1e-3)  # fmt: skip
@@ -161,6 +175,8 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         "law_lean_us_per_point": per_point(lean),
         "law_kernel_serial_us_per_point": per_point(serial),
         "law_kernel_parallel_us_per_point": per_point(parallel),
+        "law_kernel_serial_cpu_us_per_point": serial["cpu_median_s"] / points * 1e6,
+        "python_loop_cpu_us_per_point": python["cpu_median_s"] / m * 1e6,
         "modified_cam_clay_update_us_per_point": per_point(closed),
         "python_loop_points": m,
         "python_loop_us_per_point": python_per_point * 1e6,
@@ -168,6 +184,9 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         "law_lean_over_coulomb": per_point(lean) / per_point(coulomb),
         "parallel_gain": per_point(serial) / per_point(parallel),
         "speedup_over_python": python_per_point * 1e6 / per_point(default),
+        "serial_cpu_speedup_over_python": python["cpu_median_s"]
+        / m
+        / (serial["cpu_median_s"] / points),
         "target_law_over_coulomb": TARGET_LAW_OVER_COULOMB,
         "target_speedup_over_python": TARGET_SPEEDUP_OVER_PYTHON,
         "timings": {
