@@ -53,7 +53,8 @@ class StepResult:
         (N, 3) tractions ``(f_t1, f_t2, f_n)`` [Pa] at the end of the increment.
     tangent:
         (N, 3, 3) algorithmic consistent tangent d(traction)/d(slip increment) [Pa/m];
-        non-symmetric in plastic sliding (pitfall 11); zero for open points.
+        non-symmetric in plastic sliding (pitfall 11); zero for open points; (0, 3, 3)
+        when ``update`` was asked for no tangent.
     plastic_slip_increment:
         (N, 3) plastic slip increment ``dlam * t_bar`` [m]; the normal component is 0.
     plastic_multiplier:
