@@ -2,8 +2,9 @@
 
 Reports the cost per contact point and per increment of ``frictionlab.subloading.update`` for
 several surfaces, and measures, in the same process, the speed-up of the compiled kernel over the
-same per-point loop run by the Python interpreter (``kernels.step_points.py_func``; the scalar
-functions it calls stay compiled, so the ratio is a lower bound) on a smaller batch.
+same per-point loop run by the Python interpreter (``frictionlab.subloading.interpreted``: the
+kernel's source with every function interpreted) on a smaller batch. ``frictionlab bench`` (or
+``benchmarks/bench_speed.py``) reports the issue-14 figures against a plain Coulomb return.
 
 Run: ``python benchmarks/bench_return_map.py [--points N]``; writes
 ``benchmarks/results/return_map.json``.
@@ -20,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from frictionlab import __version__
-from frictionlab.subloading import SubloadingParams, initial_state, kernels, update
+from frictionlab.subloading import SubloadingParams, initial_state, interpreted, kernels, update
 from frictionlab.subloading.return_map import parameter_table
 
 CASES = {
@@ -66,16 +67,16 @@ def bench_case(name: str, kw: dict, points: int, m: int, rng: np.random.Generato
     out = kernels.empty_outputs(m)
     table = parameter_table(params)
 
-    def interpreted() -> None:
-        kernels.step_points.py_func(
+    def python_loop() -> None:
+        interpreted.step_points(
             small.traction, small.F, small.R, small.gap, du_small, np.array([0.01]), table,
-            True, 0 if params.is_cone else 2, 1.0, 0, 0, 0, False,
+            True, 0 if params.is_cone else 2, 1.0, 0, 0, 0, False, True,
             out["traction"], out["F"], out["R"], out["gap"], out["dlam"], out["vp"],
             out["diss"], out["tangent"], out["status"], out["iterations"],
         )  # fmt: skip
 
     compiled_small = _time(lambda: update(params, small, du_small, 0.01), 0.5)
-    interp = _time(interpreted, 1.0)
+    interp = _time(python_loop, 1.0)
     return {
         "case": name,
         "points": points,

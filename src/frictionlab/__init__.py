@@ -8,8 +8,12 @@ Two published models and the bridge between them:
   :mod:`frictionlab.roughness`.
 """
 
+from frictionlab._compile_cache import configure as _configure_compile_cache
 from frictionlab._version import __version__
-from frictionlab.errors import (
+
+# numba's cache: a per-user directory keyed on the sources (before any kernel is defined)
+_configure_compile_cache()
+from frictionlab.errors import (  # noqa: E402
     ConvergenceError,
     FrictionlabError,
     InputError,

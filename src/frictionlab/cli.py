@@ -25,6 +25,7 @@ COMMANDS: tuple[str, ...] = (
     "contact",
     "sweep",
     "example",
+    "bench",
 )
 
 EXIT_OK = 0

@@ -65,7 +65,7 @@ def _h_one(mu0: float, gx: float, gy: float, cb: float, sb: float) -> tuple[floa
     return hx, hy, den
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def multipliers_nb(
     mu0: float, gx: np.ndarray, gy: np.ndarray, cb: float, sb: float
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -353,7 +353,7 @@ def _accumulate_row(
     return fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def sample_nb(
     z1: np.ndarray,
     h1x: np.ndarray,
@@ -525,7 +525,7 @@ def sample_np(
     )
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def interp_periodic_nb(
     fields: np.ndarray,
     dx: float,
@@ -581,7 +581,7 @@ def interp_periodic_nb(
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def interp_points_nb(
     fields: np.ndarray, dx: float, dy: float, xq: np.ndarray, yq: np.ndarray
 ) -> np.ndarray:

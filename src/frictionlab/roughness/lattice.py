@@ -36,9 +36,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, fields, replace
 from typing import Any
 
+import numba
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -703,11 +705,7 @@ def friction_polar(
         if progress is not None:
             progress(betas.size, betas.size)
     else:
-        results = []
-        for i, b in enumerate(betas):
-            results.append(_direction(lattice, lower, upper, m0, float(b), settings))
-            if progress is not None:
-                progress(i + 1, betas.size)
+        results = _all_directions(lattice, lower, upper, m0, betas, settings, progress)
     mu_x = np.array([r.mu_x for r in results])
     mu_y = np.array([r.mu_y for r in results])
     cos_b = np.array([_cos_sin_deg(float(b))[0] for b in betas])
@@ -750,6 +748,55 @@ def friction_polar(
         message="ok" if n_bad == 0 else f"{n_bad} of {betas.size} directions violate Eq 1's bound",
         invalid_messages=messages,
     )
+
+
+#: Lattices with at least this many stations run their directions on parallel threads
+#: (the compiled sample kernel releases the GIL); smaller ones stay serial, where the
+#: threads' overhead would cost more than it saves (hierarchy levels, profiles).
+PARALLEL_MIN_STATIONS = 1 << 16
+
+
+def _all_directions(
+    lattice: _Lattice,
+    lower: Surface,
+    upper: Surface,
+    mu0: float,
+    betas: FloatArray,
+    settings: LatticeSettings,
+    progress: Callable[[int, int], None] | None,
+) -> list[_Direction]:
+    """:func:`_direction` for every direction, on numba's thread count when worth it.
+
+    The directions are independent, so the results equal the serial loop's exactly; they
+    are collected in order, and the first error (in the order of the directions) is raised.
+    """
+    workers = min(numba.get_num_threads(), betas.size)
+    if (
+        settings.engine != "numba"
+        or workers < 2
+        or lattice.geometry.n_stations < PARALLEL_MIN_STATIONS
+    ):
+        results = []
+        for i, b in enumerate(betas):
+            results.append(_direction(lattice, lower, upper, mu0, float(b), settings))
+            if progress is not None:
+                progress(i + 1, betas.size)
+        return results
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        futures = [
+            pool.submit(_direction, lattice, lower, upper, mu0, float(b), settings) for b in betas
+        ]
+        try:
+            results = []
+            for i, future in enumerate(futures):
+                results.append(future.result())
+                if progress is not None:
+                    progress(i + 1, betas.size)
+        except BaseException:
+            for future in futures:
+                future.cancel()
+            raise
+    return results
 
 
 @dataclass(frozen=True)

@@ -44,32 +44,38 @@ _HALF_PI = 0.5 * math.pi
 
 # ============================================================================ R
 @njit(cache=True)
-def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, float, float]:
-    """R, dR/d(dlam) and dR/dR0 after plastic sliding ``dlam >= 0`` from ``R0``.
+def ratio_start(law: int, R0: float) -> tuple[float, float]:
+    """The per-point constants of :func:`ratio_from`: ``(cos(pi R0/2), sin(pi R0/2))``.
 
-    Cot law, Eq (29): ``cos(pi R/2) = cos(pi R0/2) exp(-pi u dlam/2)``, evaluated as
-    ``R = (2/pi) atan2(sqrt(s0^2 - y0^2 expm1(-2a)), y0 e^-a)`` with ``a = pi u dlam/2``,
-    accurate at both R -> 0 and R -> 1 (pitfalls 1, 2). ``dR/d(dlam) = u cot(pi R/2)``.
+    They depend only on the starting ratio, so the return map evaluates them once per
+    point rather than once per Newton iteration (the ln law needs none: zeros).
+    """
+    if law == U_COT:
+        return math.cos(_HALF_PI * R0), math.sin(_HALF_PI * R0)
+    return 0.0, 0.0
 
-    Ln law, Eq (30), implicit Euler (spec §4.3): ``R - R0 + u dlam ln R = 0``, solved by
-    Newton in ``ln R`` (convex and increasing, so Newton from the right is monotone).
+
+@njit(cache=True)
+def ratio_from(
+    law: int, u: float, y0: float, s0: float, R0: float, dlam: float
+) -> tuple[float, float]:
+    """R and dR/d(dlam) after plastic sliding ``dlam >= 0`` from ``R0`` (no dR/dR0).
+
+    ``(y0, s0) = ratio_start(law, R0)``. Same numbers as :func:`ratio_after`.
     """
     if law == U_COT:
         a = _HALF_PI * u * dlam
-        y0 = math.cos(_HALF_PI * R0)
-        s0 = math.sin(_HALF_PI * R0)
         y = y0 * math.exp(-a)
         s2 = s0 * s0 - y0 * y0 * math.expm1(-2.0 * a)
         s = math.sqrt(s2) if s2 > 0.0 else 0.0
         R = math.atan2(s, y) / _HALF_PI
         slope = u * y / s if s > 0.0 else math.inf
-        dR0 = math.exp(-a) * s0 / s if s > 0.0 else 1.0
-        return R, slope, dR0
+        return R, slope
     # ln law
     if dlam <= 0.0:
         if R0 <= 0.0:
-            return 0.0, math.inf, 1.0
-        return R0, -u * math.log(R0), 1.0
+            return 0.0, math.inf
+        return R0, -u * math.log(R0)
     c = u * dlam
     x = 0.0 if R0 <= 1.0 else math.log(R0)
     for _ in range(200):
@@ -80,7 +86,43 @@ def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, floa
         if abs(step) <= 1e-16 * max(1.0, abs(x)):
             break
     R = math.exp(x)
-    return R, -u * x / (1.0 + c / R), 1.0 / (1.0 + c / R)
+    return R, -u * x / (1.0 + c / R)
+
+
+@njit(cache=True)
+def ratio_sensitivity(law: int, u: float, y0: float, s0: float, dlam: float, R: float) -> float:
+    """dR/dR0 after plastic sliding ``dlam`` that ended at ``R``; ``(y0, s0)`` of ratio_start.
+
+    Needed only for the consistent tangent, so the return map evaluates it once, after
+    the local solve has converged.
+    """
+    if law == U_COT:
+        a = _HALF_PI * u * dlam
+        s2 = s0 * s0 - y0 * y0 * math.expm1(-2.0 * a)
+        s = math.sqrt(s2) if s2 > 0.0 else 0.0
+        return math.exp(-a) * s0 / s if s > 0.0 else 1.0
+    if dlam <= 0.0:
+        return 1.0
+    return 1.0 / (1.0 + u * dlam / R)
+
+
+@njit(cache=True)
+def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, float, float]:
+    """R, dR/d(dlam) and dR/dR0 after plastic sliding ``dlam >= 0`` from ``R0``.
+
+    Cot law, Eq (29): ``cos(pi R/2) = cos(pi R0/2) exp(-pi u dlam/2)``, evaluated as
+    ``R = (2/pi) atan2(sqrt(s0^2 - y0^2 expm1(-2a)), y0 e^-a)`` with ``a = pi u dlam/2``,
+    accurate at both R -> 0 and R -> 1 (pitfalls 1, 2). ``dR/d(dlam) = u cot(pi R/2)``.
+
+    Ln law, Eq (30), implicit Euler (spec §4.3): ``R - R0 + u dlam ln R = 0``, solved by
+    Newton in ``ln R`` (convex and increasing, so Newton from the right is monotone).
+
+    The composition of :func:`ratio_start`, :func:`ratio_from` and the sensitivity; the
+    return map calls the parts (constants once per point, dR/dR0 after convergence).
+    """
+    y0, s0 = ratio_start(law, R0)
+    R, slope = ratio_from(law, u, y0, s0, R0, dlam)
+    return R, slope, ratio_sensitivity(law, u, y0, s0, dlam, R)
 
 
 # ============================================================================ F
@@ -91,10 +133,14 @@ def _recovery_rate(F: float, Fs: float, n: float, form: int) -> tuple[float, flo
         x = 1.0 - F / Fs
         if x <= 0.0:
             return 0.0, (-1.0 / Fs if n == 1.0 else (0.0 if n > 1.0 else -math.inf))
+        if n == 1.0:  # the default exponent without pow (the same numbers)
+            return x, -1.0 / Fs
         return x**n, -n * x ** (n - 1.0) / Fs
     x = Fs / F - 1.0
     if x <= 0.0:
         return 0.0, (-Fs / (F * F) if n == 1.0 else (0.0 if n > 1.0 else -math.inf))
+    if n == 1.0:
+        return x, -Fs / (F * F)
     return x**n, -n * x ** (n - 1.0) * Fs / (F * F)
 
 
@@ -108,6 +154,8 @@ def _softening_rate(F: float, Fk: float, m: float) -> tuple[float, float]:
     x = F / Fk - 1.0
     if x <= 0.0:
         return 0.0, (1.0 / Fk if m == 1.0 else (0.0 if m > 1.0 else math.inf))
+    if m == 1.0:
+        return x, 1.0 / Fk
     return x**m, m * x ** (m - 1.0) / Fk
 
 

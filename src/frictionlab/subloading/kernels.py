@@ -26,11 +26,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from frictionlab.subloading.evolution import (
     BACKWARD_EULER,
-    ratio_after,
+    ratio_from,
+    ratio_sensitivity,
+    ratio_start,
     recovered_size,
     recovery_rate,
     size_after,
@@ -76,21 +78,23 @@ def _state_at(
     omq: float,
     fh1t: float, fh2t: float, fn: float, A1: float, A2: float, Aref: float,
     alpha_t: float, surface: int, tear_k: float,
-    R0: float, u: float, ulaw: int,
+    R0: float, y0: float, s0: float, u: float, ulaw: int,
     F0: float, Fs: float, Fk: float, kappa: float, xi: float, m: float, n: float,
     dt: float, integ: int, rform: int,
 ):  # fmt: skip
     """Residual r(q) = Phi(fhat(q), f_n) - R(dlam) F(dlam) and everything derived from it.
 
     ``omq`` is 1 - q, passed separately so that q close to 1 keeps full precision.
+    ``(y0, s0) = ratio_start(ulaw, R0)``, evaluated once per point by the caller.
+    Entry 14 of the tuple (dR/dR0) is left 0: the caller evaluates it after convergence.
     """
     if omq <= 0.0:  # limit gamma -> infinity: fhat -> 0, dlam -> |fhat^tr|/alpha_t
         dlam = math.hypot(fh1t, fh2t) / alpha_t
-        R, dR, dR0 = ratio_after(ulaw, u, R0, dlam)
+        R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
         F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
         phi = 0.0 if surface == COULOMB else fn * 1.0
         return (phi - R * F, 0.0, 0.0, 0.0, dlam, R, dR, F, dF, 0.0, 0.0, 0.0, 0.0, phi,
-                dR0, 0.0, 0.0, 0.0)  # fmt: skip
+                0.0, 0.0, 0.0, 0.0)  # fmt: skip
     gamma = Aref * Aref * q / omq
     d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
     t1 = fh1t / d1  # = fh1 / A1^2
@@ -99,7 +103,7 @@ def _state_at(
     dlam = gamma * W / alpha_t
     w = math.hypot(fh1 / A1, fh2 / A2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fn)
-    R, dR, dR0 = ratio_after(ulaw, u, R0, dlam)
+    R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
     F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
     r = phi - R * F
     # derivatives with respect to gamma
@@ -117,7 +121,7 @@ def _state_at(
     phi_gamma = phi_1 * dfh1 + phi_2 * dfh2
     rf_gamma = hard * ddlam
     r_gamma = phi_gamma - rf_gamma
-    return (r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi, dR0,
+    return (r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi, 0.0,
             phi_gamma, rf_gamma, phi_w * w)  # fmt: skip
 
 
@@ -247,352 +251,404 @@ def _path_minimum(
 
 
 @njit(cache=True)
-def step_points(
-    traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
-    surface, tear_k, ulaw, integ, rform, open_frozen,
+def _point(
+    i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
     out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
     out_status, out_iter,
 ):  # fmt: skip
-    """Advance every point by one increment; results go to the ``out_*`` arrays.
+    """Advance point ``i`` (parameter row ``row``, time increment ``dt``) by one increment.
+
+    The readable per-point definition of the update (steps 0-7 of the module docstring);
+    :func:`step_points` and :func:`step_points_parallel` only loop over it. The tangent
+    (step 7) is skipped when ``want_tangent`` is False (``out_tangent`` is then not touched).
+    """
+    alpha_n = P[row, P_ALPHA_N]
+    alpha_t = P[row, P_ALPHA_T]
+    Fs = P[row, P_FS]
+    Fk = P[row, P_FK]
+    u = P[row, P_U]
+    kappa = P[row, P_KAPPA]
+    xi = P[row, P_XI]
+    m = P[row, P_M]
+    n = P[row, P_N]
+    A1 = P[row, P_A1]
+    A2 = P[row, P_A2]
+    Aref = max(A1, A2)
+    ca = math.cos(P[row, P_ANGLE])
+    sa = math.sin(P[row, P_ANGLE])
+    # 0. into principal axes (contact frame -> (e*_1, e*_2))
+    b1 = ca * P[row, P_BETA1] + sa * P[row, P_BETA2]
+    b2 = -sa * P[row, P_BETA1] + ca * P[row, P_BETA2]
+    f1 = ca * traction[i, 0] + sa * traction[i, 1]
+    f2 = -sa * traction[i, 0] + ca * traction[i, 1]
+    fn = traction[i, 2]
+    du1 = ca * slip_inc[i, 0] + sa * slip_inc[i, 1]
+    du2 = -sa * slip_inc[i, 0] + ca * slip_inc[i, 1]
+    dun = slip_inc[i, 2]
+
+    if want_tangent:
+        for a in range(3):
+            for b in range(3):
+                out_tangent[i, a, b] = 0.0
+    out_dlam[i] = 0.0
+    out_diss[i] = 0.0
+    out_vp[i, 0] = 0.0
+    out_vp[i, 1] = 0.0
+    out_vp[i, 2] = 0.0
+    out_iter[i] = 0
+
+    # 2. recovery-only size
+    F_rec = recovered_size(F_old[i], Fs, Fk, xi, m, n, dt, integ, rform)
+    # 1. elastic predictor and separation: a trial normal traction that is zero to
+    #    the rounding of its own computation opens the contact (pitfall 9)
+    closing_in = alpha_n * (dun - gap_old[i])
+    fn_tr = fn + closing_in
+    if fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in)):
+        out_traction[i, 0] = 0.0
+        out_traction[i, 1] = 0.0
+        out_traction[i, 2] = 0.0
+        out_F[i] = F_old[i] if open_frozen else F_rec
+        out_R[i] = 0.0
+        out_gap[i] = max(-fn_tr / alpha_n, 0.0)
+        out_status[i] = OPEN
+        return
+    # The straight trial path in (fhat, f_n), s in [0, 1]: fhat(s) = h + s e,
+    # f_n(s) = fn0 + s dfn. Its derivatives with respect to the slip increment (for the
+    # tangent): d e / d du_t = et I, d h / d du_n = hn, d e / d du_n = en,
+    # d fn0 / d du_n = f0n, d dfn / d du_n = dfnn.
+    if fn > 0.0:
+        et = alpha_t
+        f1t = f1 + alpha_t * du1
+        f2t = f2 + alpha_t * du2
+        h1 = f1 - fn * b1
+        h2 = f2 - fn * b2
+        fn0 = fn
+        hn1 = 0.0
+        hn2 = 0.0
+        en1 = -alpha_n * b1
+        en2 = -alpha_n * b2
+        f0n = 0.0
+        dfnn = alpha_n
+        R_prev = R_old[i]
+    else:
+        # Re-closing (theory.md, "Re-closing"): the contact forms as a virgin contact,
+        # f_t = 0, at the normal traction of the end of the step; only the tangential
+        # slip after the closure, the fraction 1 - s_c with s_c = gap/du_n, loads it.
+        s_c = gap_old[i] / dun if dun > 0.0 else 0.0
+        s_c = min(max(s_c, 0.0), 1.0)
+        et = alpha_t * (1.0 - s_c)
+        f1t = et * du1
+        f2t = et * du2
+        h1 = -fn_tr * b1
+        h2 = -fn_tr * b2
+        fn0 = fn_tr
+        hn1 = -alpha_n * b1
+        hn2 = -alpha_n * b2
+        ds_c = gap_old[i] / (dun * dun) if dun > 0.0 and 0.0 < s_c < 1.0 else 0.0
+        en1 = alpha_t * du1 * ds_c
+        en2 = alpha_t * du2 * ds_c
+        f0n = alpha_n
+        dfnn = 0.0
+        R_prev = math.inf  # no memory: the virgin ratio is the start of the path
+    fh1t = f1t - fn_tr * b1
+    fh2t = f2t - fn_tr * b2
+    e1 = fh1t - h1
+    e2 = fh2t - h2
+    dfn = fn_tr - fn0
+    w_tr = math.hypot(fh1t / A1, fh2t / A2)
+    phi_tr, phi_tr_w, phi_tr_fn = potential(surface, tear_k, w_tr, fn_tr)
+
+    # 3. starting ratio: the smallest Phi/F along the trial path (partial unloading,
+    #    T. Chang's correction; F(s) the recovery-only size over s dt), so that the
+    #    update is continuous in (du, dt) and equals what many small steps do.
+    R_start = R_prev
+    corrected = False
+    gR1 = 0.0  # gradient of R_start with respect to (du1, du2, dun), principal axes
+    gR2 = 0.0
+    gRn = 0.0
+    w0 = math.hypot(h1 / A1, h2 / A2)
+    phi0, phi0_w, phi0_fn = potential(surface, tear_k, w0, fn0)
+    dF0 = _path_size_slope(F_old[i], 0.0, Fs, xi, n, dt, integ, rform)
+    r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, e1, e2, dfn, A1, A2,
+                            F_old[i], dF0)  # fmt: skip
+    dF1 = _path_size_slope(F_rec, 1.0, Fs, xi, n, dt, integ, rform)
+    r_1, d_1 = _ratio_slope(phi_tr, phi_tr_w, phi_tr_fn, w_tr, fh1t, fh2t, e1, e2, dfn, A1,
+                            A2, F_rec, dF1)  # fmt: skip
+    s_star = _path_minimum(h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old[i],
+                           Fs, Fk, xi, m, n, dt, integ, rform, r_0, d_0, r_1,
+                           d_1)  # fmt: skip
+    if s_star == 0.0:
+        rho = r_0
+    elif s_star == 1.0:
+        rho = r_1  # phi_tr / F_rec: the same number as the loading test below
+    else:
+        rho = math.inf
+    F_s = F_rec
+    phis_w = 0.0
+    phis_fn = 0.0
+    ws = 0.0
+    q1 = 0.0
+    q2 = 0.0
+    if 0.0 < s_star < 1.0:
+        rho, _, F_s, phis_w, phis_fn, ws, q1, q2 = _path_ratio(
+            s_star, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old[i], Fs, Fk,
+            xi, m, n, dt, integ, rform,
+        )  # fmt: skip
+    if rho < R_start:
+        R_start = rho
+        if 0.0 < s_star < 1.0:
+            corrected = True
+            # envelope theorem: d rho(s*)/d du at fixed s* (rho'(s*) = 0)
+            if ws > 0.0:
+                # q_i / ws first: |q_i / ws| <= A_i, while A_i^2 ws can underflow
+                u1 = q1 / ws / (A1 * A1)
+                u2 = q2 / ws / (A2 * A2)
+            else:
+                u1 = 0.0
+                u2 = 0.0
+            gR1 = phis_w * u1 * s_star * et / F_s
+            gR2 = phis_w * u2 * s_star * et / F_s
+            gRn = (phis_w * (u1 * (hn1 + s_star * en1) + u2 * (hn2 + s_star * en2))
+                   + phis_fn * (f0n + s_star * dfnn)) / F_s  # fmt: skip
+    ext1 = hn1 + en1 + alpha_n * b1  # d fhat^tr / d du_n beyond -alpha_n b (closing)
+    ext2 = hn2 + en2 + alpha_n * b2
+
+    # 4. loading test on the trial state
+    r0 = phi_tr - R_start * F_rec
+    if w_tr == 0.0 or r0 <= RTOL_RESIDUAL * F_rec:
+        R_new = phi_tr / F_rec
+        if surface != COULOMB and R_new > 1.0 + RTOL_ACCEPT:
+            # normal traction pushed the state outside a closed surface (pitfall 3)
+            _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
+                      out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
+            out_status[i] = FAILED
+            return
+        if R_new > 1.0:
+            R_new = 1.0
+        out_traction[i, 0] = ca * f1t - sa * f2t
+        out_traction[i, 1] = sa * f1t + ca * f2t
+        out_traction[i, 2] = fn_tr
+        out_F[i] = F_rec
+        out_R[i] = R_new
+        out_gap[i] = 0.0
+        # f_t = et du_t: d f_t / d du_n = alpha_t du_t gap / du_n^2 when closing
+        if want_tangent:
+            out_tangent[i, 0, 0] = et
+            out_tangent[i, 1, 1] = et
+            out_tangent[i, 0, 2] = ca * ext1 - sa * ext2
+            out_tangent[i, 1, 2] = sa * ext1 + ca * ext2
+            out_tangent[i, 2, 2] = alpha_n
+        out_status[i] = STICK
+        return
+
+    # 5. plastic corrector: bracket [0, 1] in q; cos/sin of pi R_start/2 once per point
+    y0, s0 = ratio_start(ulaw, R_start)
+    end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+                    R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
+                    rform)  # fmt: skip
+    r1 = end[0]
+    if not r1 < 0.0:
+        # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of f:
+        # only possible for a closed surface loaded normally with a small tangential
+        # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
+        # tangential mechanism, pitfall 3), so R = f_n g(0)/F if that is <= 1.
+        R_end = end[13] / end[7]
+        if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
+            _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
+                      out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
+            out_status[i] = FAILED
+            return
+        dlam = end[4]
+        norm = math.hypot(fh1t, fh2t)
+        tb1 = fh1t / norm
+        tb2 = fh2t / norm
+        _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
+                    min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
+                    out_dlam, out_vp, out_diss, out_status)  # fmt: skip
+        # f_t = f_n beta: independent of du_t
+        if want_tangent:
+            out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
+            out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
+            out_tangent[i, 2, 2] = alpha_n
+        return
+    # Unknown t in [0, 1]: q = t, or 1 - q = t when the regula-falsi estimate lies in
+    # the upper half, so that a return almost to the axis (q -> 1) keeps full precision.
+    if math.isfinite(r0):
+        q0 = r0 / (r0 - r1)
+        if not 0.0 < q0 < 1.0:
+            q0 = 0.5
+        flip = q0 > 0.5
+    else:  # trial outside the domain of g: locate the root's half first
+        mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
+                        tear_k, R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
+                        integ, rform)[0]  # fmt: skip
+        flip = mid > 0.0
+        q0 = 0.75 if flip else 0.25
+    dqdt = -1.0 if flip else 1.0
+    t = 1.0 - q0 if flip else q0
+    t_pos = 1.0 if flip else 0.0  # end of the bracket with r > 0 (q = 0)
+    t_neg = 0.0 if flip else 1.0  # end with r < 0 (q = 1)
+    converged = False
+    it = 0
+    dx = 1.0
+    dx_old = 1.0
+    q = 1.0 - t if flip else t
+    omq = t if flip else 1.0 - t
+    res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+                    R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
+                    rform)  # fmt: skip
+    while it < MAX_ITERATIONS:
+        it += 1
+        r = res[0]
+        scale = max(res[7], 1e-300)
+        if abs(r) <= RTOL_RESIDUAL * scale:
+            converged = True
+            break
+        if r > 0.0:
+            t_pos = t
+        else:
+            t_neg = t
+        lo = min(t_pos, t_neg)
+        hi = max(t_pos, t_neg)
+        if hi - lo <= 4e-16 * max(hi, 1e-300):
+            # the bracket has collapsed to round-off: the residual cannot fall below
+            # the rounding of Phi, ~ eps Phi_w w (large near the apex of the tear
+            # or the parabola, where f_n << F; theory.md, "Accuracy")
+            cond = abs(res[17]) if math.isfinite(res[17]) else 0.0
+            converged = abs(r) <= RTOL_ACCEPT * max(scale, cond)
+            break
+        # Newton on the log residual ln(Phi / (R F)) (same root and sign; nearly linear
+        # for the exponential Cam-clay surface), safeguarded as in rtsafe: bisect when
+        # the step leaves the bracket or does not at least halve the step before last.
+        phi = res[13]
+        rf = res[5] * res[7]
+        t_new = -1.0
+        if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
+            dlog = (res[15] / phi - res[16] / rf) * Aref * Aref / (omq * omq) * dqdt
+            if dlog != 0.0 and math.isfinite(dlog):
+                t_new = t - math.log(phi / rf) / dlog
+        if not (lo < t_new < hi) or abs(t_new - t) > 0.5 * abs(dx_old):
+            t_new = 0.5 * (lo + hi)
+        dx_old = dx
+        dx = t_new - t
+        t = t_new
+        q = 1.0 - t if flip else t
+        omq = t if flip else 1.0 - t
+        res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+                        R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
+                        rform)  # fmt: skip
+    out_iter[i] = it
+    if not converged:
+        _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
+                  out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
+        out_status[i] = FAILED
+        return
+    (r, r_gamma, phi_1, phi_2, dlam, R, _, F, _, phi_fn, gamma, W, hard, phi, _,
+     _, _, _) = res  # fmt: skip
+    d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
+    # 6. update (principal axes)
+    tb1 = (fh1t / d1) / W  # flow direction t-bar at t_{n+1}, Eqs (87), (99)
+    tb2 = (fh2t / d2) / W
+    _write_slip(i, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca, sa,
+                out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss,
+                out_status)  # fmt: skip
+    if not want_tangent:
+        return
+    # 7. consistent tangent: r(gamma; fhat^tr, f_n) = 0
+    #    r_fhtr_j = Phi_j a_j - hard * d(dlam)/d(fhat^tr_j)
+    ddl1 = gamma * (fh1t / (d1 * d1)) / (W * alpha_t)
+    ddl2 = gamma * (fh2t / (d2 * d2)) / (W * alpha_t)
+    c1 = (phi_1 * a1 - hard * ddl1) / r_gamma
+    c2 = (phi_2 * a2 - hard * ddl2) / r_gamma
+    cn = phi_fn / r_gamma
+    G1 = -fh1 / d1
+    G2 = -fh2 / d2
+    # d g / d fhat^tr (2x2) and d g / d f_n (explicit)
+    j11 = a1 - G1 * c1
+    j12 = -G1 * c2
+    j21 = -G2 * c1
+    j22 = a2 - G2 * c2
+    jn1 = b1 - G1 * cn
+    jn2 = b2 - G2 * cn
+    # d fhat^tr = alpha_t d du_t - beta alpha_n d du_n ; d f_n = alpha_n d du_n
+    T11 = et * j11
+    T12 = et * j12
+    T21 = et * j21
+    T22 = et * j22
+    T1n = alpha_n * (jn1 - j11 * b1 - j12 * b2) + j11 * ext1 + j12 * ext2
+    T2n = alpha_n * (jn2 - j21 * b1 - j22 * b2) + j21 * ext1 + j22 * ext2
+    if corrected:  # R_start depends on du: r_R0 = -F dR/dR0
+        dR0 = ratio_sensitivity(ulaw, u, y0, s0, dlam, R)
+        cR = -F * dR0 / r_gamma
+        T11 -= G1 * cR * gR1
+        T12 -= G1 * cR * gR2
+        T21 -= G2 * cR * gR1
+        T22 -= G2 * cR * gR2
+        T1n -= G1 * cR * gRn
+        T2n -= G2 * cR * gRn
+    # back to the contact frame: T_c = Q^T T_p Q, Q = [[ca, sa], [-sa, ca]]
+    p11 = ca * T11 - sa * T21
+    p12 = ca * T12 - sa * T22
+    p21 = sa * T11 + ca * T21
+    p22 = sa * T12 + ca * T22
+    out_tangent[i, 0, 0] = p11 * ca - p12 * sa
+    out_tangent[i, 0, 1] = p11 * sa + p12 * ca
+    out_tangent[i, 1, 0] = p21 * ca - p22 * sa
+    out_tangent[i, 1, 1] = p21 * sa + p22 * ca
+    out_tangent[i, 0, 2] = ca * T1n - sa * T2n
+    out_tangent[i, 1, 2] = sa * T1n + ca * T2n
+    out_tangent[i, 2, 2] = alpha_n
+
+
+@njit(cache=True)
+def step_points(
+    traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
+    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+    out_status, out_iter,
+):  # fmt: skip
+    """Advance every point by one increment; results go to the ``out_*`` arrays (serial).
 
     ``P`` is the parameter table (1 or N rows, columns ``P_*``); ``dt_arr`` has 1 or N
     entries. Failed points keep their old state, get the elastic tangent and status
-    FAILED; no NaN is ever written.
+    FAILED; no NaN is ever written. ``out_tangent`` may have zero rows when
+    ``want_tangent`` is False.
     """
     npts = traction.shape[0]
     shared_p = P.shape[0] == 1
     for i in range(npts):
         row = 0 if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
-        alpha_n = P[row, P_ALPHA_N]
-        alpha_t = P[row, P_ALPHA_T]
-        Fs = P[row, P_FS]
-        Fk = P[row, P_FK]
-        u = P[row, P_U]
-        kappa = P[row, P_KAPPA]
-        xi = P[row, P_XI]
-        m = P[row, P_M]
-        n = P[row, P_N]
-        A1 = P[row, P_A1]
-        A2 = P[row, P_A2]
-        Aref = max(A1, A2)
-        ca = math.cos(P[row, P_ANGLE])
-        sa = math.sin(P[row, P_ANGLE])
-        # 0. into principal axes (contact frame -> (e*_1, e*_2))
-        b1 = ca * P[row, P_BETA1] + sa * P[row, P_BETA2]
-        b2 = -sa * P[row, P_BETA1] + ca * P[row, P_BETA2]
-        f1 = ca * traction[i, 0] + sa * traction[i, 1]
-        f2 = -sa * traction[i, 0] + ca * traction[i, 1]
-        fn = traction[i, 2]
-        du1 = ca * slip_inc[i, 0] + sa * slip_inc[i, 1]
-        du2 = -sa * slip_inc[i, 0] + ca * slip_inc[i, 1]
-        dun = slip_inc[i, 2]
+        _point(i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+               surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+               out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+               out_status, out_iter)  # fmt: skip
 
-        for a in range(3):
-            for b in range(3):
-                out_tangent[i, a, b] = 0.0
-        out_dlam[i] = 0.0
-        out_diss[i] = 0.0
-        out_vp[i, 0] = 0.0
-        out_vp[i, 1] = 0.0
-        out_vp[i, 2] = 0.0
-        out_iter[i] = 0
 
-        # 2. recovery-only size
-        F_rec = recovered_size(F_old[i], Fs, Fk, xi, m, n, dt, integ, rform)
-        # 1. elastic predictor and separation: a trial normal traction that is zero to
-        #    the rounding of its own computation opens the contact (pitfall 9)
-        closing_in = alpha_n * (dun - gap_old[i])
-        fn_tr = fn + closing_in
-        if fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in)):
-            out_traction[i, 0] = 0.0
-            out_traction[i, 1] = 0.0
-            out_traction[i, 2] = 0.0
-            out_F[i] = F_old[i] if open_frozen else F_rec
-            out_R[i] = 0.0
-            out_gap[i] = max(-fn_tr / alpha_n, 0.0)
-            out_status[i] = OPEN
-            continue
-        # The straight trial path in (fhat, f_n), s in [0, 1]: fhat(s) = h + s e,
-        # f_n(s) = fn0 + s dfn. Its derivatives with respect to the slip increment (for the
-        # tangent): d e / d du_t = et I, d h / d du_n = hn, d e / d du_n = en,
-        # d fn0 / d du_n = f0n, d dfn / d du_n = dfnn.
-        if fn > 0.0:
-            et = alpha_t
-            f1t = f1 + alpha_t * du1
-            f2t = f2 + alpha_t * du2
-            h1 = f1 - fn * b1
-            h2 = f2 - fn * b2
-            fn0 = fn
-            hn1 = 0.0
-            hn2 = 0.0
-            en1 = -alpha_n * b1
-            en2 = -alpha_n * b2
-            f0n = 0.0
-            dfnn = alpha_n
-            R_prev = R_old[i]
-        else:
-            # Re-closing (theory.md, "Re-closing"): the contact forms as a virgin contact,
-            # f_t = 0, at the normal traction of the end of the step; only the tangential
-            # slip after the closure, the fraction 1 - s_c with s_c = gap/du_n, loads it.
-            s_c = gap_old[i] / dun if dun > 0.0 else 0.0
-            s_c = min(max(s_c, 0.0), 1.0)
-            et = alpha_t * (1.0 - s_c)
-            f1t = et * du1
-            f2t = et * du2
-            h1 = -fn_tr * b1
-            h2 = -fn_tr * b2
-            fn0 = fn_tr
-            hn1 = -alpha_n * b1
-            hn2 = -alpha_n * b2
-            ds_c = gap_old[i] / (dun * dun) if dun > 0.0 and 0.0 < s_c < 1.0 else 0.0
-            en1 = alpha_t * du1 * ds_c
-            en2 = alpha_t * du2 * ds_c
-            f0n = alpha_n
-            dfnn = 0.0
-            R_prev = math.inf  # no memory: the virgin ratio is the start of the path
-        fh1t = f1t - fn_tr * b1
-        fh2t = f2t - fn_tr * b2
-        e1 = fh1t - h1
-        e2 = fh2t - h2
-        dfn = fn_tr - fn0
-        w_tr = math.hypot(fh1t / A1, fh2t / A2)
-        phi_tr, phi_tr_w, phi_tr_fn = potential(surface, tear_k, w_tr, fn_tr)
+@njit(cache=True, parallel=True)
+def step_points_parallel(
+    traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
+    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+    out_status, out_iter,
+):  # fmt: skip
+    """:func:`step_points` with the points shared among numba's threads (``prange``).
 
-        # 3. starting ratio: the smallest Phi/F along the trial path (partial unloading,
-        #    T. Chang's correction; F(s) the recovery-only size over s dt), so that the
-        #    update is continuous in (du, dt) and equals what many small steps do.
-        R_start = R_prev
-        corrected = False
-        gR1 = 0.0  # gradient of R_start with respect to (du1, du2, dun), principal axes
-        gR2 = 0.0
-        gRn = 0.0
-        w0 = math.hypot(h1 / A1, h2 / A2)
-        phi0, phi0_w, phi0_fn = potential(surface, tear_k, w0, fn0)
-        dF0 = _path_size_slope(F_old[i], 0.0, Fs, xi, n, dt, integ, rform)
-        r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, e1, e2, dfn, A1, A2,
-                                F_old[i], dF0)  # fmt: skip
-        dF1 = _path_size_slope(F_rec, 1.0, Fs, xi, n, dt, integ, rform)
-        r_1, d_1 = _ratio_slope(phi_tr, phi_tr_w, phi_tr_fn, w_tr, fh1t, fh2t, e1, e2, dfn, A1,
-                                A2, F_rec, dF1)  # fmt: skip
-        s_star = _path_minimum(h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old[i],
-                               Fs, Fk, xi, m, n, dt, integ, rform, r_0, d_0, r_1,
-                               d_1)  # fmt: skip
-        if s_star == 0.0:
-            rho = r_0
-        elif s_star == 1.0:
-            rho = r_1  # phi_tr / F_rec: the same number as the loading test below
-        else:
-            rho = math.inf
-        F_s = F_rec
-        phis_w = 0.0
-        phis_fn = 0.0
-        ws = 0.0
-        q1 = 0.0
-        q2 = 0.0
-        if 0.0 < s_star < 1.0:
-            rho, _, F_s, phis_w, phis_fn, ws, q1, q2 = _path_ratio(
-                s_star, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old[i], Fs, Fk,
-                xi, m, n, dt, integ, rform,
-            )  # fmt: skip
-        if rho < R_start:
-            R_start = rho
-            if 0.0 < s_star < 1.0:
-                corrected = True
-                # envelope theorem: d rho(s*)/d du at fixed s* (rho'(s*) = 0)
-                if ws > 0.0:
-                    # q_i / ws first: |q_i / ws| <= A_i, while A_i^2 ws can underflow
-                    u1 = q1 / ws / (A1 * A1)
-                    u2 = q2 / ws / (A2 * A2)
-                else:
-                    u1 = 0.0
-                    u2 = 0.0
-                gR1 = phis_w * u1 * s_star * et / F_s
-                gR2 = phis_w * u2 * s_star * et / F_s
-                gRn = (phis_w * (u1 * (hn1 + s_star * en1) + u2 * (hn2 + s_star * en2))
-                       + phis_fn * (f0n + s_star * dfnn)) / F_s  # fmt: skip
-        ext1 = hn1 + en1 + alpha_n * b1  # d fhat^tr / d du_n beyond -alpha_n b (closing)
-        ext2 = hn2 + en2 + alpha_n * b2
-
-        # 4. loading test on the trial state
-        r0 = phi_tr - R_start * F_rec
-        if w_tr == 0.0 or r0 <= RTOL_RESIDUAL * F_rec:
-            R_new = phi_tr / F_rec
-            if surface != COULOMB and R_new > 1.0 + RTOL_ACCEPT:
-                # normal traction pushed the state outside a closed surface (pitfall 3)
-                _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                          out_traction, out_F, out_R, out_gap, out_tangent)  # fmt: skip
-                out_status[i] = FAILED
-                continue
-            if R_new > 1.0:
-                R_new = 1.0
-            out_traction[i, 0] = ca * f1t - sa * f2t
-            out_traction[i, 1] = sa * f1t + ca * f2t
-            out_traction[i, 2] = fn_tr
-            out_F[i] = F_rec
-            out_R[i] = R_new
-            out_gap[i] = 0.0
-            # f_t = et du_t: d f_t / d du_n = alpha_t du_t gap / du_n^2 when closing
-            out_tangent[i, 0, 0] = et
-            out_tangent[i, 1, 1] = et
-            out_tangent[i, 0, 2] = ca * ext1 - sa * ext2
-            out_tangent[i, 1, 2] = sa * ext1 + ca * ext2
-            out_tangent[i, 2, 2] = alpha_n
-            out_status[i] = STICK
-            continue
-
-        # 5. plastic corrector: bracket [0, 1] in q
-        end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                        R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
-                        rform)  # fmt: skip
-        r1 = end[0]
-        if not r1 < 0.0:
-            # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of f:
-            # only possible for a closed surface loaded normally with a small tangential
-            # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
-            # tangential mechanism, pitfall 3), so R = f_n g(0)/F if that is <= 1.
-            R_end = end[13] / end[7]
-            if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
-                _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                          out_traction, out_F, out_R, out_gap, out_tangent)  # fmt: skip
-                out_status[i] = FAILED
-                continue
-            dlam = end[4]
-            norm = math.hypot(fh1t, fh2t)
-            tb1 = fh1t / norm
-            tb2 = fh2t / norm
-            _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
-                        min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
-                        out_dlam, out_vp, out_diss, out_status)  # fmt: skip
-            # f_t = f_n beta: independent of du_t
-            out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
-            out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
-            out_tangent[i, 2, 2] = alpha_n
-            continue
-        # Unknown t in [0, 1]: q = t, or 1 - q = t when the regula-falsi estimate lies in
-        # the upper half, so that a return almost to the axis (q -> 1) keeps full precision.
-        if math.isfinite(r0):
-            q0 = r0 / (r0 - r1)
-            if not 0.0 < q0 < 1.0:
-                q0 = 0.5
-            flip = q0 > 0.5
-        else:  # trial outside the domain of g: locate the root's half first
-            mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
-                            tear_k, R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
-                            integ, rform)[0]  # fmt: skip
-            flip = mid > 0.0
-            q0 = 0.75 if flip else 0.25
-        dqdt = -1.0 if flip else 1.0
-        t = 1.0 - q0 if flip else q0
-        t_pos = 1.0 if flip else 0.0  # end of the bracket with r > 0 (q = 0)
-        t_neg = 0.0 if flip else 1.0  # end with r < 0 (q = 1)
-        converged = False
-        it = 0
-        dx = 1.0
-        dx_old = 1.0
-        q = 1.0 - t if flip else t
-        omq = t if flip else 1.0 - t
-        res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                        R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
-                        rform)  # fmt: skip
-        while it < MAX_ITERATIONS:
-            it += 1
-            r = res[0]
-            scale = max(res[7], 1e-300)
-            if abs(r) <= RTOL_RESIDUAL * scale:
-                converged = True
-                break
-            if r > 0.0:
-                t_pos = t
-            else:
-                t_neg = t
-            lo = min(t_pos, t_neg)
-            hi = max(t_pos, t_neg)
-            if hi - lo <= 4e-16 * max(hi, 1e-300):
-                # the bracket has collapsed to round-off: the residual cannot fall below
-                # the rounding of Phi, ~ eps Phi_w w (large near the apex of the tear
-                # or the parabola, where f_n << F; theory.md, "Accuracy")
-                cond = abs(res[17]) if math.isfinite(res[17]) else 0.0
-                converged = abs(r) <= RTOL_ACCEPT * max(scale, cond)
-                break
-            # Newton on the log residual ln(Phi / (R F)) (same root and sign; nearly linear
-            # for the exponential Cam-clay surface), safeguarded as in rtsafe: bisect when
-            # the step leaves the bracket or does not at least halve the step before last.
-            phi = res[13]
-            rf = res[5] * res[7]
-            t_new = -1.0
-            if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
-                dlog = (res[15] / phi - res[16] / rf) * Aref * Aref / (omq * omq) * dqdt
-                if dlog != 0.0 and math.isfinite(dlog):
-                    t_new = t - math.log(phi / rf) / dlog
-            if not (lo < t_new < hi) or abs(t_new - t) > 0.5 * abs(dx_old):
-                t_new = 0.5 * (lo + hi)
-            dx_old = dx
-            dx = t_new - t
-            t = t_new
-            q = 1.0 - t if flip else t
-            omq = t if flip else 1.0 - t
-            res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                            R_start, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
-                            rform)  # fmt: skip
-        out_iter[i] = it
-        if not converged:
-            _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                      out_traction, out_F, out_R, out_gap, out_tangent)  # fmt: skip
-            out_status[i] = FAILED
-            continue
-        (r, r_gamma, phi_1, phi_2, dlam, R, _, F, _, phi_fn, gamma, W, hard, phi, dR0,
-         _, _, _) = res  # fmt: skip
-        d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
-        # 6. update (principal axes)
-        tb1 = (fh1t / d1) / W  # flow direction t-bar at t_{n+1}, Eqs (87), (99)
-        tb2 = (fh2t / d2) / W
-        _write_slip(i, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca, sa,
-                    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss,
-                    out_status)  # fmt: skip
-        # 7. consistent tangent: r(gamma; fhat^tr, f_n) = 0
-        #    r_fhtr_j = Phi_j a_j - hard * d(dlam)/d(fhat^tr_j)
-        ddl1 = gamma * (fh1t / (d1 * d1)) / (W * alpha_t)
-        ddl2 = gamma * (fh2t / (d2 * d2)) / (W * alpha_t)
-        c1 = (phi_1 * a1 - hard * ddl1) / r_gamma
-        c2 = (phi_2 * a2 - hard * ddl2) / r_gamma
-        cn = phi_fn / r_gamma
-        G1 = -fh1 / d1
-        G2 = -fh2 / d2
-        # d g / d fhat^tr (2x2) and d g / d f_n (explicit)
-        j11 = a1 - G1 * c1
-        j12 = -G1 * c2
-        j21 = -G2 * c1
-        j22 = a2 - G2 * c2
-        jn1 = b1 - G1 * cn
-        jn2 = b2 - G2 * cn
-        # d fhat^tr = alpha_t d du_t - beta alpha_n d du_n ; d f_n = alpha_n d du_n
-        T11 = et * j11
-        T12 = et * j12
-        T21 = et * j21
-        T22 = et * j22
-        T1n = alpha_n * (jn1 - j11 * b1 - j12 * b2) + j11 * ext1 + j12 * ext2
-        T2n = alpha_n * (jn2 - j21 * b1 - j22 * b2) + j21 * ext1 + j22 * ext2
-        if corrected:  # R_start depends on du: r_R0 = -F dR/dR0
-            cR = -F * dR0 / r_gamma
-            T11 -= G1 * cR * gR1
-            T12 -= G1 * cR * gR2
-            T21 -= G2 * cR * gR1
-            T22 -= G2 * cR * gR2
-            T1n -= G1 * cR * gRn
-            T2n -= G2 * cR * gRn
-        # back to the contact frame: T_c = Q^T T_p Q, Q = [[ca, sa], [-sa, ca]]
-        p11 = ca * T11 - sa * T21
-        p12 = ca * T12 - sa * T22
-        p21 = sa * T11 + ca * T21
-        p22 = sa * T12 + ca * T22
-        out_tangent[i, 0, 0] = p11 * ca - p12 * sa
-        out_tangent[i, 0, 1] = p11 * sa + p12 * ca
-        out_tangent[i, 1, 0] = p21 * ca - p22 * sa
-        out_tangent[i, 1, 1] = p21 * sa + p22 * ca
-        out_tangent[i, 0, 2] = ca * T1n - sa * T2n
-        out_tangent[i, 1, 2] = sa * T1n + ca * T2n
-        out_tangent[i, 2, 2] = alpha_n
+    The points are independent and each writes only its own output rows, so the result
+    is identical to the serial loop. The loop index is cast to int64: ``prange``
+    yields an unsigned index, and ``0 if shared else i`` would otherwise unify to float64.
+    """
+    npts = traction.shape[0]
+    shared_p = P.shape[0] == 1
+    for k in prange(npts):
+        i = np.int64(k)
+        row = np.int64(0) if shared_p else i
+        dt = dt_arr[0] if n_shared_dt else dt_arr[i]
+        _point(i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+               surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+               out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+               out_status, out_iter)  # fmt: skip
 
 
 @njit(cache=True)
@@ -614,21 +670,26 @@ def _write_slip(i, dlam, g1, g2, tb1, tb2, fn, F, R, ca, sa, out_traction, out_F
 
 @njit(cache=True)
 def _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-              out_traction, out_F, out_R, out_gap, out_tangent):  # fmt: skip
+              out_traction, out_F, out_R, out_gap, out_tangent, want_tangent):  # fmt: skip
     """A failed point keeps its old state and gets the elastic tangent (never NaN)."""
     for a in range(3):
         out_traction[i, a] = traction[i, a]
     out_F[i] = F_old[i]
     out_R[i] = R_old[i]
     out_gap[i] = gap_old[i]
-    out_tangent[i, 0, 0] = alpha_t
-    out_tangent[i, 1, 1] = alpha_t
-    out_tangent[i, 2, 2] = alpha_n
+    if want_tangent:
+        out_tangent[i, 0, 0] = alpha_t
+        out_tangent[i, 1, 1] = alpha_t
+        out_tangent[i, 2, 2] = alpha_n
 
 
-def empty_outputs(n_points: int) -> dict[str, np.ndarray]:
-    """Allocate the output arrays of :func:`step_points`."""
+def empty_outputs(n_points: int, tangent: bool = True) -> dict[str, np.ndarray]:
+    """Allocate the output arrays of :func:`step_points` (no tangent rows if not wanted).
+
+    Also a ``plastic_slip`` buffer, used by ``update(..., out=...)`` for the new state.
+    """
     return {
+        "plastic_slip": np.empty(n_points),
         "traction": np.empty((n_points, 3)),
         "F": np.empty(n_points),
         "R": np.empty(n_points),
@@ -636,7 +697,7 @@ def empty_outputs(n_points: int) -> dict[str, np.ndarray]:
         "dlam": np.empty(n_points),
         "vp": np.empty((n_points, 3)),
         "diss": np.empty(n_points),
-        "tangent": np.empty((n_points, 3, 3)),
+        "tangent": np.empty((n_points if tangent else 0, 3, 3)),
         "status": np.empty(n_points, dtype=np.int8),
         "iterations": np.empty(n_points, dtype=np.int32),
     }

@@ -53,7 +53,8 @@ class StepResult:
         (N, 3) tractions ``(f_t1, f_t2, f_n)`` [Pa] at the end of the increment.
     tangent:
         (N, 3, 3) algorithmic consistent tangent d(traction)/d(slip increment) [Pa/m];
-        non-symmetric in plastic sliding (pitfall 11); zero for open points.
+        non-symmetric in plastic sliding (pitfall 11); zero for open points; (0, 3, 3)
+        when ``update`` was asked for no tangent.
     plastic_slip_increment:
         (N, 3) plastic slip increment ``dlam * t_bar`` [m]; the normal component is 0.
     plastic_multiplier:
@@ -93,6 +94,10 @@ class StepResult:
         return ("all points converged: " if self.success else "local solve failed: ") + text
 
 
+#: Batches of at least this many points run on numba's threads (measured cross-over on a
+#: 2-core machine: below ~1e4 points the threads' start-up costs more than it saves).
+PARALLEL_MIN_POINTS = 10_000
+
 _U_CODES = {"cot": U_COT, "ln": U_LN}
 _INTEG_CODES = {"exponential": EXPONENTIAL, "backward_euler": BACKWARD_EULER}
 _FORM_CODES = {"one_minus": ONE_MINUS, "ratio": RATIO}
@@ -130,6 +135,8 @@ def update(
     time_increment: Any,
     *,
     raise_on_failure: bool = True,
+    tangent: bool = True,
+    out: dict[str, np.ndarray] | None = None,
 ) -> StepResult:
     """Advance N contact points by one increment with the implicit return map (spec §4.2).
 
@@ -148,6 +155,19 @@ def update(
         When True (default) a failed local solve raises :class:`ConvergenceError` whose
         ``mask`` marks the failed points and whose ``result`` is this StepResult; when
         False the failure is only reported through ``status``.
+    tangent:
+        When False the consistent tangent is not computed (``StepResult.tangent`` then
+        has zero rows); the state and every other output are unchanged.
+    out:
+        Optional preallocated outputs, ``kernels.empty_outputs(N, tangent)``, reused
+        in place (no allocation per call). The returned state and result are views of
+        these buffers, left writeable, and are overwritten by the next call that is
+        given the same buffers: alternate two sets when the previous state must stay
+        valid. A buffer that shares memory with ``state`` is refused.
+
+    Points are shared among numba's threads when N >= ``PARALLEL_MIN_POINTS`` (the
+    result is identical to the serial loop; smaller batches stay serial, where the
+    threads' start-up would cost more than it saves).
 
     Returns
     -------
@@ -167,30 +187,71 @@ def update(
     if params.per_point and params.n_points != n:
         raise ParameterError("params", f"{params.n_points} points", f"{n} points, as in the state")
     table = params._kernel_table
-    out = kernels.empty_outputs(n)
+    buffers = kernels.empty_outputs(n, tangent) if out is None else _checked_buffers(out, n, state)
+    if tangent and buffers["tangent"].shape[0] != n:
+        raise ParameterError("out", "tangent buffer without rows", "empty_outputs(N, tangent=True)")
+    kernel = kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
     try:
-        _step_points(params, state, du, dt, table, out)
+        kernel(
+            np.ascontiguousarray(state.traction),
+            np.ascontiguousarray(state.F),
+            np.ascontiguousarray(state.R),
+            np.ascontiguousarray(state.gap),
+            np.ascontiguousarray(du),
+            np.ascontiguousarray(dt),
+            table,
+            dt.shape[0] == 1,
+            SURFACE_CODES[params.surface],
+            params.tear_k,
+            _U_CODES[params.U_law],
+            _INTEG_CODES[params.F_integrator],
+            _FORM_CODES[params.recovery_form],
+            params.open_recovery == "frozen",
+            tangent,
+            buffers["traction"],
+            buffers["F"],
+            buffers["R"],
+            buffers["gap"],
+            buffers["dlam"],
+            buffers["vp"],
+            buffers["diss"],
+            buffers["tangent"],
+            buffers["status"],
+            buffers["iterations"],
+        )
     except ArithmeticError:  # a division by an underflowed value (f_n ~ 1e-300): no result
-        _keep_old_state(state, out)
-    new_state = ContactState._trusted(
-        traction=out["traction"],
-        F=out["F"],
-        R=out["R"],
-        plastic_slip=state.plastic_slip + out["dlam"],
-        gap=out["gap"],
-        frame=state.frame,
-    )
-    for key in ("traction", "tangent", "vp", "dlam", "diss", "status", "iterations"):
-        out[key].setflags(write=False)
+        _keep_old_state(state, buffers)
+    if out is None:
+        slip = state.plastic_slip + buffers["dlam"]
+        new_state = ContactState._trusted(
+            traction=buffers["traction"],
+            F=buffers["F"],
+            R=buffers["R"],
+            plastic_slip=slip,
+            gap=buffers["gap"],
+            frame=state.frame,
+        )
+        for key in ("traction", "tangent", "vp", "dlam", "diss", "status", "iterations"):
+            buffers[key].setflags(write=False)
+    else:
+        slip = np.add(state.plastic_slip, buffers["dlam"], out=buffers["plastic_slip"])
+        new_state = ContactState._views(
+            traction=buffers["traction"],
+            F=buffers["F"],
+            R=buffers["R"],
+            plastic_slip=slip,
+            gap=buffers["gap"],
+            frame=state.frame,
+        )
     result = StepResult(
         state=new_state,
         traction=new_state.traction,
-        tangent=out["tangent"],
-        plastic_slip_increment=out["vp"],
-        plastic_multiplier=out["dlam"],
-        dissipation=out["diss"],
-        status=out["status"],
-        iterations=out["iterations"],
+        tangent=buffers["tangent"],
+        plastic_slip_increment=buffers["vp"],
+        plastic_multiplier=buffers["dlam"],
+        dissipation=buffers["diss"],
+        status=buffers["status"],
+        iterations=buffers["iterations"],
     )
     if raise_on_failure and not result.success:
         raise ConvergenceError(
@@ -202,43 +263,6 @@ def update(
     return result
 
 
-def _step_points(
-    params: SubloadingParams,
-    state: ContactState,
-    du: np.ndarray,
-    dt: np.ndarray,
-    table: np.ndarray,
-    out: dict[str, np.ndarray],
-) -> None:
-    """Call the compiled kernel for every point, filling ``out``."""
-    kernels.step_points(
-        np.ascontiguousarray(state.traction),
-        np.ascontiguousarray(state.F),
-        np.ascontiguousarray(state.R),
-        np.ascontiguousarray(state.gap),
-        np.ascontiguousarray(du),
-        np.ascontiguousarray(dt),
-        table,
-        dt.shape[0] == 1,
-        SURFACE_CODES[params.surface],
-        params.tear_k,
-        _U_CODES[params.U_law],
-        _INTEG_CODES[params.F_integrator],
-        _FORM_CODES[params.recovery_form],
-        params.open_recovery == "frozen",
-        out["traction"],
-        out["F"],
-        out["R"],
-        out["gap"],
-        out["dlam"],
-        out["vp"],
-        out["diss"],
-        out["tangent"],
-        out["status"],
-        out["iterations"],
-    )
-
-
 def _keep_old_state(state: ContactState, out: dict[str, np.ndarray]) -> None:
     """Fill ``out`` as for failed points: the old state kept, nothing dissipated."""
     out["traction"][:] = state.traction
@@ -248,3 +272,33 @@ def _keep_old_state(state: ContactState, out: dict[str, np.ndarray]) -> None:
     for key in ("dlam", "vp", "diss", "tangent", "iterations"):
         out[key][:] = 0
     out["status"][:] = Status.FAILED
+
+
+def _checked_buffers(
+    out: dict[str, np.ndarray], n: int, state: ContactState
+) -> dict[str, np.ndarray]:
+    """Check user-supplied output buffers: complete, the right shapes, not aliasing ``state``."""
+    template = kernels.empty_outputs(0, True)
+    template["plastic_slip"] = np.empty(0)
+    for key, empty in template.items():
+        arr = out.get(key)
+        if arr is None:
+            raise ParameterError("out", f"no '{key}' buffer", "kernels.empty_outputs(N)")
+        rows = arr.shape[0] if key == "tangent" and arr.shape[0] == 0 else n
+        if (
+            arr.shape != (rows, *empty.shape[1:])
+            or arr.dtype != empty.dtype
+            or not arr.flags.c_contiguous
+            or not arr.flags.writeable
+        ):
+            raise ParameterError(
+                "out", f"'{key}' {arr.shape} {arr.dtype}", "kernels.empty_outputs(N) buffers"
+            )
+        for name in ("traction", "F", "R", "plastic_slip", "gap"):
+            if np.shares_memory(arr, getattr(state, name)):
+                raise ParameterError(
+                    "out",
+                    f"'{key}' shares memory with state.{name}",
+                    "buffers apart from the state",
+                )
+    return out

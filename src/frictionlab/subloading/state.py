@@ -12,14 +12,23 @@ that of the counter body relative to the body.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
+from numba import njit
 
 from frictionlab.errors import ParameterError
 from frictionlab.subloading.params import SubloadingParams
-from frictionlab.subloading.surfaces import SURFACE_CODES, potential
+from frictionlab.subloading.surfaces import (
+    CAM_CLAY,
+    MODIFIED_CAM_CLAY,
+    SURFACE_CODES,
+    TEAR,
+    g_value,
+    potentials,
+)
 
 __all__ = [
     "ContactState",
@@ -97,6 +106,14 @@ class ContactState:
         obj = object.__new__(cls)
         for name, arr in arrays.items():
             arr.setflags(write=False)
+            object.__setattr__(obj, name, arr)
+        return obj
+
+    @classmethod
+    def _views(cls, **arrays: np.ndarray) -> ContactState:
+        """A state over caller-owned output buffers (kept writeable; see update's ``out``)."""
+        obj = object.__new__(cls)
+        for name, arr in arrays.items():
             object.__setattr__(obj, name, arr)
         return obj
 
@@ -206,13 +223,12 @@ def ratio_of(params: SubloadingParams, traction: np.ndarray, F: np.ndarray) -> n
     fhat = traction[:, :2] - traction[:, 2:3] * beta
     p1 = c * fhat[:, 0] + s * fhat[:, 1]
     p2 = -s * fhat[:, 0] + c * fhat[:, 1]
-    w = np.hypot(p1 / axes[:, 0], p2 / axes[:, 1])
+    w = np.ascontiguousarray(np.hypot(p1 / axes[:, 0], p2 / axes[:, 1]))
     if params.is_cone:  # Phi = w/f_n only: the derivatives (w/f_n^2) underflow at tiny f_n
         return w / traction[:, 2] / F
-    out = np.empty(n)
-    for i in range(n):
-        out[i] = potential(code, params.tear_k, float(w[i]), float(traction[i, 2]))[0] / F[i]
-    return out
+    phi = np.empty(n)
+    potentials(code, params.tear_k, w, np.ascontiguousarray(traction[:, 2]), phi)
+    return phi / F
 
 
 def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list[str]:
@@ -243,28 +259,60 @@ def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list
                 "may not be unique)"
             )
         return out
-    from frictionlab.subloading.surfaces import g_function, g_inverse
-
     inside = (fn > 0.0) & (fn < kinetic)
     if not inside.any():
         return out
-    idx = np.flatnonzero(inside)
-    grid = kinetic[idx, None] + (static - kinetic)[idx, None] * np.linspace(0.0, 1.0, 65)
-    chi = g_inverse(params.surface, grid / fn[idx, None], params.tear_k)
-    dg = g_function(params.surface, chi, params.tear_k)[1]
-    softening = kappa[idx, None] * np.maximum(grid / kinetic[idx, None] - 1.0, 0.0) ** m[idx, None]
-    # the worst axis is the one with the largest factor A_i (smallest g'/A_i)
-    stiffness = alpha_t[idx, None] * dg / a_max[idx, None]
-    bad = ~(stiffness > softening)
-    for row in np.flatnonzero(bad.any(axis=1)).tolist():
-        point = int(idx[row])
-        F_val = float(grid[row, int(np.argmax(bad[row]))])
+    failed_at = np.empty(n)
+    _closed_snap_back(
+        SURFACE_CODES[params.surface], params.tear_k, np.ascontiguousarray(fn),
+        np.ascontiguousarray(kinetic, dtype=np.float64),
+        np.ascontiguousarray(static, dtype=np.float64),
+        np.ascontiguousarray(kappa, dtype=np.float64), np.ascontiguousarray(m, dtype=np.float64),
+        np.ascontiguousarray(alpha_t, dtype=np.float64), np.ascontiguousarray(a_max),
+        failed_at,
+    )  # fmt: skip
+    for point in np.flatnonzero(~np.isnan(failed_at)).tolist():
         out[point] = (
             f"alpha_t g'(chi*)/M_max > kappa (F/F_k - 1)^m on the yield surface "
-            f"(no snap-back in softening; fails at F = {F_val:.6g}, f_n = {fn[point]:.6g}: "
-            "the local solution may not be unique)"
+            f"(no snap-back in softening; fails at F = {failed_at[point]:.6g}, "
+            f"f_n = {fn[point]:.6g}: the local solution may not be unique)"
         )
     return out
+
+
+@njit(cache=True)
+def _closed_snap_back(code, tear_k, fn, Fk, Fs, kappa, m, alpha_t, a_max, failed_at):  # fmt: skip
+    """The closed-surface check of :func:`snap_back_violations`, compiled, per point.
+
+    ``failed_at[i]`` = the first F of the 65-value grid on [F_k, F_s] where
+    ``alpha_t g'(chi*)/A_max > kappa (F/F_k - 1)^m`` fails (chi* = g^-1(F/f_n)), NaN where
+    it holds everywhere or where ``f_n`` is outside (0, F_k).
+    """
+    for i in range(fn.size):
+        failed_at[i] = math.nan
+        if not (fn[i] > 0.0 and fn[i] < Fk[i]):
+            continue
+        for j in range(65):
+            F = Fk[i] + (Fs[i] - Fk[i]) * (j / 64.0)
+            chi = _g_inverse(code, F / fn[i], tear_k)
+            dg = g_value(code, tear_k, chi)[1]
+            softening = kappa[i] * max(F / Fk[i] - 1.0, 0.0) ** m[i]
+            if not alpha_t[i] * dg / a_max[i] > softening:
+                failed_at[i] = F
+                break
+
+
+@njit(cache=True)
+def _g_inverse(code: int, G: float, tear_k: float) -> float:
+    """Scalar chi* with g(chi*) = G >= 1 (same formulas as ``surfaces.g_inverse``)."""
+    if code == CAM_CLAY:
+        return math.log(G)
+    if code == MODIFIED_CAM_CLAY:
+        return math.sqrt(G - 1.0)
+    if code == TEAR:
+        a = 1.0 / (2.0 * tear_k + 1.0)
+        return math.sqrt((1.0 - G ** (-1.0 / tear_k)) / a)
+    return 2.0 * (1.0 - 1.0 / G)  # parabola
 
 
 def check_snap_back(

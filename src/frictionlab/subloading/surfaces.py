@@ -88,6 +88,26 @@ def potential(code: int, tear_k: float, w: float, fn: float) -> tuple[float, flo
     return fn * g, dg, g - chi * dg
 
 
+@njit(cache=True)
+def g_values(code: int, tear_k: float, chi: np.ndarray, g: np.ndarray, dg: np.ndarray) -> None:
+    """:func:`g_value` over flat arrays: ``g[i], dg[i] = g_value(code, tear_k, chi[i])``."""
+    for i in range(chi.size):
+        g[i], dg[i] = g_value(code, tear_k, chi[i])
+
+
+@njit(cache=True)
+def potentials(code: int, tear_k: float, w: np.ndarray, fn: np.ndarray, out: np.ndarray) -> None:
+    """Phi(w, f_n) over flat arrays, ``out[i] = potential(code, tear_k, w[i], fn[i])[0]``.
+
+    ``f_n <= 0`` gives 0 for ``w = 0`` and +inf otherwise (the surface is singular there).
+    """
+    for i in range(w.size):
+        if fn[i] <= 0.0:
+            out[i] = 0.0 if w[i] == 0.0 else math.inf
+        else:
+            out[i] = potential(code, tear_k, w[i], fn[i])[0]
+
+
 # ---------------------------------------------------------------------- public NumPy API
 def _code(surface: str) -> int:
     try:
@@ -112,10 +132,10 @@ def g_function(surface: str, chi: ArrayLike, tear_k: float = 1.0) -> tuple[np.nd
     if code == COULOMB:
         raise ParameterError("surface", surface, "a closed surface (the cone has no g)")
     chi = np.asarray(chi, dtype=np.float64)
-    g = np.empty_like(chi)
-    dg = np.empty_like(chi)
-    for idx, c in np.ndenumerate(chi):
-        g[idx], dg[idx] = g_value(code, tear_k, float(c))
+    g = np.empty(chi.shape)
+    dg = np.empty(chi.shape)
+    g_values(code, float(tear_k), np.ascontiguousarray(chi).reshape(-1), g.reshape(-1),
+             dg.reshape(-1))  # fmt: skip
     return g, dg
 
 
@@ -176,11 +196,9 @@ def yield_function(
     fn = f[..., 2]
     fhat = f[..., :2] - fn[..., None] * np.asarray(rotation, dtype=np.float64)
     w = np.sqrt(np.sum((fhat / np.asarray(axis_factors, dtype=np.float64)) ** 2, axis=-1))
-    out = np.empty(np.broadcast(w, fn).shape)
-    for idx in np.ndindex(out.shape):
-        wi, fi = float(w[idx]), float(fn[idx])
-        if fi <= 0.0:
-            out[idx] = 0.0 if wi == 0.0 else math.inf
-        else:
-            out[idx] = potential(code, tear_k, wi, fi)[0]
+    shape = np.broadcast(w, fn).shape
+    out = np.empty(shape)
+    w_flat = np.ascontiguousarray(np.broadcast_to(w, shape), dtype=np.float64).reshape(-1)
+    fn_flat = np.ascontiguousarray(np.broadcast_to(fn, shape), dtype=np.float64).reshape(-1)
+    potentials(code, float(tear_k), w_flat, fn_flat, out.reshape(-1))
     return out

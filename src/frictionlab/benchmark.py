@@ -1,0 +1,313 @@
+"""Speed figures of issue 14, all measured in one process (``frictionlab bench``).
+
+Every timing is taken after a warm-up call, as the median of ``repeats`` (>= 5) runs,
+with its baseline measured in the same process just before it (the machine may be
+shared: compare ratios, not absolute times between runs). Only the first-call cost needs
+fresh processes (a child process with an empty, then a filled, compile cache).
+
+Figures (per contact point per increment, N points, all sliding unless stated):
+
+* ``coulomb_penalty``: a plain Coulomb penalty radial return, compiled with numba
+  ``parallel=True`` like the law's kernel — the baseline of the ``<= 10x`` target;
+* ``law_*``: :func:`frictionlab.subloading.update` for the full law (cone, softening,
+  recovery, rotation, orthotropy), with fresh outputs and the tangent (the default),
+  with preallocated outputs and no tangent, and the serial kernel (the parallel gain);
+  modified Cam-clay for a closed surface;
+* ``python_loop``: the straightforward per-point Python loop of the full law (the
+  kernel's source run by the interpreter, :mod:`frictionlab.subloading.interpreted`) on
+  a few points — the baseline of the ``>= 1000x`` target;
+* ``lattice_partial``: a 1024^2 self-affine map in partial contact against a flat
+  counter-face, 3 directions, 64 time samples: springs per second (target >= 3e8);
+* ``first_call``: import + first call of the law and of the lattice in a child process,
+  with an empty compile cache (compilation) and with the cache filled.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Callable
+from typing import Any
+
+import numba
+import numpy as np
+from numba import njit, prange
+
+from frictionlab._version import __version__
+
+__all__ = ["coulomb_return", "run"]
+
+TARGET_LAW_OVER_COULOMB = 10.0
+TARGET_SPEEDUP_OVER_PYTHON = 1000.0
+TARGET_SPRINGS_PER_SECOND = 3e8
+
+
+@njit(cache=True, parallel=True)
+def coulomb_return(traction, du, alpha_t, alpha_n, mu, out_traction, out_dlam):  # fmt: skip
+    """Plain Coulomb penalty radial return of N points (the benchmark's baseline).
+
+    ``f^tr = f + alpha du``; if ``|f_t^tr| > mu f_n^tr`` the tangential traction is
+    scaled back to the cone and ``dlam = (|f_t^tr| - mu f_n^tr)/alpha_t`` [m].
+    """
+    for k in prange(traction.shape[0]):
+        i = np.int64(k)
+        f1 = traction[i, 0] + alpha_t * du[i, 0]
+        f2 = traction[i, 1] + alpha_t * du[i, 1]
+        fn = traction[i, 2] + alpha_n * du[i, 2]
+        norm = math.hypot(f1, f2)
+        limit = mu * fn
+        dlam = 0.0
+        if norm > limit:
+            scale = limit / norm
+            dlam = (norm - limit) / alpha_t
+            f1 *= scale
+            f2 *= scale
+        out_traction[i, 0] = f1
+        out_traction[i, 1] = f2
+        out_traction[i, 2] = fn
+        out_dlam[i] = dlam
+
+
+def _median(func: Callable[[], object], repeats: int) -> dict[str, float]:
+    """Warm-up call, then ``repeats`` timed calls: median and minimum wall time [s].
+
+    Also the median process CPU time (all threads summed): on a shared machine a serial
+    run's CPU time is what it costs, whatever the wait for a core.
+    """
+    func()
+    times = []
+    cpu = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        start_cpu = time.process_time()
+        func()
+        cpu.append(time.process_time() - start_cpu)
+        times.append(time.perf_counter() - start)
+    return {
+        "median_s": statistics.median(times),
+        "min_s": min(times),
+        "cpu_median_s": statistics.median(cpu),
+        "runs": repeats,
+    }
+
+
+def _sliding(params: Any, n: int, fn: float) -> tuple[Any, np.ndarray]:
+    """A state of n points in plastic sliding and the increment that keeps them sliding."""
+    from frictionlab.subloading import initial_state, update
+
+    rng = np.random.default_rng(0)
+    state = initial_state(params, normal_traction=np.full(n, fn))
+    du = np.zeros((n, 3))
+    du[:, 0] = 1e-3 * rng.uniform(0.5, 1.5, n)
+    du[:, 1] = 3e-4 * rng.uniform(-1.0, 1.0, n)
+    for _ in range(20):
+        state = update(params, state, du, 0.01, tangent=False).state
+    return state, du
+
+
+def _law(points: int, repeats: int, python_points: int, log: Callable[[str], None]) -> dict:
+    from frictionlab.subloading import SubloadingParams, interpreted, kernels, update
+
+    full = SubloadingParams(
+        surface="coulomb", mu_s=0.5, mu_k=0.3, u=100.0, kappa=1.0, xi=1e-3,
+        rotation=(0.05, 0.02), orthotropy=(1.0, 0.6), orthotropy_angle=0.3,
+    )  # fmt: skip
+    state, du = _sliding(full, points, 1.0)
+    check = update(full, state, du, 0.01)
+    sliding = float(np.mean(check.status == kernels.SLIP))
+    iterations = float(np.mean(check.iterations[check.status == kernels.SLIP]))
+
+    out_t = np.empty((points, 3))
+    out_l = np.empty(points)
+    traction = np.ascontiguousarray(state.traction)
+    coulomb = _median(lambda: coulomb_return(traction, du, 1000.0, 1000.0, 0.3, out_t, out_l),
+                      repeats)  # fmt: skip
+    log(f"coulomb penalty return       {coulomb['median_s'] / points * 1e6:8.4f} us/point")
+    default = _median(lambda: update(full, state, du, 0.01), repeats)
+    log(f"full law, update()           {default['median_s'] / points * 1e6:8.4f} us/point")
+    buffers = kernels.empty_outputs(points, tangent=False)
+    lean = _median(lambda: update(full, state, du, 0.01, tangent=False, out=buffers), repeats)
+    log(f"full law, no tangent, out=   {lean['median_s'] / points * 1e6:8.4f} us/point")
+
+    table = full._kernel_table
+    dt = np.array([0.01])
+    outs = kernels.empty_outputs(points)
+    args = (traction, state.F, state.R, state.gap, du, dt, table, True, 0, 1.0, 0, 0, 0,
+            False, True, outs["traction"], outs["F"], outs["R"], outs["gap"], outs["dlam"],
+            outs["vp"], outs["diss"], outs["tangent"], outs["status"],
+            outs["iterations"])  # fmt: skip
+    serial = _median(lambda: kernels.step_points(*args), repeats)
+    parallel = _median(lambda: kernels.step_points_parallel(*args), repeats)
+    log(f"kernel serial / parallel     {serial['median_s'] / points * 1e6:8.4f} / "
+        f"{parallel['median_s'] / points * 1e6:.4f} us/point (serial CPU time "
+        f"{serial['cpu_median_s'] / points * 1e6:.4f} us/point)")  # fmt: skip
+
+    m = python_points
+    small = tuple(a[:m] if isinstance(a, np.ndarray) and a.shape[:1] == (points,) else a
+                  for a in args)  # fmt: skip
+    python = _median(lambda: interpreted.step_points(*small), max(repeats, 5))
+    python_per_point = python["median_s"] / m
+    log(f"per-point Python loop        {python_per_point * 1e6:8.1f} us/point (CPU time "
+        f"{python['cpu_median_s'] / m * 1e6:.1f})")  # fmt: skip
+
+    mcc = SubloadingParams(surface="modified_cam_clay", F_s=1.0, F_k=0.6, M=0.5, u=100.0,
+                           kappa=1.0, xi=1e-3)  # fmt: skip
+    mcc_state, mcc_du = _sliding(mcc, points, 0.2)
+    closed = _median(lambda: update(mcc, mcc_state, mcc_du, 0.01), repeats)
+    log(f"modified Cam-clay, update()  {closed['median_s'] / points * 1e6:8.4f} us/point")
+
+    def per_point(t: dict[str, float]) -> float:
+        return t["median_s"] / points * 1e6
+
+    return {
+        "points": points,
+        "fraction_sliding": sliding,
+        "mean_newton_iterations": iterations,
+        "coulomb_penalty_us_per_point": per_point(coulomb),
+        "law_update_us_per_point": per_point(default),
+        "law_lean_us_per_point": per_point(lean),
+        "law_kernel_serial_us_per_point": per_point(serial),
+        "law_kernel_parallel_us_per_point": per_point(parallel),
+        "law_kernel_serial_cpu_us_per_point": serial["cpu_median_s"] / points * 1e6,
+        "python_loop_cpu_us_per_point": python["cpu_median_s"] / m * 1e6,
+        "modified_cam_clay_update_us_per_point": per_point(closed),
+        "python_loop_points": m,
+        "python_loop_us_per_point": python_per_point * 1e6,
+        "law_over_coulomb": per_point(default) / per_point(coulomb),
+        "law_lean_over_coulomb": per_point(lean) / per_point(coulomb),
+        "parallel_gain": per_point(serial) / per_point(parallel),
+        "speedup_over_python": python_per_point * 1e6 / per_point(default),
+        "serial_cpu_speedup_over_python": python["cpu_median_s"]
+        / m
+        / (serial["cpu_median_s"] / points),
+        "target_law_over_coulomb": TARGET_LAW_OVER_COULOMB,
+        "target_speedup_over_python": TARGET_SPEEDUP_OVER_PYTHON,
+        "timings": {
+            "coulomb": coulomb,
+            "update": default,
+            "lean": lean,
+            "serial": serial,
+            "parallel": parallel,
+            "python_loop": python,
+            "modified_cam_clay": closed,
+        },
+    }
+
+
+def _lattice(size: int, repeats: int, log: Callable[[str], None]) -> dict:
+    from frictionlab.roughness import generators
+    from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+
+    surface = generators.self_affine(
+        0.8, (1e-3, 1e-3), (size, size), rng=np.random.default_rng(7), rms_slope=0.2
+    )
+    settings = LatticeSettings(load=0.5 * float(np.std(surface.heights)), time_samples=64)
+    betas = [0.0, 45.0, 90.0]
+    result: dict[str, Any] = {}
+
+    def polar() -> None:
+        result["polar"] = friction_polar(surface, generators.flat(), 0.3, betas, settings=settings)
+
+    timing = _median(polar, repeats)
+    springs = 2.0 * result["polar"].spring_evaluations
+    rate = springs / timing["median_s"]
+    log(f"lattice {size}^2 partial       {rate:8.3g} springs/s ({timing['median_s']:.2f} s)")
+    return {
+        "grid": size,
+        "directions": betas,
+        "time_samples": result["polar"].time_samples.tolist(),
+        "contact_fraction_mean": float(np.mean(result["polar"].contact_fraction_mean)),
+        "springs_per_second": rate,
+        "target_springs_per_second": TARGET_SPRINGS_PER_SECOND,
+        "timing": timing,
+    }
+
+
+_FIRST_CALL = """
+import time
+t0 = time.perf_counter()
+import numpy as np
+from frictionlab.subloading import SubloadingParams, initial_state, update
+t1 = time.perf_counter()
+p = SubloadingParams(surface="coulomb", mu_s=0.5, mu_k=0.3)
+s = initial_state(p, normal_traction=np.ones(4))
+update(p, s, np.tile([1e-3, 0.0, 0.0], (4, 1)), 0.01)
+update(p, initial_state(p, normal_traction=np.ones(20000)), np.tile([1e-3, 0, 0], (20000, 1)), 0.01)
+t2 = time.perf_counter()
+from frictionlab.roughness import generators
+from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+s = generators.self_affine(0.8, (1e-3, 1e-3), (32, 32), rng=np.random.default_rng(1), rms_slope=0.2)
+t3 = time.perf_counter()
+friction_polar(s, generators.flat(), 0.3, [0.0], settings=LatticeSettings(load=1e-9))
+t4 = time.perf_counter()
+print(t1 - t0, t2 - t1, t4 - t3)
+"""
+
+
+def _first_call(log: Callable[[str], None]) -> dict:
+    with tempfile.TemporaryDirectory() as folder:
+        env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+        env["FRICTIONLAB_CACHE_DIR"] = folder
+        rows = {}
+        for label in ("empty_cache", "filled_cache"):
+            done = subprocess.run([sys.executable, "-c", _FIRST_CALL], env=env, check=True,
+                                  capture_output=True, text=True)  # fmt: skip
+            imp, law, lattice = (float(x) for x in done.stdout.split()[-3:])
+            rows[label] = {"import_s": imp, "law_first_call_s": law,
+                           "lattice_first_call_s": lattice}  # fmt: skip
+            log(f"first call ({label:12s})    law {law:6.2f} s, lattice {lattice:6.2f} s "
+                f"(import {imp:.2f} s)")  # fmt: skip
+    return rows
+
+
+def run(
+    points: int = 1_000_000,
+    repeats: int = 5,
+    lattice_size: int = 1024,
+    python_points: int = 200,
+    first_call: bool = True,
+    log: Callable[[str], None] = print,
+) -> dict[str, Any]:
+    """Measure every figure; returns the JSON-ready dictionary (see the module docstring)."""
+    if repeats < 5:
+        raise ValueError("repeats must be >= 5 (median of at least 5 runs)")
+    machine = {
+        "cpu_count": os.cpu_count(),
+        "numba_threads": numba.get_num_threads(),
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "numba": numba.__version__,
+        "platform": platform.platform(),
+    }
+    log(f"frictionlab {__version__}: {machine['cpu_count']} cores, "
+        f"{machine['numba_threads']} numba threads")  # fmt: skip
+    law = _law(points, repeats, python_points, log)
+    log(f"numba threading layer: {numba.threading_layer()}")
+    machine["numba_threading_layer"] = numba.threading_layer()
+    lattice = _lattice(lattice_size, repeats, log)
+    payload = {
+        "benchmark": "issue 14: speed and scale",
+        "frictionlab": __version__,
+        "method": f"one process, warm-up then median of {repeats} runs; baselines measured "
+        "in the same process",
+        "machine": machine,
+        "law": law,
+        "lattice_partial": lattice,
+    }
+    if first_call:
+        payload["first_call"] = _first_call(log)
+    return payload
+
+
+def write(payload: dict[str, Any], path: str) -> None:
+    """Write the payload as JSON (atomically)."""
+    from frictionlab.io.atomic import write_text_atomic
+
+    write_text_atomic(path, json.dumps(payload, indent=2) + "\n")

@@ -1,0 +1,119 @@
+"""The compiled kernels agree with the interpreted per-point definition (issue 14).
+
+``frictionlab.subloading.interpreted`` runs the very source of the kernels by the Python
+interpreter (numba's decorators replaced by the identity). The compiled serial loop, the
+compiled parallel loop (``prange``) and the run without the tangent must give the same
+numbers on random states and increments, for every surface and option.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from frictionlab.subloading import SubloadingParams, initial_state, interpreted, kernels, update
+from frictionlab.subloading.return_map import (
+    _FORM_CODES,
+    _INTEG_CODES,
+    _U_CODES,
+    PARALLEL_MIN_POINTS,
+)
+from frictionlab.subloading.surfaces import SURFACE_CODES
+
+CONE = dict(surface="coulomb", mu_s=0.5, mu_k=0.3, rotation=(0.04, -0.02))
+ORTHO = dict(orthotropy=(1.0, 0.7), orthotropy_angle=0.4)
+
+CASES = {
+    "cone": dict(CONE, **ORTHO),
+    "cone ln, backward Euler, ratio form, m n": dict(
+        CONE, U_law="ln", F_integrator="backward_euler", recovery_form="ratio", m=2.0, n=0.5
+    ),
+    "cone exact general exponents, frozen": dict(CONE, m=1.5, n=2.0, open_recovery="frozen"),
+    "cam_clay": dict(surface="cam_clay", F_s=1.0, F_k=0.6, M=0.5, rotation=(0.05, 0.0)),
+    "modified_cam_clay": dict(surface="modified_cam_clay", F_s=1.0, F_k=0.6, M=0.5, **ORTHO),
+    "tear": dict(surface="tear", F_s=1.0, F_k=0.6, M=0.5, tear_k=2.0),
+    "parabola ln, ratio form": dict(
+        surface="parabola", F_s=1.0, F_k=0.6, M=0.5, U_law="ln", recovery_form="ratio", n=2.0
+    ),
+}
+N = 24
+
+
+def _random_inputs(params: SubloadingParams, rng: np.random.Generator):
+    """States reached by random increments (sliding, unloading, opening, holds)."""
+    fn = rng.uniform(0.5, 1.5, N) if params.is_cone else rng.uniform(0.15, 0.35, N)
+    state = initial_state(params, normal_traction=fn)
+    scale = np.array([2e-4, 2e-4, 2e-5 if params.is_cone else 2e-6])
+    for _ in range(6):
+        du = rng.normal(size=(N, 3)) * scale
+        du[rng.random(N) < 0.1, 2] = -2e-3  # some points open, and re-close later
+        state = update(params, state, du, rng.uniform(0.0, 0.2, N), raise_on_failure=False).state
+    du = rng.normal(size=(N, 3)) * scale
+    du[rng.random(N) < 0.1, 2] = -2e-3
+    back = np.arange(N) % 3 == 0  # unloading: against the rotated tangential traction
+    fhat = state.traction[:, :2] - state.traction[:, 2:] * np.asarray(params.rotation)
+    du[back, :2] = -0.02 * fhat[back] / params.alpha_t
+    du[back, 2] = 0.0
+    return state, du, rng.uniform(0.0, 0.2, N)
+
+
+def _run(kernel, params, state, du, dt, tangent: bool) -> dict[str, np.ndarray]:
+    out = kernels.empty_outputs(N, tangent)
+    kernel(
+        np.ascontiguousarray(state.traction), state.F.copy(), state.R.copy(), state.gap.copy(),
+        du, dt, params._kernel_table, False, SURFACE_CODES[params.surface], params.tear_k,
+        _U_CODES[params.U_law], _INTEG_CODES[params.F_integrator],
+        _FORM_CODES[params.recovery_form], params.open_recovery == "frozen", tangent,
+        out["traction"], out["F"], out["R"], out["gap"], out["dlam"], out["vp"], out["diss"],
+        out["tangent"], out["status"], out["iterations"],
+    )  # fmt: skip
+    del out["plastic_slip"]
+    return out
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_compiled_kernels_equal_the_interpreted_definition(name: str) -> None:
+    params = SubloadingParams(**CASES[name])  # type: ignore[arg-type]
+    state, du, dt = _random_inputs(params, np.random.default_rng(len(name)))
+    reference = _run(interpreted.step_points, params, state, du, dt, True)
+    statuses = set(reference["status"].tolist())
+    assert kernels.SLIP in statuses and kernels.STICK in statuses  # both branches exercised
+    for kernel in (kernels.step_points, kernels.step_points_parallel):
+        for tangent in (True, False):
+            got = _run(kernel, params, state, du, dt, tangent)
+            assert got["tangent"].shape[0] == (N if tangent else 0)
+            for key, ref in reference.items():
+                value = got[key]
+                if key == "tangent" and not tangent:
+                    continue
+                if key in ("status", "iterations"):
+                    np.testing.assert_array_equal(value, ref, err_msg=key)
+                else:
+                    scale = max(float(np.abs(ref).max()), 1e-300)
+                    np.testing.assert_allclose(value, ref, rtol=1e-12, atol=1e-12 * scale,
+                                               err_msg=f"{name}: {key}")  # fmt: skip
+
+
+def test_update_options_give_the_same_state() -> None:
+    """Parallel (large N), no tangent, and preallocated buffers: one and the same update."""
+    params = SubloadingParams(**CASES["cone"])  # type: ignore[arg-type]
+    n = PARALLEL_MIN_POINTS + 7
+    rng = np.random.default_rng(3)
+    state = initial_state(params, normal_traction=rng.uniform(0.5, 1.5, n))
+    du = rng.normal(size=(n, 3)) * np.array([1e-3, 1e-3, 1e-5])
+    full = update(params, state, du, 0.01)
+    lean = update(params, state, du, 0.01, tangent=False)
+    buffers = kernels.empty_outputs(n)
+    reused = update(params, state, du, 0.01, out=buffers)
+    small = update(params, state.take(slice(0, 50)), du[:50], 0.01)  # serial path
+    for other in (lean, reused):
+        np.testing.assert_array_equal(other.traction, full.traction)
+        np.testing.assert_array_equal(other.state.F, full.state.F)
+        np.testing.assert_array_equal(other.state.plastic_slip, full.state.plastic_slip)
+    np.testing.assert_array_equal(small.traction, full.traction[:50])
+    np.testing.assert_array_equal(small.tangent, full.tangent[:50])
+    np.testing.assert_array_equal(reused.tangent, full.tangent)
+    assert lean.tangent.shape == (0, 3, 3)
+    assert reused.traction is buffers["traction"]
+    with pytest.raises(Exception, match="shares memory"):
+        update(params, reused.state, du, 0.01, out=buffers)  # output over its own input
