@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from frictionlab.commands._output import add_overwrite
+from frictionlab.commands._output import add_run_arguments
 from frictionlab.commands._progress import progress_bar
 
 HELP = "fit the law's anisotropy to the roughness polar mu(beta) and write a runnable law"
@@ -42,17 +42,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
             "bridge.png into --out."
         ),
     )
-    parser.add_argument("scenario", type=Path, help="bridge scenario file (TOML)")
-    parser.add_argument("--out", type=Path, required=True, metavar="DIR", help="output directory")
-    parser.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="SECTION.KEY=VALUE",
-        help="override a scenario value, e.g. --set bridge.scale=roughness (repeatable)",
-    )
-    parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
-    add_overwrite(parser)
+    add_run_arguments(parser, "bridge scenario file (TOML)", "bridge.scale=roughness", plots=False)
     parser.set_defaults(handler=run)
 
 

@@ -13,12 +13,11 @@ from __future__ import annotations
 
 import argparse
 import time
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from frictionlab.commands._output import add_overwrite
+from frictionlab.commands._output import add_run_arguments
 from frictionlab.commands._progress import progress_bar
 
 HELP = "fit the law's parameters to tribometer curves and write fitted.toml, fit.json, a report"
@@ -26,17 +25,8 @@ HELP = "fit the law's parameters to tribometer curves and write fitted.toml, fit
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser("calibrate", help=HELP, description=HELP)
-    parser.add_argument("config", type=Path, help="calibration file (TOML)")
-    parser.add_argument("--out", type=Path, required=True, metavar="DIR", help="output directory")
-    parser.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="SECTION.KEY=VALUE",
-        help="override a value, e.g. --set fit.profile=false or --set law.mu_s=0.6",
-    )
-    parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
-    add_overwrite(parser)
+    add_run_arguments(parser, "calibration file (TOML)", "fit.profile=false or --set law.mu_s=0.6",
+                      input_name="config", plots=False)  # fmt: skip
     parser.set_defaults(handler=run)
 
 

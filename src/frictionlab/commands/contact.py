@@ -11,27 +11,15 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from pathlib import Path
 
-from frictionlab.commands._output import add_overwrite
+from frictionlab.commands._output import add_run_arguments
 
 HELP = "run the finite-element contact model (a block on a rigid base) from a TOML file"
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser("contact", help=HELP, description=HELP)
-    parser.add_argument("scenario", type=Path, help="contact scenario file (TOML)")
-    parser.add_argument("--out", type=Path, required=True, help="output directory")
-    parser.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="SECTION.KEY=VALUE",
-        help="override a scenario value, e.g. --set block.element_size=0.005",
-    )
-    parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
-    parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
-    add_overwrite(parser)
+    add_run_arguments(parser, "contact scenario file (TOML)", "block.element_size=0.005")
     parser.set_defaults(handler=run)
 
 

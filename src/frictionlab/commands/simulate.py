@@ -14,9 +14,8 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from pathlib import Path
 
-from frictionlab.commands._output import add_overwrite
+from frictionlab.commands._output import add_run_arguments
 from frictionlab.commands._progress import progress_bar
 
 HELP = "run a scenario file (TOML) and write history.csv, summary.json and plots"
@@ -24,18 +23,7 @@ HELP = "run a scenario file (TOML) and write history.csv, summary.json and plots
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser("simulate", help=HELP, description=HELP)
-    parser.add_argument("scenario", type=Path, help="scenario file (TOML)")
-    parser.add_argument("--out", type=Path, required=True, help="output directory")
-    parser.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="SECTION.KEY=VALUE",
-        help="override a scenario value, e.g. --set law.mu_s=0.6 or --set program.2.steps=50",
-    )
-    parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
-    parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
-    add_overwrite(parser)
+    add_run_arguments(parser, "scenario file (TOML)", "law.mu_s=0.6 or --set program.2.steps=50")
     parser.set_defaults(handler=run)
 
 
