@@ -6,12 +6,12 @@ Usage::
 
 Writes into OUT_DIR/roughness_life/:
 
-* ``fig10_adhesion_<case>.csv``: scenario AD (z = sin x, k_t = k_c / 2): tangential force,
+* ``fig10_adhesion_<case>.csv``: adhesion (z = sin x, k_t = k_c / 2): tangential force,
   mu_apparent (empty at L = 0), stretched fractions vs load per spring;
-* ``fig11_wear_<case>.csv``: scenarios T5-T6: mu(t) to mu0 at T_w;
-* ``fig12_hierarchy_<case>.csv``: scenarios T7-T8: mu_n of wedge and sine hierarchies;
-* ``fig13_hierarchy_2d_<case>.csv``: scenarios T9-T10: 2-D hierarchies vs beta;
-* ``fig14_hierarchy_wear.csv``: scenario T11: mu_i(t) of a 3-level hierarchy worn
+* ``fig11_wear_<case>.csv``: wedge and 2-D sinusoid wear: mu(t) to mu0 at T_w;
+* ``fig12_hierarchy_<case>.csv``: mu_n of wedge and sine hierarchies;
+* ``fig13_hierarchy_2d_<case>.csv``: 2-D hierarchies vs beta;
+* ``fig14_hierarchy_wear.csv``: mu_i(t) of a 3-level hierarchy worn
   innermost first;
 * one PNG per family (:mod:`frictionlab.plotting.roughness_life`).
 

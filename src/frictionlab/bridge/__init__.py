@@ -1,4 +1,4 @@
-"""From roughness to a constitutive friction law (issue 10, the bridge).
+"""From roughness to a constitutive friction law (the bridge).
 
 The lattice-spring model gives friction vectors per sliding direction; the
 subloading-friction law has a steady-sliding polar in closed form. This package

@@ -1,7 +1,7 @@
 """Fit the law's anisotropy (orthotropy axes, C_1/C_2, rotation vector) to a friction polar.
 
 The data are friction *vectors* per sliding direction theta: the resisting force per unit
-normal load ``(mu_x, mu_y)`` of the lattice-spring model (roughness spec §2.5, §3.2), which
+normal load ``(mu_x, mu_y)`` of the lattice-spring model (Eqs 5-9 of Berardo & Pugno 2020), which
 for a flat pair is ``mu0 (cos theta, sin theta)`` and in general is not parallel to the
 sliding direction. The model is the law's steady traction ratio ``f_t / f_n`` in the same
 direction (:mod:`frictionlab.bridge.steady`)::
@@ -14,7 +14,7 @@ residuals per direction) uses the lateral force too, which fixes the orthotropy 
 where the magnitudes alone are nearly round. The fit is
 :func:`scipy.optimize.least_squares` (trust-region reflective) from several starting
 angles; the orthotropy is normalised to ``C_1 = 1 >= C_2`` (e*_1 is the direction of
-largest friction, spec §2.12), so that k is the friction coefficient along e*_1 without the
+largest friction), so that k is the friction coefficient along e*_1 without the
 rotation. Pure computation: no I/O.
 """
 
@@ -323,7 +323,8 @@ def fit_anisotropy(
     direction = np.column_stack([np.cos(theta), np.sin(theta)])
     radial = np.sum(diff * direction, axis=1)
     lobes = _lobes(theta, radial) if rms > 1e-12 * scale else 0
-    # rho inside the kinetic polar: |(rho*_1/C_1, rho*_2/C_2)| < 1 (spec §2.4, pitfall 14)
+    # rho inside the kinetic polar: |(rho*_1/C_1, rho*_2/C_2)| < 1: the rotation must stay
+    # inside the kinetic cone, or the plastic dissipation could turn negative
     rho = b / k
     c, s = math.cos(phi), math.sin(phi)
     rho_p = np.array([c * rho[0] + s * rho[1], c * rho[1] - s * rho[0]])

@@ -22,8 +22,8 @@ with ``d* = (cos(theta - phi), sin(theta - phi))``. Scaling onto the surface
 
 with ``Q(phi)`` the rotation from the principal axes to the contact frame and the
 coefficient ``mu_bar`` = mu_ss(V) for the cone, ``M g^{-1}(F_ss(V)/f_n)`` for a closed
-surface (the friction coefficient on its yield surface, spec §2.10). Along ``e*_i`` this is
-``beta + C_i mu_bar e*_i`` (spec test 10 and scenario A8); elsewhere the traction is
+surface (the friction coefficient on its yield surface, Eqs 51-54). Along ``e*_i`` this is
+``beta + C_i mu_bar e*_i``; elsewhere the traction is
 non-coaxial with the sliding direction. The kinetic polar is the limit ``V -> inf``
 (``F_ss = F_k``). Pure functions: no I/O.
 """
@@ -119,9 +119,9 @@ def steady_size_at(params: SubloadingParams, velocity: float | None) -> float:
     """F_ss(V) (mu_ss for the cone): the root of Eq (25) at plastic rate V in [F_k, F_s].
 
     ``velocity=None`` gives the kinetic limit F_k (V -> inf). m = n = 1 with the default
-    recovery form uses the closed form of spec §2.6; other exponents or the "ratio" form
-    solve ``kappa V (F/F_k - 1)^m = xi psi(F)`` by Brent's method (the left side rises
-    and the right side falls with F, so the root is unique).
+    recovery form uses the closed form ``(kappa V + xi) / (kappa V/F_k + xi/F_s)``; other
+    exponents or the "ratio" form solve ``kappa V (F/F_k - 1)^m = xi psi(F)`` by Brent's
+    method (the left side rises and the right side falls with F, so the root is unique).
     """
     _scalar(params)
     Fs, Fk = _f(params, "static"), _f(params, "kinetic")
@@ -152,7 +152,7 @@ def steady_coefficient(
 
     Cone: mu_ss(V) = F_ss(V). Closed surfaces: ``M g^{-1}(F_ss(V)/f_n)``, the friction
     coefficient on the yield surface of size F_ss at the normal traction ``f_n`` [Pa]
-    (spec §2.10, E5), which needs ``0 < f_n < F_k``.
+    (Eqs 51-54), which needs ``0 < f_n < F_k``.
     """
     return _coefficient_at(params, steady_size_at(params, velocity), normal_traction)
 

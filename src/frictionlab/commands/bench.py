@@ -1,4 +1,4 @@
-"""``frictionlab bench [--json FILE]``: the speed figures of issue 14, measured in one process.
+"""``frictionlab bench [--json FILE]``: the speed figures, measured in one process.
 
 See :mod:`frictionlab.benchmark`: law update per point against a plain Coulomb return
 and against a per-point Python loop, the lattice's springs per second in partial

@@ -1,8 +1,8 @@
 """The subloading-friction law at the contact points of the block's bottom face.
 
-Frame and signs (spec §1, §4.1). The block is the body, the rigid base the counter
-body. The contact frame of every point (rows e_1, e_2, n in global x, y, z components;
-right-handed):
+Frame and signs: those of the law (:mod:`frictionlab.subloading.state`). The block is the
+body, the rigid base the counter body. The contact frame of every point (rows e_1, e_2, n in
+global x, y, z components; right-handed):
 
 * 2-D: ``e_1 = +x`` (sliding direction), ``e_2 = +z`` (out of plane), ``n = -y``;
 * 3-D: ``e_1 = +x``, ``e_2 = -y``, ``n = -z`` (so the law's orthotropy angle turns from
@@ -16,7 +16,7 @@ normal component is the approach, Eqs 2-3); in 2-D ``(du_t1, du_t2, du_n) = (-du
 
 Contact forces on the block: ``r_c = sum_a B_a^T (w f_a)``; their stiffness
 ``-d r_c/du = sum_ab B_a^T (w D_ab) B_b`` with ``D = M^T C M`` and ``C`` the law's
-consistent tangent d(traction)/d(slip increment) [Pa/m] (spec §4.4).
+consistent tangent d(traction)/d(slip increment) [Pa/m].
 """
 
 from __future__ import annotations

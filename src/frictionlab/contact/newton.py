@@ -1,9 +1,9 @@
 """Implicit Newton iteration of one load step of the contact model.
 
 Unknown: the nodal displacement ``u`` [m] at the end of the step; the law is updated
-from the converged state at the start of the step by the whole increment ``u - u_n``
-(spec §4.2), so every iterate is a fresh return map and the contact stiffness is the
-law's algorithmic consistent tangent (spec §4.4). Residual on the free dofs:
+from the converged state at the start of the step by the whole increment ``u - u_n``,
+so every iterate is a fresh return map and the contact stiffness is the
+law's algorithmic consistent tangent. Residual on the free dofs:
 ``r = K u - f_ext - r_c(u)``; converged when ``|r| <= tolerance * scale`` with ``scale``
 the largest of |f_ext|, |r_c| and |K u| (all dofs, so reactions count).
 """

@@ -85,7 +85,7 @@ INTRO = (
     "Each section runs bundled scenarios (frictionlab/data/scenarios/*.toml; a copy sits next to "
     "its results, and `frictionlab simulate <copy> --out DIR` reruns it) through the "
     "subloading-friction law of Hashiguchi & Ozaki (2008), shows the response and compares "
-    "it with the closed forms of the specification. SI units throughout; tractions per unit "
+    "it with the law's closed forms (docs/theory.md). SI units throughout; tractions per unit "
     "area in Pa. Two sections compute the figure families of the lattice-spring "
     "roughness model (mu versus sliding direction, adhesion, wear, hierarchy) and a third "
     "applies it to a measured topography file; their figures and tables sit in roughness/. "

@@ -1,4 +1,4 @@
-"""The demo's contact section (issue 11): the law at the contact points of a FE block.
+"""The demo's contact section: the law at the contact points of a FE block.
 
 Runs the bundled contact scenario ``frictionlab/data/contact/pmma_block.toml`` through
 the same code path as ``frictionlab contact`` (outputs in ``OUT/contact/``) and returns

@@ -1,9 +1,9 @@
-"""Demo sections for the subloading-friction law (issue 3): one builder per tribometer test.
+"""Demo sections for the subloading-friction law: one builder per tribometer test.
 
 Each builder runs bundled scenarios through the same code path as ``frictionlab
 simulate`` (outputs in ``OUT/<scenario>/``: history.csv, summary.json, plots and a copy
-of the scenario file), adds figures comparing with the closed forms of the
-specification, and returns a report section.
+of the scenario file), adds figures comparing with the law's closed forms
+(docs/theory.md), and returns a report section.
 """
 
 from __future__ import annotations

@@ -2,13 +2,14 @@
 
 For every hold followed by a sliding segment (slide, reverse or turn) and every point:
 the hold time t_h [s], the friction ratio before the hold (at the stop; the traction stays
-constant during a hold, spec A3), the restart peak (the largest friction ratio of the
-sliding segment after the hold) and their difference delta mu. The healing rate is the
+constant during a hold: the law has no relaxation), the restart peak (the largest friction
+ratio of the sliding segment after the hold) and their difference delta mu. The healing rate is the
 least-squares slope d(delta mu)/d log10(t_h) over every record with t_h > 0 (at least two
 distinct hold times are needed).
 
 For the law with m = n = 1 the recovery during a hold is
-``mu_s - (mu_s - mu_0) exp(-xi t_h / mu_s)`` (spec §2.6); the restart peak approaches it
+``mu_s - (mu_s - mu_0) exp(-xi t_h / mu_s)`` (Eq 25 integrated at
+constant slip); the restart peak approaches it
 when the re-loading slip is short (large alpha_t and u, small kappa).
 
 Pure computation: no file I/O.

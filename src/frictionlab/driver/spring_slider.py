@@ -470,8 +470,8 @@ def _record(
 def steady_F(params: SubloadingParams, velocity: Any) -> np.ndarray:
     """Steady size F_ss(V) (mu_ss for the cone) at plastic sliding speed V [m/s], Eq (25).
 
-    Closed form (spec §2.6) for m = n = 1 and the default recovery form; otherwise the
-    root of ``kappa phi(F) V = xi psi(F)`` on [F_k, F_s].
+    Closed form ``(kappa V + xi) / (kappa V/F_k + xi/F_s)`` for m = n = 1 and the default
+    recovery form; otherwise the root of ``kappa phi(F) V = xi psi(F)`` on [F_k, F_s].
     """
     V = np.abs(np.atleast_1d(np.asarray(velocity, dtype=np.float64)))
     n = max(V.size, params.n_points if params.per_point else 1)

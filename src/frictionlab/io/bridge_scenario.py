@@ -120,7 +120,9 @@ def parse_bridge_scenario(data: dict[str, Any], base_dir: Path) -> BridgeScenari
             f"[bridge].normal_traction = {options.normal_traction:g} is invalid: allowed "
             f"{exc.allowed}"
         ) from None
-    try:  # the law must hold at f_n before any fit (domain and snap-back, pitfalls 3, 7)
+    # The law must hold at f_n before any fit: inside the domain of a closed surface, and
+    # no snap-back (the elastic stiffness must exceed the softening slope).
+    try:
         initial_state(law, options.normal_traction)
     except ParameterError as exc:
         if exc.field == "normal_traction":

@@ -4,9 +4,9 @@ Two rigid rough surfaces joined by vertical springs, half fixed on each body; th
 surface slides along beta; each compressed spring tip obeys Coulomb's law with the local
 coefficient mu0 on the tangent plane of the surface it touches; forces are time-averaged
 over one relative period. See ``docs/roughness.md`` for the equations, every option with
-its default, and how the specification's uncertainties were resolved.
+its default, and how the uncertainties of the reconstructed equations were resolved.
 
-Extensions (issue 5): :func:`adhesion_sweep` (tensile springs, Eqs 21-22),
+Extensions: :func:`adhesion_sweep` (tensile springs, Eqs 21-22),
 :func:`wear_history` (Archard wear, Eqs 23-28w), :func:`hierarchy_friction` and
 :func:`hierarchy_wear` (hierarchical roughness and its wear, Eqs 28-35).
 

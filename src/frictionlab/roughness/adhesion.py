@@ -1,4 +1,4 @@
-"""Adhesion in the lattice-spring model (spec section 3.5, Eqs 21-22): normal-load sweeps.
+"""Adhesion in the lattice-spring model (Eqs 21-22): normal-load sweeps.
 
 With adhesion, stretched springs pull with ``F = k_t u < 0`` (``u = l0 - l < 0``) and
 compressed springs push with ``F = k_c u > 0``; the applied normal load is their sum
@@ -20,7 +20,7 @@ Undefined values are **masked** (``numpy.ma``), never NaN or infinite: ``mu_appa
 L = 0 (Eq 22 singular), ``mu_compressed`` where no spring is compressed (then R = 0),
 ``mu_no_adhesion`` at L <= 0 (no equilibrium without tensile springs).
 
-Options (spec section 8.7): ``k_t`` defaults to ``k_c / 2`` (the paper's value). The
+Options: ``k_t`` defaults to ``k_c / 2`` (the paper's value). The
 paper gives no detachment criterion, so by default stretched springs never detach; the
 lattice option ``detachment`` (a cut-off elongation in m, off by default) lets a spring
 stretched beyond it carry no force. The load balance then has several roots and the
@@ -47,7 +47,7 @@ __all__ = ["DEFAULT_TENSILE_RATIO", "AdhesionSweep", "adhesion_sweep"]
 
 FloatArray = NDArray[np.float64]
 
-#: k_t / k_c by default (spec section 3.5: k_t = k_c / 2).
+#: k_t / k_c by default (the paper's k_t = k_c / 2).
 DEFAULT_TENSILE_RATIO = 0.5
 
 

@@ -1,7 +1,7 @@
 """Closed forms of the lattice-spring model: force multipliers, validity bound, wedge formulas.
 
 Angles: functions whose arguments end in ``_deg`` take degrees, the others radians.
-Every function refuses points outside the model's validity domain (spec section 7) with
+Every function refuses points outside the model's validity domain with
 a :class:`~frictionlab.errors.ValidityError` naming the angle, the direction and the
 bound; none returns an infinite or negative force.
 
@@ -10,9 +10,9 @@ Contents
 * :func:`h_local`: Eqs 2-3, multipliers (H_x, H_y) in the local frame of a contact;
 * :func:`normal_force_factor`: Eq 1, N / (k u);
 * :func:`max_mu0`: the validity bound of Eq 1 (general form; cot(phi) at beta = 0);
-* :func:`h_global`: the frame-free global multiplier of spec section 4 (the default);
+* :func:`h_global`: the frame-free global multiplier (the default);
 * :func:`h_rotated`: Eqs 1-4 with the corrected rotation (counter-clockwise alpha), kept
-  for cross-checks (spec section 8, item 3);
+  for cross-checks;
 * :func:`wedge_face_weights`: the horizontal-share weights of Eq 14;
 * :func:`wedge_friction`: Eqs 15-16, (mu_x, mu_y) of two wedge profiles at any beta;
 * :func:`flat_on_wedge_0deg`, :func:`flat_on_wedge_90deg`, :func:`wedge_on_wedge_0deg`,
@@ -100,7 +100,7 @@ def _raise_invalid(
 
 
 def max_mu0(phi: ArrayLike, beta: ArrayLike) -> FloatArray:
-    """Largest admissible local coefficient at a contact (Eq 1 validity, spec section 3.1).
+    """Largest admissible local coefficient at a contact (Eq 1 validity).
 
     ``mu0 < cot(phi) sqrt(cos^2(phi)/cos^2(beta) + sin^2(phi))`` when ``tan(phi) cos(beta)
     > 0`` (rising contact); ``inf`` otherwise (descending or flat contact: no restriction).
@@ -152,7 +152,7 @@ def h_local(mu0: float, phi: ArrayLike, beta: ArrayLike) -> tuple[FloatArray, Fl
 def h_global(
     mu0: float, gx: ArrayLike, gy: ArrayLike, beta: ArrayLike
 ) -> tuple[FloatArray, FloatArray]:
-    """Frame-free global multiplier H(mu0, g, beta) (spec section 4; equivalent to Eqs 1-4).
+    """Frame-free global multiplier H(mu0, g, beta) (equivalent to Eqs 1-4).
 
     ``n = (-g_x, -g_y, 1)/|.|``, ``t = (cos b, sin b, g_x cos b + g_y sin b)/|.|``,
     ``N = 1/(n_z - mu0 t_z)`` (must be > 0), ``F = N (n - mu0 t)``, ``H = (-F_x, -F_y)``.
@@ -183,7 +183,7 @@ def h_global(
 def h_rotated(
     mu0: float, gx: ArrayLike, gy: ArrayLike, beta: ArrayLike
 ) -> tuple[FloatArray, FloatArray]:
-    """Eqs 1-4 in the local frame with the corrected rotation (spec section 3.1, Eq 4).
+    """Eqs 1-4 in the local frame with the corrected rotation (Eq 4).
 
     ``alpha = atan2(g_y, g_x)`` (counter-clockwise), ``phi = arctan|g|``, ``beta' = beta -
     alpha``; ``(X', Y') = (H_x, H_y)(mu0, phi, beta')`` (Eqs 2-3) rotated back by
@@ -245,7 +245,7 @@ def wedge_friction(
     rising/falling, in degrees; ``phi3 = phi4 = 0`` is a flat upper surface (and
     ``phi1 = phi2 = 0`` a flat lower one). Each face contributes its multiplier
     ``H(mu0, +phi_rise)`` or ``H(mu0, -phi_fall)`` with its Eq 14 weight, half from each
-    family. Exact for any load (spec section 2.6) and any beta; at beta = 90 deg it is
+    family. Exact for any load and any beta; at beta = 90 deg it is
     the static value, also exact for wedges. Vectorised: ``angles_deg`` may have shape
     (..., 4), broadcast against ``beta_deg``.
     """
@@ -325,7 +325,7 @@ def wedge_on_wedge_90deg(mu0: float, phi_deg: ArrayLike) -> FloatArray:
 
 
 def singular_angle_deg(mu0: float) -> float:
-    """phi* = arctan(1/mu0) in degrees: Eqs 17 and 19 diverge there (spec section 7)."""
+    """phi* = arctan(1/mu0) in degrees: Eqs 17 and 19 diverge there."""
     m = _check_mu0(mu0)
     return 90.0 if m == 0.0 else math.degrees(math.atan(1.0 / m))
 

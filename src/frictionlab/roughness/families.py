@@ -1,18 +1,18 @@
-"""The paper's figure families as tables (spec section 5; Figs 6a, 6b, 7 and 8).
+"""The paper's figure families as tables (Figs 6a, 6b, 7 and 8).
 
-* :func:`wedge_cases` (Fig 6a, scenario T2): mu/mu0 vs beta of the six wedge cases A-F;
+* :func:`wedge_cases` (Fig 6a): mu/mu0 vs beta of the six wedge cases A-F;
 * :func:`generic_cases` (Fig 6b): the same six cases for smooth ("generic") 1-D roughness
   with the same mean face slopes (:class:`~frictionlab.roughness.generators.SmoothWedgeProfile`);
 * :func:`surfaces_2d_vs_beta` (Fig 7): identical 2-D product sinusoids, symmetric and
   asymmetric wavelengths, vs beta;
-* :func:`wavelength_map` (Fig 8, scenario T4): the 25 combinations lambda_x, lambda_y in
+* :func:`wavelength_map` (Fig 8): the 25 combinations lambda_x, lambda_y in
   {1, 1.5, 2, 2.5, 3} pi at beta = 0, 45, 90 degrees;
-* :func:`adhesion_cases` (Fig 10, scenario AD), :func:`wear_cases` (Fig 11, T5-T6),
-  :func:`hierarchy_1d_cases` (Fig 12, T7-T8), :func:`hierarchy_2d_cases` (Fig 13, T9-T10),
-  :func:`hierarchy_wear_case` (Fig 14, T11): the adhesion, wear and hierarchy results
+* :func:`adhesion_cases` (Fig 10), :func:`wear_cases` (Fig 11),
+  :func:`hierarchy_1d_cases` (Fig 12), :func:`hierarchy_2d_cases` (Fig 13),
+  :func:`hierarchy_wear_case` (Fig 14): the adhesion, wear and hierarchy results
   (their own result objects, with undefined values masked).
 
-Geometry the paper does not give is the specification's choice (spec section 8.5): the
+Geometry the paper does not give is chosen here: the
 wedge angles 30/15 and 20/10 degrees, amplitude A = 1 (m) for the 2-D surfaces, and the
 half-cosine faces for the generic profile (this module's choice: the paper states only
 mean slopes). Every family returns a :class:`FamilyTable` of read-only columns. Lengths
@@ -196,7 +196,7 @@ def wedge_cases(
     method: str = "closed_form",
     settings: LatticeSettings | None = None,
 ) -> FamilyTable:
-    """Fig 6a / scenario T2: mu/mu0, mu_x/mu0, mu_y/mu0 vs beta for the six wedge cases A-F.
+    """Fig 6a: mu/mu0, mu_x/mu0, mu_y/mu0 vs beta for the six wedge cases A-F.
 
     ``angles_deg = (steep, shallow)`` in degrees; the case definitions are
     :data:`WEDGE_CASES`. ``method="closed_form"`` (Eqs 15-16, exact) or ``"lattice"``
@@ -297,7 +297,7 @@ def wavelength_map(
     amplitude: float = 1.0,
     settings: LatticeSettings | None = None,
 ) -> FamilyTable:
-    """Fig 8 / scenario T4: mu/mu0 of identical surfaces for lambda_x, lambda_y = factor * pi.
+    """Fig 8: mu/mu0 of identical surfaces for lambda_x, lambda_y = factor * pi.
 
     A long table with one row per (beta, lambda_x, lambda_y): columns ``beta_deg``,
     ``lambda_x_over_pi``, ``lambda_y_over_pi``, ``mu_over_mu0``, ``mu_x_over_mu0``,
@@ -363,7 +363,7 @@ def wavelength_matrix(
 
 # --------------------------------------------------------------------------- Figs 10-14
 
-#: Loads per spring of scenario AD (k_c = 1 N/m, A = 1 m: L in units of k_c A).
+#: Loads per spring of the adhesion family, Fig 10 (k_c = 1 N/m, A = 1 m: L in units of k_c A).
 AD_LOADS = (3.0, 2.0, 1.5, 1.0, 0.5, 0.25, 0.1, 0.0, -0.1, -0.25)
 
 
@@ -373,11 +373,11 @@ def adhesion_cases(
     *,
     settings: LatticeSettings | None = None,
 ) -> dict[str, AdhesionSweep]:
-    """Fig 10 / scenario AD: z = sin x (A = 1 m, lambda = 2 pi m), k_c = 1 N/m, k_t = k_c/2.
+    """Fig 10: z = sin x (A = 1 m, lambda = 2 pi m), k_c = 1 N/m, k_t = k_c/2.
 
     ``"sine/sine"``: identical in-phase surfaces at beta = 0 and 90 deg; ``"flat/sine"``:
     a flat upper surface at beta = 0. ``settings`` default: 2000 stations, 200 time
-    samples (the spec's AD resolution).
+    samples (enough to resolve the tensile fraction).
     """
     m = _check_mu0(mu0)
     settings = settings or LatticeSettings(stations=2000, time_samples=200)
@@ -401,7 +401,7 @@ def wear_cases(
     wear: WearSettings = FAMILY_WEAR,
     settings: LatticeSettings | None = None,
 ) -> dict[str, WearHistory]:
-    """Fig 11 / scenarios T5-T6: mu(t) to mu0 at T_w.
+    """Fig 11: mu(t) to mu0 at T_w.
 
     ``"flat/wedge"``, ``"wedge/wedge"``: symmetric 30 deg wedges (lambda = 1 mm), beta = 0,
     45, 90 deg, Eqs 15-16 at tan(phi) = B tan(30 deg); ``"2d"``: identical sin x sin y
@@ -423,7 +423,7 @@ def wear_cases(
 def hierarchy_1d_cases(
     mu0: float = 0.3, levels: int = 5, *, settings: LatticeSettings | None = None
 ) -> dict[str, HierarchyResult]:
-    """Fig 12 / scenarios T7-T8: mu_n for n = 0 ... ``levels`` at beta = 0 and 90 deg.
+    """Fig 12: mu_n for n = 0 ... ``levels`` at beta = 0 and 90 deg.
 
     ``"wedge <phi> flat/rough"`` and ``"wedge <phi> rough/rough"`` for phi = 10, 20, 30 deg
     (the closed-form recursion of Eqs 15-16; Eqs 33-34 at 90 deg), and ``"sine flat/rough"``,
@@ -458,7 +458,7 @@ def hierarchy_2d_cases(
     *,
     settings: LatticeSettings | None = None,
 ) -> dict[str, HierarchyResult]:
-    """Fig 13 / scenarios T9-T10: self-similar identical sin sin levels (A = 1 m per level,
+    """Fig 13: self-similar identical sin sin levels (A = 1 m per level,
     ratio 10) with wavelengths (2 pi, 2 pi), (2 pi, 3 pi) and (3 pi, 2 pi) m, vs beta, in
     full contact (``settings`` default: 32 x 32 stations, 16 time samples)."""
     m = _check_mu0(mu0)
@@ -484,7 +484,7 @@ def hierarchy_wear_case(
     wear: WearSettings = FAMILY_WEAR,
     settings: LatticeSettings | None = None,
 ) -> HierarchyWearHistory:
-    """Fig 14 / scenario T11: ``levels`` self-similar sin x sin y levels (ratio 10; A = 1 m,
+    """Fig 14: ``levels`` self-similar sin x sin y levels (ratio 10; A = 1 m,
     lambda = 2 pi m outermost), identical surfaces, beta = 0, worn innermost first
     (``settings`` default: 32 x 32 stations, 16 time samples, full contact)."""
     m = _check_mu0(mu0)

@@ -5,7 +5,7 @@ Every generator returns an immutable :class:`~frictionlab.roughness.surface.Prof
 (1-D, extruded along y) or :class:`~frictionlab.roughness.surface.HeightMap` (2-D).
 Lengths are in m, angles in degrees (names ending in ``_deg``).
 
-Wedge geometry (spec section 3.4): the rising face (angle phi_r, slope +tan phi_r) starts
+Wedge geometry: the rising face (angle phi_r, slope +tan phi_r) starts
 at the valley x = 0 and spans the horizontal length ``a = lambda tan phi_f / (tan phi_r +
 tan phi_f)``; the falling face (angle phi_f, slope -tan phi_f) spans ``lambda - a``. So each
 face holds the horizontal share ``psi/(1+psi)`` and ``1/(1+psi)`` of the period with
@@ -102,7 +102,7 @@ class FlatProfile(Profile):
 
 @dataclass(frozen=True, eq=False)
 class WedgeProfile(Profile):
-    """Saw-tooth profile of straight faces (spec section 3.4; Fig 2).
+    """Saw-tooth profile of straight faces (Fig 2).
 
     Parameters
     ----------
@@ -552,7 +552,7 @@ def scaled(
     """The surface ``z = v f(x/h, y/h)``: heights scaled by ``vertical``, lengths by ``horizontal``.
 
     Slopes scale by ``v / h``. Used by wear (heights scaled by the reduction coefficient
-    B, spec section 3.6: ``z(t) = B z0`` above the fixed valley) and by hierarchies
+    B: ``z(t) = B z0`` above the fixed valley) and by hierarchies
     (self-similar levels, Eq 28: ``v = h``). ``vertical`` in [0, inf), ``horizontal`` > 0.
     ``vertical = 0`` gives a flat surface (a :class:`FlatProfile`, or a
     :class:`ScaledHeightMap` of zero heights keeping the map's periods). Wedges, smooth

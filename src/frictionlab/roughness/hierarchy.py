@@ -1,4 +1,4 @@
-"""Hierarchical roughness (spec section 3.7, Eqs 28-35) and its wear (the paper's section 3.4).
+"""Hierarchical roughness (Eqs 28-35) and its wear (the paper's section 3.4).
 
 A hierarchy has n levels, i = 1 the innermost (smallest) and i = n the outermost. Each
 level is a pair of surfaces (:class:`HierarchyLevel`) and acts as one lattice-spring
@@ -8,7 +8,7 @@ model whose local coefficient is the global coefficient of the level below (**Eq
 
 where ``f_i`` is the single-level map of :func:`~frictionlab.roughness.lattice.friction_polar`
 (Eqs 30-32: Eqs 2-3 with mu0 -> mu_{i-1}). The isotropic Coulomb law holds at every
-sub-level and the scalar passed upward is, by option ``mu_passed`` (spec 8.8),
+sub-level and the scalar passed upward is, by option ``mu_passed``,
 ``"magnitude"`` (default, ``|mu| = sqrt(mu_x^2 + mu_y^2)``) or ``"projection"`` (the
 dissipative ``mu_x cos(beta) + mu_y sin(beta)``). Every level slides along the same beta.
 
@@ -19,8 +19,8 @@ dissipative ``mu_x cos(beta) + mu_y sin(beta)``). Every level slides along the s
   period of level i shorter than every period of level i + 1 (:func:`check_nested`).
 * **Eqs 33-34** (wedges at beta = 90 deg) are public in
   :mod:`~frictionlab.roughness.closed_forms`; :func:`wedge_hierarchy` iterates the wedge
-  closed forms (Eqs 15-16) at any beta (T7).
-* **Validity** (spec 7): Eq 1's bound must hold with mu_{i-1} at every level. A violation
+  closed forms (Eqs 15-16) at any beta.
+* **Validity**: Eq 1's bound must hold with mu_{i-1} at every level. A violation
   raises a :class:`~frictionlab.errors.ValidityError` naming the level (``on_invalid=
   "raise"``, default) or masks that level and all above it for that direction
   (``"mask"``); nothing is clipped.
@@ -67,7 +67,7 @@ __all__ = [
 
 FloatArray = NDArray[np.float64]
 
-#: The scalar passed to the next level (spec 8.8); the first is the default.
+#: The scalar passed to the next level; the first is the default.
 MU_PASSED = ("magnitude", "projection")
 ON_INVALID = ("raise", "mask")
 
@@ -94,7 +94,7 @@ class HierarchyLevel:
         return self.lower.is_flat and self.upper.is_flat
 
     def worn(self, reduction: float, surfaces: str = "both") -> HierarchyLevel:
-        """The level with its wearing surfaces' heights scaled by B (spec 3.6)."""
+        """The level with its wearing surfaces' heights scaled by B."""
         lower, upper = worn_pair(self.lower, self.upper, reduction, surfaces)
         return HierarchyLevel(lower, upper)
 
@@ -324,7 +324,7 @@ def hierarchy_friction(
     beta_deg:
         Sliding directions (deg), the same at every level.
     mu_passed:
-        ``"magnitude"`` (default) or ``"projection"`` (spec 8.8).
+        ``"magnitude"`` (default) or ``"projection"``.
     on_invalid:
         ``"raise"`` (default; ValidityError naming the level) or ``"mask"``.
     settings:
@@ -354,7 +354,7 @@ def wedge_hierarchy(
     ``angles_deg = (phi1, phi2, phi3, phi4)`` as in
     :func:`~frictionlab.roughness.closed_forms.wedge_friction` (the same at every level:
     self-similar). At beta = 90 deg the symmetric cases reproduce Eqs 33-34; at beta = 0
-    there is no closed form and the recursion can leave the validity domain (T7).
+    there is no closed form and the recursion can leave the validity domain.
     """
     m0 = _check_options(mu0, mu_passed, on_invalid)
     if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 0:

@@ -1,10 +1,10 @@
 """The lattice-spring friction model (ALSFM): mu_x, mu_y and mu(beta) of two rough surfaces.
 
-Reference algorithm of spec section 4, for any pair of surfaces (profiles and height maps):
+The time-averaged lattice algorithm, for any pair of surfaces (profiles and height maps):
 
 * **Lattice.** Spring stations on a regular grid over one common period cell of the two
   surfaces, at the cell centres ``((i + 1/2) dx, (k + 1/2) dy)``. Two families share the
-  stations (spec section 2.1): upper-fixed springs slide on surface 1 (lower, fixed),
+  stations: upper-fixed springs slide on surface 1 (lower, fixed),
   lower-fixed springs slide on surface 2 (upper, moving along beta).
 * **Time samples.** The upper surface is shifted by ``s_j = s_0 + (j/n) D (cos b, sin b)``
   over one relative period D along beta (section 2.4), starting in phase (``s_0 = 0``).
@@ -66,7 +66,7 @@ __all__ = [
 
 FloatArray = NDArray[np.float64]
 
-#: Default spring stations per shortest surface period (1-D profiles), spec section 8.4.
+#: Default spring stations per shortest surface period (1-D profiles).
 STATIONS_PER_PERIOD_1D = 2000
 #: Default spring stations per shortest surface period and axis (2-D height maps).
 STATIONS_PER_PERIOD_2D = 64
@@ -97,7 +97,7 @@ def _finite(value: Any) -> bool:
 
 @dataclass(frozen=True)
 class LatticeSettings:
-    """Options of the lattice computation (spec sections 2.4, 4 and 8), validated.
+    """Options of the lattice computation, validated.
 
     Attributes
     ----------
@@ -112,10 +112,10 @@ class LatticeSettings:
         ``c = l0 - d`` (m) for ``control="separation"``; the compression is ``c - gap``.
     k_c, k_t:
         Compressive and tensile spring stiffness (N/m); ``0 <= k_t <= k_c``. Tensile springs
-        carry load but no friction (spec section 3.5).
+        carry load but no friction.
     detachment:
         Cut-off elongation (m) beyond which a stretched spring detaches and carries no
-        force (spec section 8.7: the paper gives no criterion). ``None`` (default): never.
+        force (the paper gives no criterion). ``None`` (default): never.
         Needs ``k_t > 0``. The load balance is then not monotone; the largest offset c
         that carries the load is taken (the state reached by pulling apart from full
         contact), and a load below the pull-off force is an error.
@@ -152,8 +152,9 @@ class LatticeSettings:
         time samples, is reported per direction (``invalid_fraction``).
     full_contact:
         How ``load="full"`` is computed: ``"average"`` (default): the direct area average
-        of the multipliers over both surfaces (:mod:`frictionlab.roughness.full_contact`,
-        spec section 2.6), all directions in one pass, no time sampling
+        of the multipliers over both surfaces (:mod:`frictionlab.roughness.full_contact`:
+        exact in full contact, where the load drops out), all directions in one pass, no
+        time sampling
         (``time_samples = 0``, travel mode ``"average"``); ``"lattice"``: the time-sampled
         lattice (identical when its shifts are whole stations; kept for comparison).
     snap_time_samples:
@@ -556,7 +557,7 @@ def _return_vector(
 
 
 def _sliding_path(geometry: LatticeGeometry, beta_deg: float, settings: LatticeSettings) -> _Path:
-    """Upper-surface offsets of the time samples (spec section 2.4)."""
+    """Upper-surface offsets of the time samples."""
     phase = np.array(settings.phase)
     nt = settings.time_samples
     cb, sb = _cos_sin_deg(beta_deg)
@@ -671,7 +672,7 @@ def friction_polar(
     upper:
         Surface 2 (moving along beta).
     mu0:
-        Local Coulomb coefficient at the spring tips (>= 0). Hierarchy (spec Eq 29) calls
+        Local Coulomb coefficient at the spring tips (>= 0). Hierarchy (Eq 29) calls
         this with the coefficient of the level below.
     beta_deg:
         Sliding directions (degrees from the x axis).
@@ -935,7 +936,7 @@ def _direction(
     beta: float,
     settings: LatticeSettings,
 ) -> _Direction:
-    """Time average over the sliding path of one direction (spec sections 2.4 and 4)."""
+    """Time average over the sliding path of one direction."""
     numba_engine = settings.engine == "numba"
     multipliers = _kernels.multipliers_nb if numba_engine else _kernels.multipliers_np
     sample = _kernels.sample_nb if numba_engine else _kernels.sample_np

@@ -10,13 +10,13 @@ sampled surface into ``k + 1`` bands with SurfaceTopography's ``shortcut`` filte
 
 where ``S(c)`` keeps the wavelengths >= c; the bands add up to the heights exactly. A
 flat surface gives flat bands. Each band pair (lower, upper) becomes one level of the
-hierarchical model (spec section 3.7, Eq 29: the global coefficient of a level is the
+hierarchical model (Eq 29: the global coefficient of a level is the
 local coefficient of the level above it), innermost = shortest wavelengths::
 
     mu(retained down to c_i) = f_{B_0}(f_{B_1}(... f_{B_{i-1}}(mu0)))
 
 each ``f`` the full-contact area average of
-:mod:`~frictionlab.roughness.full_contact` (spec section 2.6). Retaining only the
+:mod:`~frictionlab.roughness.full_contact`. Retaining only the
 wavelengths >= c_i gives row ``cutoff_m = c_i``; the row with every band retained has
 ``cutoff_m`` = the Nyquist wavelength (twice the finest pixel spacing). This answers
 which scales of a surface make its friction anisotropic. A level where a contact

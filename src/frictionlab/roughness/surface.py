@@ -1,6 +1,6 @@
 """Rough surfaces: 1-D profiles and 2-D periodic height maps, immutable, in SI units.
 
-A surface is a periodic height function with its gradient (spec section 2.1):
+A surface is a periodic height function with its gradient:
 
 * :class:`Profile`: ``z = f(x)`` extruded along y (1-D roughness, Eqs 10-13); the
   gradient is ``(f'(x), 0)``;

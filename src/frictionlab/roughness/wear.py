@@ -1,4 +1,4 @@
-"""Archard wear of rough surfaces and the friction history mu(t) (spec section 3.6, Eqs 23-28w).
+"""Archard wear of rough surfaces and the friction history mu(t) (Eqs 23-28w).
 
 * **Eq 23** (Archard): worn volume ``V = K L s / H`` over a sliding distance s, i.e. the
   wear rate ``W = V / s = K L / H`` (m^3/m) and the volume-loss rate ``W v`` (m^3/s) at
@@ -6,19 +6,19 @@
 * Wear scales the roughness **vertically** above its fixed valley: ``z(t) = B(t) z0``, so
   every slope scales by B (a wedge keeps its face shares, ``tan phi(t) = B tan phi0``).
 * **Eqs 24-27**: the removed volume ``(1 - B) V0`` equals ``W v t``, where ``V0`` is the
-  roughness volume above the valley (``z - z_min``, spec 3.6) over the nominal contact
+  roughness volume above the valley (``z - z_min``) over the nominal contact
   area: ``V0 = A_n <z - z_min>`` (2-D: ``A_n`` is the apparent area; 1-D: ``A_n = Y (x_f -
   x_0)``, the depth Y along the ridges times the length). Hence the **reduction
   coefficient** ``B(t) = 1 - t / T_w`` (0 after T_w) and the **wear time**
   ``T_w = V0 / (W v)``.
-* **Eq 28w** (wedge; the printed form is uncertain, spec 8.6): the linear law
+* **Eq 28w** (wedge; the printed form is uncertain): the linear law
   ``tan phi(t) = tan phi0 (1 - t / T_w)`` (default and only law), equivalent to the
   reconstructed rate form ``d tan(phi)/dt = -2 q / (S1^2 Y)`` with q the volume-loss rate
   attributed to one face of horizontal length S1 (:func:`wedge_tan_phi_rate`).
 * **mu(t)**: the friction coefficient of the worn pair, from mu(B = 1) to exactly mu0
   at ``t = T_w`` when both surfaces are flat (:func:`wear_history`).
 
-Which surfaces wear (spec 8.6, option ``surfaces`` of :class:`WearSettings`):
+Which surfaces wear (option ``surfaces`` of :class:`WearSettings`):
 ``"both"`` (default: both rough surfaces share one B; the volume of both is removed, so
 ``T_w = (V0_lower + V0_upper) / (W v)``), ``"lower"`` or ``"upper"`` (only that surface
 wears; ``T_w = V0_that / (W v)``; the other keeps its roughness, so mu(T_w) is the value
@@ -78,7 +78,7 @@ __all__ = [
 
 FloatArray = NDArray[np.float64]
 
-#: Which surfaces wear (spec section 8.6); the first is the default.
+#: Which surfaces wear; the first is the default.
 WEAR_SURFACES = ("both", "lower", "upper")
 #: How mu(B) is computed: "auto" (Eqs 15-16 for wedge/flat pairs, else the lattice),
 #: "lattice", "closed_form" (wedge/flat pairs only).
@@ -198,7 +198,7 @@ def reduction_coefficient(time: ArrayLike, wear_time_s: float) -> FloatArray:
 
 
 def wedge_tan_phi(tan_phi0: ArrayLike, time: ArrayLike, wear_time_s: float) -> FloatArray:
-    """Eq 28w (default linear law, spec 8.6): ``tan phi(t) = tan phi0 B(t)``, B of Eq 27."""
+    """Eq 28w (default linear law): ``tan phi(t) = tan phi0 B(t)``, B of Eq 27."""
     t0 = np.asarray(tan_phi0, dtype=np.float64)
     if not np.all(np.isfinite(t0) & (t0 >= 0.0)):
         raise ParameterError("tan_phi0", tan_phi0, "finite slopes >= 0")

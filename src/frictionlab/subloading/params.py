@@ -1,4 +1,4 @@
-"""Material parameters of the subloading-friction law (spec §1, §2.4–2.12, §6).
+"""Material parameters of the subloading-friction law of Hashiguchi & Ozaki (2008).
 
 :class:`SubloadingParams` is a frozen, validated description of one contact interface.
 Numeric fields are either scalars (shared by all points) or arrays of shape ``(N,)``
@@ -32,18 +32,21 @@ __all__ = [
     "SubloadingParams",
 ]
 
-#: Sliding-yield surface families (spec §2.10–2.11): the cone and Eqs (51)–(54).
+#: Sliding-yield surface families: the Coulomb cone (Eqs 67, 95) and the closed surfaces
+#: of Eqs (51)–(54).
 SURFACES: tuple[str, ...] = ("coulomb", "cam_clay", "modified_cam_clay", "tear", "parabola")
-#: Forms of U(R): Eq (28) ``u cot(pi R/2)`` (default) and Eq (30) ``-u ln R`` (spec §6 Q9).
+#: Forms of U(R): Eq (28) ``u cot(pi R/2)`` (default) and Eq (30) ``-u ln R``.
 U_LAWS: tuple[str, ...] = ("cot", "ln")
-#: Integrators of F over a step (spec §4.3, §6 Q10).
+#: Integrators of F over a step: exponential (exact for constant rates when m = n = 1)
+#: or backward Euler (the monotone scalar equation of one step).
 F_INTEGRATORS: tuple[str, ...] = ("exponential", "backward_euler")
-#: Recovery term of Eq (25): ``xi (1 - F/F_s)^n`` (default) or ``xi (F_s/F - 1)^n`` (§6 Q1).
+#: Recovery term of Eq (25): ``xi (1 - F/F_s)^n`` (default) or ``xi (F_s/F - 1)^n``
+#: (the paper's printed form is ambiguous; see docs/theory.md).
 RECOVERY_FORMS: tuple[str, ...] = ("one_minus", "ratio")
-#: Orthotropy input convention (spec §6 Q4): coefficient ``C_i mu`` ("divide", default)
+#: Orthotropy input convention: coefficient ``C_i mu`` ("divide", default)
 #: or ``mu / sqrt(C_i)`` ("multiply", converted on input by C_div = C_mult**-0.5).
 ORTHOTROPY_CONVENTIONS: tuple[str, ...] = ("divide", "multiply")
-#: What F does while the contact is open (spec §6 Q8).
+#: What F does while the contact is open: the recovery continues (default) or F is frozen.
 OPEN_RECOVERY: tuple[str, ...] = ("continue", "frozen")
 
 _CODES: dict[str, tuple[str, ...]] = {
@@ -83,8 +86,7 @@ class SubloadingParams:
     xi:
         Recovery rate with time, Eq (25) [F units per s].
     m, n:
-        Softening and recovery exponents of Eq (25) (the paper's m and n; spec n_kappa,
-        n_xi). Default 1.
+        Softening and recovery exponents of Eq (25) (the paper's m and n). Default 1.
     rotation:
         The rotational-anisotropy vector beta = (beta_1, beta_2) in the contact frame,
         Eqs (17)–(19); tangential, constant in the co-rotating frame. Shape (2,) or (N, 2).
@@ -97,16 +99,17 @@ class SubloadingParams:
     orthotropy_convention:
         ``"divide"`` (default, coefficient C_i mu along e*_i) or ``"multiply"`` (the
         alternative reading sqrt(C_1 f1^2 + C_2 f2^2); converted to ``"divide"`` on
-        input by C -> C**-0.5, spec §6 Q4). The stored ``orthotropy`` is always in the
+        input by C -> C**-0.5). The stored ``orthotropy`` is always in the
         "divide" convention.
     tear_k:
-        Exponent k of the tear family (spec §6 Q2). Default 1.
+        Exponent k of the tear family ``g = (1 - a chi^2)^-k``, ``a = 1/(2k + 1)``. Default 1.
     U_law:
         ``"cot"`` (Eq 28, default, integrated in closed form Eq 29) or ``"ln"`` (Eq 30,
         implicit Euler).
     F_integrator:
         ``"exponential"`` (default; exact for constant rates when m = n = 1, otherwise an
-        exact-recovery-then-exact-softening split) or ``"backward_euler"`` (spec §4.3).
+        exact-recovery-then-exact-softening split) or ``"backward_euler"`` (implicit in F,
+        first order).
     recovery_form:
         ``"one_minus"`` (default, xi (1 - F/F_s)^n) or ``"ratio"`` (xi (F_s/F - 1)^n).
     open_recovery:
@@ -231,7 +234,7 @@ class SubloadingParams:
         if not self.is_cone:
             _check_positive("M", self.M)
         # |beta| measured in the elliptic norm of the surface must stay inside the
-        # kinetic cone (cone) or below the top ratio M (closed surfaces): spec §2.4.
+        # kinetic cone (cone) or below the top ratio M (closed surfaces), Eqs (17)–(21).
         # The norm acts on the components along the principal axes e*_i (Eqs 83, 95),
         # so beta (given in the contact frame) is first turned by -orthotropy_angle.
         axes = self.axis_factors

@@ -1,7 +1,7 @@
 """Slow explicit reference integrator of the rate equations, for verification only.
 
 This is an independent second implementation of the law, written from the rate form
-of the spec rather than from the return map: forward Euler on
+of Hashiguchi & Ozaki (2008) rather than from the return map: forward Euler on
 
 * the loading factor, Eq (39) multiplied through by ``|df/df|``:
   ``Lambda = (grad f . C^e v - R xi psi(F)) / (U(R) F - R kappa phi(F) + grad f . C^e t_bar)``,
@@ -11,7 +11,7 @@ of the spec rather than from the return map: forward Euler on
 
 The gradient of f is taken by central finite differences of the yield function itself,
 so none of the kernel's analytic derivatives are reused. The explicit scheme drifts off
-the sliding-subloading surface with an error proportional to the substep (spec test 17).
+the sliding-subloading surface with an error proportional to the substep.
 Single point, pure NumPy, slow by design.
 """
 

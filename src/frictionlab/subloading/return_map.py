@@ -1,4 +1,4 @@
-"""Public implicit update of N contact points by one increment, spec §4.
+"""Public implicit update of N contact points by one increment.
 
 :func:`update` validates its inputs, calls the compiled kernel
 (:func:`frictionlab.subloading.kernels.step_points`) and returns a :class:`StepResult`
@@ -53,7 +53,8 @@ class StepResult:
         (N, 3) tractions ``(f_t1, f_t2, f_n)`` [Pa] at the end of the increment.
     tangent:
         (N, 3, 3) algorithmic consistent tangent d(traction)/d(slip increment) [Pa/m];
-        non-symmetric in plastic sliding (pitfall 11); zero for open points; (0, 3, 3)
+        non-symmetric in plastic sliding (the flow direction differs from the normal
+        of the yield surface); zero for open points; (0, 3, 3)
         when ``update`` was asked for no tangent.
     plastic_slip_increment:
         (N, 3) plastic slip increment ``dlam * t_bar`` [m]; the normal component is 0.
@@ -138,7 +139,7 @@ def update(
     tangent: bool = True,
     out: dict[str, np.ndarray] | None = None,
 ) -> StepResult:
-    """Advance N contact points by one increment with the implicit return map (spec §4.2).
+    """Advance N contact points by one increment with the implicit return map.
 
     Parameters
     ----------

@@ -1,13 +1,13 @@
-"""Contact state of N points, kept in the co-rotating contact frame (spec §4.1, Eq 81).
+"""Contact state of N points, kept in the co-rotating contact frame (Eq 81).
 
 Arrays are points first, components last. Tangential components refer to the contact
 frame (e_1, e_2, n) of each point, which rides with the contact surface; the frame
 itself is stored as ``frame[i] = [e_1, e_2, n]`` (rows, global components), so that a
 rigid rotation of the contact pair changes only ``frame`` (objectivity, Eqs 13, 19, 81).
 
-Sign conventions (spec §1): the normal traction ``f_n`` is positive in compression and
-the normal slip is positive for approach; the traction acts on the body and the slip is
-that of the counter body relative to the body.
+Sign conventions (those of Hashiguchi & Ozaki 2008): the normal traction ``f_n`` is
+positive in compression and the normal slip is positive for approach; the traction acts on
+the body and the slip is that of the counter body relative to the body.
 """
 
 from __future__ import annotations
@@ -234,7 +234,7 @@ def ratio_of(params: SubloadingParams, traction: np.ndarray, F: np.ndarray) -> n
 def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list[str]:
     """Per point: "" where the no-snap-back condition holds at ``normal_traction``, else why.
 
-    Pitfall 7, Eq 44: near R = 1 the local problem has a unique root only if the elastic
+    Eq 44: near R = 1 the local problem has a unique root only if the elastic
     stiffness exceeds the softening slope: cone ``alpha_t > A_max f_n kappa (mu/mu_k - 1)^m``
     for all mu in [mu_k, mu_s]; closed surfaces ``alpha_t g'(chi*)/A_max > kappa (F/F_k -
     1)^m`` on the yield surface ``f_n g(chi*) = F`` for F in [F_k, F_s] (checked on a grid
@@ -350,8 +350,8 @@ def rotate_frame(state: ContactState, rotation: Any) -> ContactState:
 
     ``rotation`` is a proper rotation matrix (3, 3) or (N, 3, 3) in global components.
     The co-rotating components of the traction (and of beta, which is fixed to the
-    surface, Eq 19) are unchanged: this is the objective update of spec §4.2 step 0
-    and Eq (81). Only ``frame`` changes, to ``frame @ rotation.T`` (each basis vector
+    surface, Eq 19) are unchanged: this is the objective update of Eq (81),
+    done before each increment. Only ``frame`` changes, to ``frame @ rotation.T`` (each basis vector
     is rotated).
     """
     Q = np.broadcast_to(np.asarray(rotation, dtype=np.float64), (state.n_points, 3, 3))
