@@ -81,8 +81,13 @@ def test_report_is_well_formed_and_complete(demo_dir: Path) -> None:
     page.close()
     assert page.errors == [] and page.stack == []
     n = len(default_builders())  # the law's 6, the roughness model's 3, the bridge, contact
-    # one parameter table per section, and the environment block's table
-    assert n == 11 and page.sections == n and page.tables == n + 1
+    # one parameter table per section, the environment block's table and the law tables: a
+    # law is shown in full once, later sections link to it and list only what differs
+    text = (demo_dir / "report.html").read_text(encoding="utf-8")
+    full, diff = text.count('<p class="law" id='), text.count(", except:</p>")
+    linked = text.count("Law parameters: as in <a")
+    assert linked >= 3 and diff <= linked and full <= 4  # cone, closed surface, bridge, contact
+    assert n == 11 and page.sections == n and page.tables == n + 1 + full + diff
     assert len(page.images) >= 12
     for fig in page.figures:
         assert fig["img"] and len(str(fig["caption"]).split()) >= 8  # a real sentence
@@ -90,7 +95,6 @@ def test_report_is_well_formed_and_complete(demo_dir: Path) -> None:
         assert path.is_file() and path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert not list(demo_dir.rglob(".*.tmp*"))
     # every figure links the data it was drawn from; one environment block
-    text = (demo_dir / "report.html").read_text(encoding="utf-8")
     figures = re.findall(r"<figure>(.*?)</figure>", text, re.S)
     assert len(figures) == len(page.figures)
     for block in figures:

@@ -146,3 +146,37 @@ def test_family_legends_say_what_each_case_is() -> None:
     assert legend_label("A") == "A: flat on symmetric teeth"
     assert legend_label("l2pi_3pi") == "wavelengths 2pi x 3pi (x, y)"
     assert legend_label("other") == "other"
+
+
+def test_the_law_table_is_shown_once_and_linked(tmp_path: Path) -> None:
+    cone = [("surface", "coulomb", ""), ("mu_s", "0.5", "-"), ("alpha_t", "1e+09", "Pa/m")]
+    faster = [("surface", "coulomb", ""), ("mu_s", "0.6", "-"), ("alpha_t", "1e+09", "Pa/m")]
+    closed = [("surface", "tear", ""), ("F_s", "1e+06", "Pa"), ("alpha_t", "2e+09", "Pa/m")]
+    sections = [
+        Section("First", law=cone, parameters=[("velocity", "1e-3", "m/s")]),
+        Section("Same law", law=cone),
+        Section("Other mu_s", law=faster),
+        Section("Closed surface", law=closed),
+        Section("No law"),
+    ]
+    text = Report("T", sections=sections).render()
+    blocks = dict(re.findall(r'<section id="([^"]+)">(.*?)</section>', text, re.S))
+    rows = {
+        anchor: re.findall(r"<tr><td>([^<]*)</td><td>([^<]*)</td>", block)
+        for anchor, block in blocks.items()
+    }
+    # the first law in full (then the section's own parameters), once
+    assert rows["first"] == [(n, v) for n, v, _ in cone] + [("velocity", "1e-3")]
+    assert text.count("<td>1e+09</td>") == 1
+    # the same law: only a link to the first table, which exists
+    assert rows["same-law"] == []
+    link = re.search(r'as in <a href="#([^"]+)">First</a>\.', blocks["same-law"])
+    assert link and f'id="{link.group(1)}"' in blocks["first"]
+    # a changed value: the link and only that row
+    assert rows["other-mu-s"] == [("mu_s", "0.6")]
+    assert f'<a href="#{link.group(1)}">First</a>, except:' in blocks["other-mu-s"]
+    # another set of keys: shown in full, no link
+    assert rows["closed-surface"] == [(n, v) for n, v, _ in closed]
+    assert "as in" not in blocks["closed-surface"]
+    assert "Law parameters" not in blocks["no-law"]
+    assert Collector().feed(text) is None

@@ -88,6 +88,7 @@ def bridge_section(ctx: DemoContext) -> Section:
         "along -x, and a ridged surface, which resists across the ridges more than along "
         "them. The law takes its kinetic friction from the roughness (scale = roughness) and "
         "its static friction, healing and slip scales from the [law] table.",
+        law=_law_rows(run),
         parameters=_parameters(run),
     )
     sec.add_figure(
@@ -125,7 +126,6 @@ def _parameters(run: object) -> list[tuple[str, str, str]]:
     sc = run.scenario
     r = sc.roughness
     opts = sc.options
-    table = run.law.params
     rows = [
         ("mu0 (local Coulomb coefficient)", format_value(r.mu0), "-"),
         ("lower surface", f"{r.lower.kind} {r.lower.describe().get('angles_deg', '')}", "deg"),
@@ -134,14 +134,24 @@ def _parameters(run: object) -> list[tuple[str, str, str]]:
         ("scale", opts.scale, ""),
         ("fitted", ", ".join(run.fit.fitted_groups), ""),
     ]
-    for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"), ("u", "1/m"),
-                      ("kappa", "1/m"), ("xi", "1/s")):  # fmt: skip
-        rows.append((f"law {key}", format_value(float(np.ravel(getattr(table, key))[0])), unit))
     rows += [
         ("check velocity", format_value(opts.velocity), "m/s"),
         ("normal traction f_n", format_value(opts.normal_traction), "Pa"),
     ]
     return rows
+
+
+def _law_rows(run: object) -> list[tuple[str, str, str]]:
+    """The fitted law's rows (the report compares them with the first law table)."""
+    from frictionlab.io.bridge_results import BridgeRun
+
+    assert isinstance(run, BridgeRun)
+    table = run.law.params
+    return [
+        (key, format_value(float(np.ravel(getattr(table, key))[0])), unit)
+        for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"), ("u", "1/m"),
+                          ("kappa", "1/m"), ("xi", "1/s"))
+    ]  # fmt: skip
 
 
 #: The bridge's demo sections, in report order.

@@ -68,6 +68,7 @@ def contact_section(ctx: DemoContext) -> Section:
         "1 MPa: slide 30 um, hold 10 s, slide 20 um. The drag's moment unloads the trailing "
         "edge, so sliding starts there while the rest of the interface is still in the "
         "sub-sliding state.",
+        law=_law_rows(scenario),
         parameters=_parameters(scenario),
     )
     sec.add_figure(
@@ -110,7 +111,7 @@ def _parameters(scenario: object) -> list[tuple[str, str, str]]:
     from frictionlab.io.contact_scenario import ContactScenario
 
     assert isinstance(scenario, ContactScenario)
-    b, p = scenario.block, scenario.params
+    b = scenario.block
     nx, ny = b.cells
     rows = [
         ("E", format_value(b.E), "Pa"),
@@ -119,10 +120,20 @@ def _parameters(scenario: object) -> list[tuple[str, str, str]]:
         ("mesh", f"{nx} x {ny} {b.element} cells", ""),
         ("pressure", format_value(scenario.normal.value), "Pa"),
     ]
-    for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"), ("alpha_t", "Pa/m"),
-                      ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s")):  # fmt: skip
-        rows.append((f"law {key}", format_value(float(getattr(p, key))), unit))
     return rows
+
+
+def _law_rows(scenario: object) -> list[tuple[str, str, str]]:
+    """The contact law's rows (the report compares them with the first law table)."""
+    from frictionlab.io.contact_scenario import ContactScenario
+
+    assert isinstance(scenario, ContactScenario)
+    p = scenario.params
+    return [
+        (key, format_value(float(getattr(p, key))), unit)
+        for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"), ("alpha_t", "Pa/m"),
+                          ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s"))
+    ]  # fmt: skip
 
 
 #: The contact model's demo sections, in report order.

@@ -96,8 +96,8 @@ def _zoom_limits(x: np.ndarray, y: np.ndarray, window: tuple[float, float]) -> t
     return lo - pad, hi + pad
 
 
-def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
-    """Parameter table rows: the law, the initial contact and the programme."""
+def _law_rows(scenario: Scenario) -> list[tuple[str, str, str]]:
+    """Law table rows (the report shows the first in full, later ones as differences)."""
     law = scenario.inputs["law"]
     units = _CONE_UNITS if scenario.params.is_cone else _CLOSED_UNITS
     rows = [("surface", str(law["surface"]), "")]
@@ -105,6 +105,12 @@ def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
         if key == "surface" or value is None or key not in units:
             continue
         rows.append((key, format_value(value), units[key]))
+    return rows
+
+
+def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
+    """Parameter table rows: the initial contact and the programme."""
+    rows = []
     rows.append(
         (
             "initial normal traction f_n",
@@ -147,6 +153,7 @@ def monotonic_section(ctx: DemoContext) -> Section:
     sec = Section(
         "Monotonic sliding to kinetic friction",
         sc.description,
+        law=_law_rows(sc),
         parameters=_parameters(sc),
     )
     sec.add_figure(
@@ -199,7 +206,7 @@ def slide_hold_slide_section(ctx: DemoContext) -> Section:
     zoom.axes[0].set_ylim(*_zoom_limits(h.slip[..., 0], h.friction_ratio, window))
     save_figure(zoom, ctx.out_dir / rel / "restart_zoom.png")
     sec = Section("Slide-hold-slide: recovery of static friction", sc.description,
-                  parameters=_parameters(sc))  # fmt: skip
+                  law=_law_rows(sc), parameters=_parameters(sc))  # fmt: skip
     sec.add_figure(
         f"{rel}/friction.png",
         "The whole programme for five hold times: sliding to kinetic friction, the hold "
@@ -260,7 +267,7 @@ def reversal_section(ctx: DemoContext) -> Section:
         float(h.slip[stick[0] - 1, 0, 0] - h.slip[stick[-1], 0, 0]) if stick.size else 0.0
     )
     sec = Section("Reversal, displacement cycles and ratcheting", sc.description,
-                  parameters=_parameters(sc))  # fmt: skip
+                  law=_law_rows(sc), parameters=_parameters(sc))  # fmt: skip
     sec.add_figure(
         f"{rel}/friction.png",
         "Forward slide, reversal back to the start, then four cycles of +-0.05 m: f_t1/f_n "
@@ -303,6 +310,7 @@ def anisotropy_section(ctx: DemoContext) -> Section:
     sec = Section(
         "Rotational and orthotropic anisotropy",
         sr.description + " " + so.description,
+        law=_law_rows(sr),
         parameters=_parameters(sr),
     )
     sec.add_figure(
@@ -360,7 +368,7 @@ def pressure_section(ctx: DemoContext) -> Section:
     ax = plot_pressure_dependence(results, curves)
     save_figure(ax.figure, ctx.out_dir / "pressure" / "pressure.png")  # type: ignore[arg-type]
     sec = Section("Pressure dependence of the closed sliding-yield surfaces", main.description,
-                  parameters=_parameters(main))  # fmt: skip
+                  law=_law_rows(main), parameters=_parameters(main))  # fmt: skip
     sec.add_figure(
         "pressure/pressure.png",
         "Steady friction coefficient against normal traction for the four closed surfaces "
@@ -410,7 +418,12 @@ def stick_slip_section(ctx: DemoContext) -> Section:
     )
     ax = plot_stability_map(factors, osc, V)
     save_figure(ax.figure, ctx.out_dir / rel / "stability_map.png")  # type: ignore[arg-type]
-    sec = Section("Stick-slip of a spring-slider", sc.description, parameters=_parameters(sc))
+    sec = Section(
+        "Stick-slip of a spring-slider",
+        sc.description,
+        law=_law_rows(sc),
+        parameters=_parameters(sc),
+    )
     sec.add_figure(
         f"{rel}/friction.png",
         "Quasi-static slider: friction ratio and slider speed against load-point travel. "

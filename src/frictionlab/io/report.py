@@ -41,13 +41,17 @@ class Section:
     """A section of the report.
 
     ``parameters`` are rows ``(name, value, unit)`` shown in a table under the figures;
-    ``notes`` are extra paragraphs (e.g. measured numbers) after the intro.
+    ``law`` are the rows of the constitutive law the section ran with: the report shows the
+    first section's law table in full and, in later sections, links to it and lists only
+    the rows that differ (a law with other keys is shown in full); ``notes`` are extra
+    paragraphs (e.g. measured numbers) after the intro.
     """
 
     title: str
     intro: str = ""
     figures: list[Figure] = field(default_factory=list)
     parameters: list[tuple[str, str, str]] = field(default_factory=list)
+    law: list[tuple[str, str, str]] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     anchor: str = ""
 
@@ -120,6 +124,7 @@ class Report:
                 out.append(f"<tr><td>{e(key)}</td><td>{e(value)}</td></tr>")
             out.append("</table></details>")
         anchors = self._anchors()
+        base: tuple[str, str, dict[str, tuple[str, str]]] | None = None  # id, title, rows
         out.append("<nav><ol>")
         for sec, anchor in zip(self.sections, anchors, strict=True):
             out.append(f'<li><a href="#{anchor}">{e(sec.title)}</a></li>')
@@ -141,12 +146,24 @@ class Report:
                     items = ", ".join(f'<a href="{e(f)}">{e(f)}</a>' for f in links)
                     out.append(f'<p class="data">Data: {items}</p>')
                 out.append("</figure>")
+            if sec.law:
+                rows = {name: (value, unit) for name, value, unit in sec.law}
+                if base is None or not set(base[2]) <= set(rows):
+                    table_id = f"law-{anchor}"
+                    out.append(f'<p class="law" id="{table_id}">Law parameters:</p>')
+                    out += _table(sec.law, "law parameter")
+                    if base is None:
+                        base = (table_id, sec.title, rows)
+                else:
+                    changed = [(n, v, u) for n, (v, u) in rows.items() if base[2].get(n) != (v, u)]
+                    link = f'<a href="#{base[0]}">{e(base[1])}</a>'
+                    if changed:
+                        out.append(f'<p class="law">Law parameters: as in {link}, except:</p>')
+                        out += _table(changed, "law parameter")
+                    else:
+                        out.append(f'<p class="law">Law parameters: as in {link}.</p>')
             if sec.parameters:
-                out.append('<table class="params">')
-                out.append("<tr><th>parameter</th><th>value</th><th>unit</th></tr>")
-                for name, value, unit in sec.parameters:
-                    out.append(f"<tr><td>{e(name)}</td><td>{e(value)}</td><td>{e(unit)}</td></tr>")
-                out.append("</table>")
+                out += _table(sec.parameters, "parameter")
             out.append("</section>")
         out += ["</body>", "</html>", ""]
         return "\n".join(out)
@@ -194,6 +211,16 @@ class Report:
             fig.path: data_files(root, fig.path) for sec in self.sections for fig in sec.figures
         }
         return write_text_atomic(target, self.render(data, environment(provenance())))
+
+
+def _table(rows: Iterable[tuple[str, str, str]], head: str) -> list[str]:
+    """HTML lines of a parameter table (escaped)."""
+    e = html.escape
+    out = ['<table class="params">', f"<tr><th>{e(head)}</th><th>value</th><th>unit</th></tr>"]
+    for name, value, unit in rows:
+        out.append(f"<tr><td>{e(name)}</td><td>{e(value)}</td><td>{e(unit)}</td></tr>")
+    out.append("</table>")
+    return out
 
 
 def data_files(root: str | os.PathLike[str], figure: str) -> list[str]:
