@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from frictionlab.plotting._ticks import readable_log_ticks
 from frictionlab.plotting.law import new_figure
 
 if TYPE_CHECKING:
@@ -93,4 +94,5 @@ def plot_profile(
     ax.set_ylabel("delta chi^2 [-]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
+    readable_log_ticks(ax.figure)
     return ax

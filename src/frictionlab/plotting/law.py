@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from frictionlab.io.atomic import atomic_path
+from frictionlab.plotting._ticks import readable_log_ticks
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -51,7 +52,11 @@ def new_figure(
 
 
 def save_figure(fig: Figure, path: str | os.PathLike[str], dpi: int = 110) -> Path:
-    """Write ``fig`` as PNG to ``path`` atomically and return the path."""
+    """Write ``fig`` as PNG to ``path`` atomically and return the path.
+
+    Log axes get at least three labelled ticks (:func:`readable_log_ticks`).
+    """
+    readable_log_ticks(fig)
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=dpi, format="png")
     return Path(path)
@@ -149,6 +154,7 @@ def plot_friction(
         ax_t.legend(fontsize=8, loc="best")
     if title:
         fig.suptitle(title)
+    readable_log_ticks(fig)
     return fig
 
 
@@ -246,6 +252,7 @@ def plot_spring_slider(
         ax.grid(alpha=0.3)
     if any(names) or subset:
         ax_f.legend(fontsize=8, loc="best")
+    readable_log_ticks(fig)
     return fig
 
 
@@ -270,6 +277,7 @@ def plot_steady_friction(
     ax.set_ylabel("steady friction ratio [-]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
+    readable_log_ticks(ax.figure)
     return ax
 
 
@@ -296,6 +304,7 @@ def plot_restart_peaks(
     ax.set_ylabel("friction ratio [-]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
+    readable_log_ticks(ax.figure)
     return ax
 
 
@@ -330,6 +339,7 @@ def plot_healing(
     ax.set_ylabel("delta mu = restart peak - friction before [-]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
+    readable_log_ticks(ax.figure)
     return ax
 
 
@@ -408,4 +418,5 @@ def plot_stability_map(
     ax.set_title(f"V = {velocity:g} m/s", fontsize=9)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
+    readable_log_ticks(ax.figure)
     return ax

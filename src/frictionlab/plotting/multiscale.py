@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from frictionlab.plotting._ticks import readable_log_ticks
 from frictionlab.plotting.roughness import new_figure
 
 if TYPE_CHECKING:
@@ -42,6 +43,7 @@ def plot_multiscale(result: MultiscaleResult, *, ax: Axes | None = None) -> Axes
     ax.set_title("friction vs the scales retained", fontsize=9)
     ax.grid(True, alpha=0.3, which="both")
     ax.legend(fontsize=7)
+    readable_log_ticks(ax.figure)
     return ax
 
 
@@ -58,6 +60,7 @@ def plot_multiscale_anisotropy(result: MultiscaleResult, *, ax: Axes | None = No
     ax.set_ylabel("anisotropy max(mu) / min(mu)")
     ax.set_title("which scales make friction anisotropic", fontsize=9)
     ax.grid(True, alpha=0.3, which="both")
+    readable_log_ticks(ax.figure)
     return ax
 
 

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from frictionlab.plotting._ticks import readable_log_ticks
 from frictionlab.plotting.roughness import new_figure
 
 if TYPE_CHECKING:
@@ -171,6 +172,7 @@ def plot_hierarchy(result: HierarchyResult, *, ax: Axes | None = None, label: st
     ax.set_title(f"hierarchy (mu passed upward: {result.mu_passed}; x: invalid)", fontsize=9)
     ax.grid(True, alpha=0.3, which="both")
     ax.legend(fontsize=7)
+    readable_log_ticks(ax.figure)
     return ax
 
 
@@ -268,6 +270,7 @@ def fig12_hierarchy_1d(cases: dict[str, HierarchyResult]) -> Figure:
         ax.grid(True, alpha=0.3, which="both")
     axes[1].legend(fontsize=6, ncol=2)
     fig.suptitle("Fig 12 family: 1-D hierarchies (wedges: Eqs 15-16 recursion; sines: lattice)")
+    readable_log_ticks(fig)
     return fig
 
 

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from frictionlab.plotting._ticks import readable_log_ticks
 from frictionlab.plotting.roughness import new_figure
 
 if TYPE_CHECKING:
@@ -53,6 +54,7 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
     failed = int((table["status"] == "failed").sum())
     note = f" ({failed} failed)" if failed else ""
     fig.suptitle(f"{title or 'sweep'}: {len(ok)} of {len(table)} cases{note}", fontsize=10)
+    readable_log_ticks(fig)
     return fig
 
 
