@@ -41,9 +41,10 @@ def readable_tick_values(vmin: float, vmax: float, minimum: int = MIN_LABELS) ->
     # less than about a factor 1.3: evenly spaced values, nice steps
     from matplotlib.ticker import MaxNLocator
 
+    values = np.array([lo, hi])
     for nbins in range(minimum, 4 * minimum):
-        values = MaxNLocator(nbins=nbins, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
-        values = np.asarray(values[values > 0], dtype=float)
+        raw = np.asarray(MaxNLocator(nbins=nbins, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi))
+        values = raw[raw > 0].astype(np.float64)
         if np.count_nonzero((values >= lo) & (values <= hi)) >= minimum:
             break
     return values
@@ -69,8 +70,9 @@ def readable_log_ticks(fig: Any, minimum: int = MIN_LABELS) -> Any:
     """
     from matplotlib import ticker
 
-    class ReadableLogLocator(ticker.Locator):  # type: ignore[misc]
+    class ReadableLogLocator(ticker.Locator):
         def __call__(self) -> Any:
+            assert self.axis is not None
             vmin, vmax = self.axis.get_view_interval()
             return self.tick_values(vmin, vmax)
 
