@@ -224,7 +224,7 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         options["phase"] = tuple(sliding.get_list("phase", float, length=2))
     on_invalid = sliding.get("on_invalid", str, "error", choices=tuple(ON_INVALID_KEYS))
     options["on_invalid"] = ON_INVALID_KEYS[on_invalid]
-    sliding.finish()
+    sliding.finish(allowed=("separation", "phase"))
     lattice = top.table("lattice")
     if lattice is not None:
         if "stations" in lattice:
@@ -307,6 +307,11 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
 
 
 #: Every key of [lattice] (listed when an unknown one is given).
+#: Optional keys of a surface table that are read only when given, by kind.
+_OPTIONAL_SURFACE_KEYS = {
+    "self_affine": ("rms_height", "rms_slope", "short_cutoff", "long_cutoff"),
+    "file": ("short_cutoff", "long_cutoff"),
+}
 _LATTICE_KEYS = (
     "stations", "time_samples", "max_return_periods", "k_c", "k_t", "travel",
     "mu_definition", "engine", "full_contact", "snap_time_samples",
@@ -351,7 +356,7 @@ def _multiscale(
         raise InputError(f"{table.where}.cutoffs = {cutoffs} is invalid: allowed distinct values")
     mu_passed = table.get("mu_passed", str, "magnitude", choices=MU_PASSED)
     directions = _own_directions(table, betas)
-    table.finish()
+    table.finish(allowed=("beta_deg",))
     return MultiscaleOptions(ordered, directions, mu_passed)
 
 
@@ -402,7 +407,7 @@ def _adhesion(table: Table, betas: np.ndarray, settings: LatticeSettings) -> Adh
         if kt_value == 0.0:
             raise InputError(f"{table.where}.detachment needs tensile springs (k_t > 0)")
     directions = _own_directions(table, betas)
-    table.finish()
+    table.finish(allowed=("k_t", "detachment", "beta_deg"))
     return AdhesionOptions(loads, k_t, directions, compare, detachment)
 
 
@@ -423,7 +428,7 @@ def _wear(table: Table, betas: np.ndarray) -> WearOptions:
     samples = table.get("samples", int, 21, check=lambda v: v >= 2, allowed="an integer >= 2")
     method = table.get("method", str, "auto", choices=WEAR_METHODS)
     directions = _own_directions(table, betas)
-    table.finish()
+    table.finish(allowed=("beta_deg",))
     try:
         settings = WearSettings(**values)
     except ParameterError as exc:
@@ -470,7 +475,7 @@ def _hierarchy(
         "samples_per_level", int, 11, check=lambda v: v >= 2, allowed="an integer >= 2"
     )
     directions = _own_directions(table, betas)
-    table.finish()
+    table.finish(allowed=("levels", "ratio", "inner", "beta_deg"))
     return HierarchyOptions(levels, mu_passed, on_invalid, samples, directions)
 
 
@@ -506,7 +511,7 @@ def _surface(table: Table, base_dir: Path, notes: dict[str, Any], side: str) -> 
         surface = _build(kind, table, base_dir, info)
     except ParameterError as exc:
         raise InputError(f"{table.where}.{exc}") from None
-    table.finish()
+    table.finish(allowed=_OPTIONAL_SURFACE_KEYS.get(kind, ()))
     for text in info.pop("warnings", ()):
         notes.setdefault("warnings", []).append(f"{table.where}: {text}")
     notes[side] = info
