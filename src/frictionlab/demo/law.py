@@ -132,6 +132,19 @@ def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
     return rows
 
 
+def _length(value: float, spec: str = "g") -> str:
+    """A length [m] in the unit that reads best: "5 mm", "0.1 um"."""
+    for unit, factor in (("m", 1.0), ("mm", 1e-3), ("um", 1e-6), ("nm", 1e-9)):
+        if abs(value) >= factor or unit == "nm":
+            return f"{value / factor:{spec}} {unit}"
+    return f"{value:{spec}} m"  # pragma: no cover
+
+
+def _speed(value: float) -> str:
+    """A speed [m/s] as "1 mm/s", "1 um/s"."""
+    return _length(value) + "/s"
+
+
 def _law(scenario: Scenario, name: str) -> float:
     return float(np.ravel(getattr(scenario.params, name))[0])
 
@@ -144,7 +157,8 @@ def monotonic_section(ctx: DemoContext) -> Section:
     kappa, xi, mu_s, mu_k = (_law(sc, k) for k in ("kappa", "xi", "mu_s", "mu_k"))
     simulated = h.friction_ratio[-1]
     expected = steady_size(V, kappa, xi, mu_s, mu_k)
-    curve_v = np.logspace(-4.5, 1.5, 200)
+    curve_v = np.geomspace(V.min() / 30.0, V.max() * 30.0, 200)
+    distance = float(np.ravel(h.segments[0].resolved["distance"])[0])
     ax = plot_steady_friction(
         V, simulated, curve_v, steady_size(curve_v, kappa, xi, mu_s, mu_k), (mu_k, mu_s)
     )
@@ -164,7 +178,7 @@ def monotonic_section(ctx: DemoContext) -> Section:
     )
     sec.add_figure(
         f"{rel}/steady.png",
-        "Steady friction at the end of the 5 m slide (points) on the closed form "
+        f"Steady friction at the end of the {_length(distance)} slide (points) on the closed form "
         "mu_ss(V) = (kappa V + xi)/(kappa V/mu_k + xi/mu_s) (line): the law's built-in "
         "velocity weakening between mu_s (slow) and mu_k (fast).",
     )
@@ -201,7 +215,11 @@ def slide_hold_slide_section(ctx: DemoContext) -> Section:
     )
     save_figure(ax.figure, ctx.out_dir / rel / "restart.png")  # type: ignore[arg-type]
     zoom = plot_friction(h, sc.labels, "Restart after the hold")
-    window = (0.9, 1.3)  # slip [m]: the end of the first slide, the hold and the restart
+    first, second = (
+        float(np.ravel(s.resolved["distance"])[0]) for s in (h.segments[0], h.segments[2])
+    )
+    # slip window [m]: the end of the first slide, the hold and the restart
+    window = (0.9 * first, first + second)
     zoom.axes[0].set_xlim(*window)
     zoom.axes[0].set_ylim(*_zoom_limits(h.slip[..., 0], h.friction_ratio, window))
     save_figure(zoom, ctx.out_dir / rel / "restart_zoom.png")
@@ -266,20 +284,24 @@ def reversal_section(ctx: DemoContext) -> Section:
     elastic_range = (
         float(h.slip[stick[0] - 1, 0, 0] - h.slip[stick[-1], 0, 0]) if stick.size else 0.0
     )
+    amplitude = float(np.ravel(h.segments[2].resolved["amplitude"])[0])
+    max_step = float(np.ravel(h.segments[1].resolved["max_step"])[0])
     sec = Section("Reversal, displacement cycles and ratcheting", sc.description,
                   law=_law_rows(sc), parameters=_parameters(sc))  # fmt: skip
     sec.add_figure(
         f"{rel}/friction.png",
-        "Forward slide, reversal back to the start, then four cycles of +-0.05 m: f_t1/f_n "
+        "Forward slide, reversal back to the start, then four cycles of "
+        f"+-{_length(amplitude)}: f_t1/f_n "
         "against slip (loops) and time. Each reversal unloads elastically and re-yields "
         "smoothly; the turning points alternate in sign and decrease toward kinetic friction. "
-        f"Steps of 1e-4 m resolve the elastic unloading: after the first reversal "
-        f"{stick.size} steps ({elastic_range:.2g} m of slip) are elastic, with slope "
+        f"Steps of {_length(max_step)} resolve the elastic unloading: after the first reversal "
+        f"{stick.size} steps ({_length(elastic_range, '.2g')} of slip) are elastic, with slope "
         f"{slope:.4g} Pa/m (alpha_t = {_law(sc, 'alpha_t'):.4g} Pa/m).",
     )
     sec.add_figure(
         f"{rel_r}/friction.png",
-        "Traction-controlled cycles 0 -> 0.4 -> 0 Pa with kappa = xi = 0: the driver solves "
+        f"Traction-controlled cycles 0 -> {fmax / 1e6:g} -> 0 MPa with kappa = xi = 0: "
+        "the driver solves "
         "for the slip; every cycle shifts the loop forward (ratcheting).",
     )
     sec.add_figure(
@@ -290,10 +312,12 @@ def reversal_section(ctx: DemoContext) -> Section:
     sec.notes.append(
         "Turning-point friction ratios of the displacement cycles: "
         + ", ".join(f"{v:+.4f}" for v in tp)
-        + f". Ratcheting per cycle: simulated {np.diff(np.concatenate([[0.0], residual])).mean() * 1e3:.6f} mm, "  # noqa: E501
-        f"closed form {per_cycle * 1e3:.6f} mm."
+        + f". Ratcheting per cycle: simulated {np.diff(np.concatenate([[0.0], residual])).mean() * 1e6:.6f} um, "  # noqa: E501
+        f"closed form {per_cycle * 1e6:.6f} um."
     )
-    sec.parameters += [("ratcheting scenario", "kappa = xi = 0, traction cycles to 0.4 Pa", "")]
+    sec.parameters += [
+        ("ratcheting scenario", f"kappa = xi = 0, traction cycles to {fmax:g}", "Pa")
+    ]
     return sec
 
 
@@ -307,6 +331,7 @@ def anisotropy_section(ctx: DemoContext) -> Section:
     mss = float(steady_size(np.asarray(V), kappa, xi, mu_s, mu_k))
     final = hr.traction[-1, :, 0] / hr.traction[-1, :, 2]
     C = np.asarray(so.params.orthotropy)
+    distance = float(np.ravel(hr.segments[0].resolved["distance"])[0])
     sec = Section(
         "Rotational and orthotropic anisotropy",
         sr.description + " " + so.description,
@@ -315,7 +340,8 @@ def anisotropy_section(ctx: DemoContext) -> Section:
     )
     sec.add_figure(
         f"{rel_r}/friction.png",
-        "Rotated cone (beta = 0.05 along e_1): sliding 5 m along +e_1 and -e_1 gives different "
+        f"Rotated cone (beta = {beta:g} along e_1): sliding {_length(distance)} along +e_1 "
+        "and -e_1 gives different "
         "static peaks and steady values +(mu_ss + |beta|) and -(mu_ss - |beta|).",
     )
     sec.add_figure(
@@ -387,24 +413,28 @@ def stick_slip_section(ctx: DemoContext) -> Section:
     """Stick-slip of a spring-slider"""
     sc, h, rel = run_bundled(ctx, "stick_slip")
     k = np.asarray(h.segments[0].resolved["stiffness"])[:2]  # the two slow machines
-    m = 10.0  # kg/m^2
+    speeds = np.asarray(h.segments[0].resolved["velocity"])
+    V = float(speeds[0])  # the slow machines' load-point velocity
+    travel = V * float(np.ravel(h.segments[0].resolved["duration"])[0])
+    # slider mass [kg/m^2]: 10 kg/m^2 at alpha_t = 1000 Pa/m, converted like the other inputs
+    # (mass ~ traction time^2 / length), so that the dynamics keep their shape
+    m = 10.0 * _law(sc, "alpha_t") / 1000.0
     damping = 2.0 * 0.1 * np.sqrt(k * m)  # 10 % of critical damping
     overrides = [
         "machine.stiffness=[" + ", ".join(f"{v:.6g}" for v in k) + "]",
-        "machine.velocity=[0.001, 0.001]",
-        "machine.duration=[20000.0, 20000.0]",
+        f"machine.velocity=[{V!r}, {V!r}]",
+        f"machine.duration=[{travel / V!r}, {travel / V!r}]",
         f"machine.mass={m}",
         "machine.damping=[" + ", ".join(f"{c:.6g}" for c in damping) + "]",
     ]
     rel_i = run_bundled(ctx, "stick_slip", overrides, "stick_slip_inertial")[2]
-    # stability map: quasi-static, V = 1 mm/s, k from k_c/4 to 4 k_c
-    V = 1e-3
+    # stability map: quasi-static, the slow machines' V, k from k_c/4 to 4 k_c
     fn = float(h.traction[0, 0, 2])
     kc = float(critical_stiffness(sc.params, V, fn)[0])
     factors = np.array([0.25, 0.5, 0.8, 0.9, 1.1, 1.25, 2.0, 4.0])
     with ctx.progress("stick_slip/stability_map") as progress:
         hm = simulate_spring_slider(
-            sc.params, SpringSlider(stiffness=factors * kc, velocity=V), 20.0 / V,
+            sc.params, SpringSlider(stiffness=factors * kc, velocity=V), travel / V,
             steps=2000, initial=InitialConditions(normal_traction=fn), progress=progress,
         )  # fmt: skip
     if not hm.success:
@@ -427,24 +457,25 @@ def stick_slip_section(ctx: DemoContext) -> Section:
     sec.add_figure(
         f"{rel}/friction.png",
         "Quasi-static slider: friction ratio and slider speed against load-point travel. "
-        "Soft spring at 1 mm/s: stick (speed far below V, friction rising as mu recovers) "
-        "and sudden slips; stiff spring, or the soft spring at 1 m/s: steady sliding after "
-        "the first peak.",
+        f"Soft spring at {_speed(V)}: stick (speed far below V, friction rising as mu recovers) "
+        f"and sudden slips; stiff spring, or the soft spring at {_speed(float(speeds[-1]))}: "
+        "steady sliding after the first peak.",
     )
     sec.add_figure(
         f"{rel_i}/friction.png",
-        "The two slow machines with a slider mass of 10 kg/m^2 and 10 % of critical damping "
+        f"The two slow machines with a slider mass of {m:g} kg/m^2 and 10 % of critical damping "
         "(generalized-alpha, rho_inf = 0.5): the soft machine still sticks and slips, with "
         "slips that overshoot below kinetic friction and ring; the stiff one slides steadily.",
     )
     sec.add_figure(
         f"{rel}/stability_map.png",
-        "Peak-to-peak friction in the last quarter of a 20 m pull against k/k_c: stick-slip "
+        f"Peak-to-peak friction in the last quarter of a {_length(travel)} pull against "
+        "k/k_c: stick-slip "
         "below the critical stiffness k_c of the linear stability analysis, steady sliding "
         "above it.",
     )
     sec.notes.append(
-        f"Critical stiffness at V = {V:g} m/s: k_c = {kc:.5f} Pa/m. Oscillation amplitude: "
+        f"Critical stiffness at V = {_speed(V)}: k_c = {kc:.5g} Pa/m. Oscillation amplitude: "
         + ", ".join(f"k/k_c = {f:g}: {o:.2e}" for f, o in zip(factors, osc, strict=True))
         + "."
     )
