@@ -24,15 +24,32 @@ from frictionlab.io.scenario import parse_scenario
 
 def dimensions(closed: bool) -> dict[str, dict[str, tuple[int, int, int]]]:
     """Exponents (traction, length, time) of every dimensional input, per table."""
-    law = {"alpha_n": (1, -1, 0), "alpha_t": (1, -1, 0), "u": (0, -1, 0),
-           "kappa": (1, -1, 0) if closed else (0, -1, 0),
-           "xi": (1, 0, -1) if closed else (0, 0, -1), "F_s": (1, 0, 0), "F_k": (1, 0, 0)}
+    law = {
+        "alpha_n": (1, -1, 0),
+        "alpha_t": (1, -1, 0),
+        "u": (0, -1, 0),
+        "kappa": (1, -1, 0) if closed else (0, -1, 0),
+        "xi": (1, 0, -1) if closed else (0, 0, -1),
+        "F_s": (1, 0, 0),
+        "F_k": (1, 0, 0),
+    }
     initial = {"normal_traction": (1, 0, 0), "tangential_traction": (1, 0, 0)}
-    program = {"velocity": (0, 1, -1), "distance": (0, 1, 0), "max_step": (0, 1, 0),
-               "amplitude": (0, 1, 0), "duration": (0, 0, 1), "traction": (1, 0, 0),
-               "traction_change": (1, 0, 0)}
-    machine = {"stiffness": (1, -1, 0), "velocity": (0, 1, -1), "mass": (1, -1, 2),
-               "damping": (1, -1, 1), "duration": (0, 0, 1)}
+    program = {
+        "velocity": (0, 1, -1),
+        "distance": (0, 1, 0),
+        "max_step": (0, 1, 0),
+        "amplitude": (0, 1, 0),
+        "duration": (0, 0, 1),
+        "traction": (1, 0, 0),
+        "traction_change": (1, 0, 0),
+    }
+    machine = {
+        "stiffness": (1, -1, 0),
+        "velocity": (0, 1, -1),
+        "mass": (1, -1, 2),
+        "damping": (1, -1, 1),
+        "duration": (0, 0, 1),
+    }
     return {"law": law, "initial": initial, "program": program, "machine": machine}  # fmt: skip
 
 
@@ -46,8 +63,8 @@ def rescale(data: dict[str, Any], S: float, L: float, T: float) -> dict[str, Any
                 if key in entry:
                     factor = S**a * L**b * T**c
                     value = entry[key]
-                    entry[key] = [v * factor for v in value] if isinstance(value, list) else (
-                        value * factor
+                    entry[key] = (
+                        [v * factor for v in value] if isinstance(value, list) else (value * factor)
                     )
     return out
 
