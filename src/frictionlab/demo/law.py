@@ -132,12 +132,12 @@ def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
     return rows
 
 
-def _length(value: float, spec: str = "g") -> str:
+def _length(value: float, fmt: str = "g") -> str:
     """A length [m] in the unit that reads best: "5 mm", "0.1 um"."""
     for unit, factor in (("m", 1.0), ("mm", 1e-3), ("um", 1e-6), ("nm", 1e-9)):
         if abs(value) >= factor or unit == "nm":
-            return f"{value / factor:{spec}} {unit}"
-    return f"{value:{spec}} m"  # pragma: no cover
+            return f"{value / factor:{fmt}} {unit}"
+    return f"{value:{fmt}} m"  # pragma: no cover
 
 
 def _speed(value: float) -> str:
@@ -158,7 +158,7 @@ def monotonic_section(ctx: DemoContext) -> Section:
     simulated = h.friction_ratio[-1]
     expected = steady_size(V, kappa, xi, mu_s, mu_k)
     curve_v = np.geomspace(V.min() / 30.0, V.max() * 30.0, 200)
-    distance = float(np.ravel(h.segments[0].resolved["distance"])[0])
+    distance = float(np.ravel(sc.inputs["program"][0]["distance"])[0])
     ax = plot_steady_friction(
         V, simulated, curve_v, steady_size(curve_v, kappa, xi, mu_s, mu_k), (mu_k, mu_s)
     )
@@ -215,9 +215,7 @@ def slide_hold_slide_section(ctx: DemoContext) -> Section:
     )
     save_figure(ax.figure, ctx.out_dir / rel / "restart.png")  # type: ignore[arg-type]
     zoom = plot_friction(h, sc.labels, "Restart after the hold")
-    first, second = (
-        float(np.ravel(s.resolved["distance"])[0]) for s in (h.segments[0], h.segments[2])
-    )
+    first, second = (float(np.ravel(sc.inputs["program"][i]["distance"])[0]) for i in (0, 2))
     # slip window [m]: the end of the first slide, the hold and the restart
     window = (0.9 * first, first + second)
     zoom.axes[0].set_xlim(*window)
@@ -284,8 +282,8 @@ def reversal_section(ctx: DemoContext) -> Section:
     elastic_range = (
         float(h.slip[stick[0] - 1, 0, 0] - h.slip[stick[-1], 0, 0]) if stick.size else 0.0
     )
-    amplitude = float(np.ravel(h.segments[2].resolved["amplitude"])[0])
-    max_step = float(np.ravel(h.segments[1].resolved["max_step"])[0])
+    amplitude = float(np.ravel(sc.inputs["program"][2]["amplitude"])[0])
+    max_step = float(np.ravel(sc.inputs["program"][1]["max_step"])[0])
     sec = Section("Reversal, displacement cycles and ratcheting", sc.description,
                   law=_law_rows(sc), parameters=_parameters(sc))  # fmt: skip
     sec.add_figure(
@@ -331,7 +329,7 @@ def anisotropy_section(ctx: DemoContext) -> Section:
     mss = float(steady_size(np.asarray(V), kappa, xi, mu_s, mu_k))
     final = hr.traction[-1, :, 0] / hr.traction[-1, :, 2]
     C = np.asarray(so.params.orthotropy)
-    distance = float(np.ravel(hr.segments[0].resolved["distance"])[0])
+    distance = float(np.ravel(sr.inputs["program"][0]["distance"])[0])
     sec = Section(
         "Rotational and orthotropic anisotropy",
         sr.description + " " + so.description,
@@ -413,9 +411,9 @@ def stick_slip_section(ctx: DemoContext) -> Section:
     """Stick-slip of a spring-slider"""
     sc, h, rel = run_bundled(ctx, "stick_slip")
     k = np.asarray(h.segments[0].resolved["stiffness"])[:2]  # the two slow machines
-    speeds = np.asarray(h.segments[0].resolved["velocity"])
+    speeds = np.asarray(sc.inputs["machine"]["velocity"], dtype=float)
     V = float(speeds[0])  # the slow machines' load-point velocity
-    travel = V * float(np.ravel(h.segments[0].resolved["duration"])[0])
+    travel = V * float(np.ravel(sc.inputs["machine"]["duration"])[0])
     # slider mass [kg/m^2]: 10 kg/m^2 at alpha_t = 1000 Pa/m, converted like the other inputs
     # (mass ~ traction time^2 / length), so that the dynamics keep their shape
     m = 10.0 * _law(sc, "alpha_t") / 1000.0
