@@ -6,8 +6,8 @@ Usage::
 
 Writes into OUT_DIR/roughness_life/:
 
-* ``fig10_adhesion_<case>.csv``: adhesion (z = sin x, k_t = k_c / 2): tangential force,
-  mu_apparent (empty at L = 0), stretched fractions vs load per spring;
+* ``fig10_adhesion_<case>.csv``: adhesion (z = A sin(x/A), A = 1 um, k_t = k_c / 2):
+  tangential force, mu_apparent (empty at L = 0), stretched fractions vs load per spring;
 * ``fig11_wear_<case>.csv``: wedge and 2-D sinusoid wear: mu(t) to mu0 at T_w;
 * ``fig12_hierarchy_<case>.csv``: mu_n of wedge and sine hierarchies;
 * ``fig13_hierarchy_2d_<case>.csv``: 2-D hierarchies vs beta;

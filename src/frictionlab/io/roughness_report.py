@@ -146,7 +146,7 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
     section.parameters = [
         ("mu0", "0.3", "1"),
         ("wedge angles (steep, shallow)", "30, 15", "deg"),
-        ("2-D amplitude A", "1", "m"),
+        ("2-D amplitude A (wavelengths in units of A)", f"{families.FAMILY_LENGTH:g}", "m"),
         ("1-D stations per period, time samples", "2000, 40", ""),
         ("2-D stations per period and axis, time samples", "32, 16", ""),
         ("load", "full contact", ""),
@@ -179,7 +179,7 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
         writer.figure("fig10_adhesion", plots.fig10_adhesion(adhesion)),
         "Fig 10 family: with k_t = k_c/2 the apparent coefficient mu_a = R/L equals the "
         "non-adhesive mu above the full-contact load, rises as L falls to 0 (where it is "
-        f"undefined while the friction force is still {sine.tangential_force[zero, 0]:.3f} N "
+        f"undefined while the friction force is still {sine.tangential_force[zero, 0]:.3g} N "
         f"per spring and {100 * sine.tensile_fraction_mean[zero, 0]:.0f}% of the springs are "
         "stretched) and is negative under tension; identical in-phase surfaces at 90 deg "
         "show no adhesion effect.",
@@ -239,7 +239,12 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
     section.parameters = [
         ("mu0", "0.3", "1"),
         ("k_c, k_t", "1, 0.5", "N/m"),
-        ("adhesion surface z = A sin x", "A = 1, lambda = 2 pi", "m"),
+        (
+            "adhesion surface z = A sin(x/A)",
+            f"A = {families.FAMILY_LENGTH:g}, lambda = 2 pi A",
+            "m",
+        ),
+        ("hierarchy: outermost A, lambda", f"{families.HIERARCHY_LENGTH:g}, 2 pi A", "m"),
         ("wear coefficient K, hardness H", "1e-4, 2e9", "1, Pa"),
         ("normal load, velocity, nominal area", "10, 0.1, 1e-4", "N, m/s, m^2"),
         ("hierarchy scale ratio between levels", "10", "1"),

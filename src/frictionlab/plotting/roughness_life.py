@@ -228,7 +228,7 @@ def fig10_adhesion(cases: dict[str, AdhesionSweep]) -> Figure:
     for name, sweep in cases.items():
         plot_adhesion_mu(sweep, ax=ax_mu, label=f"{name}, ")
         plot_tensile_fraction(sweep, ax=ax_t, label=f"{name}, ")
-    fig.suptitle("Fig 10 family: adhesion (k_t = k_c / 2), load per spring in units of k_c A")
+    fig.suptitle("Fig 10 family: adhesion (k_t = k_c / 2), load per spring")
     return fig
 
 

@@ -13,10 +13,14 @@
   (their own result objects, with undefined values masked).
 
 Geometry the paper does not give is chosen here: the
-wedge angles 30/15 and 20/10 degrees, amplitude A = 1 (m) for the 2-D surfaces, and the
-half-cosine faces for the generic profile (this module's choice: the paper states only
-mean slopes). Every family returns a :class:`FamilyTable` of read-only columns. Lengths
-are in m (the results depend only on slopes in full contact).
+wedge angles 30/15 and 20/10 degrees, and the half-cosine faces for the generic profile
+(this module's choice: the paper states only mean slopes). The paper's sinusoids are
+``A sin(2 pi x/lambda)`` with A = 1 and lambda = 2 pi in units of a length ``a``: here
+:data:`FAMILY_LENGTH` = 1 um for the single-level surfaces and :data:`HIERARCHY_LENGTH`
+= 1 mm for the outermost level of a hierarchy (its levels shrink by 10 each), so every
+length is physical; the results depend only on slopes in full contact, and adhesion loads
+scale with ``k_c a``. Every family returns a :class:`FamilyTable` of read-only columns.
+Lengths are in m.
 """
 
 from __future__ import annotations
@@ -48,7 +52,9 @@ from frictionlab.roughness.wear import WearHistory, WearSettings, wear_history
 __all__ = [
     "AD_LOADS",
     "CASE_DESCRIPTIONS",
+    "FAMILY_LENGTH",
     "FAMILY_WEAR",
+    "HIERARCHY_LENGTH",
     "WEDGE_CASES",
     "FamilyTable",
     "adhesion_cases",
@@ -246,8 +252,15 @@ def generic_cases(
     )
 
 
-def _label(wavelengths: tuple[float, float]) -> str:
-    return "l{:g}pi_{:g}pi".format(*(w / math.pi for w in wavelengths))
+#: The paper's unit length for the single-level sinusoids [m]: A = 1 um, lambda = 2 pi um.
+FAMILY_LENGTH = 1e-6
+#: The outermost level's unit length of the hierarchy families [m] (levels shrink by 10).
+HIERARCHY_LENGTH = 1e-3
+
+
+def _label(wavelengths: tuple[float, float], length: float = FAMILY_LENGTH) -> str:
+    """``l2pi_3pi`` for wavelengths (2 pi, 3 pi) in units of ``length``."""
+    return "l{:g}pi_{:g}pi".format(*(round(w / (math.pi * length), 9) for w in wavelengths))
 
 
 def surfaces_2d_vs_beta(
@@ -255,20 +268,20 @@ def surfaces_2d_vs_beta(
     beta_deg: ArrayLike = _DEFAULT_BETAS,
     *,
     wavelengths: Sequence[tuple[float, float]] = (
-        (2.0 * math.pi, 2.0 * math.pi),
-        (2.0 * math.pi, 3.0 * math.pi),
-        (3.0 * math.pi, 2.0 * math.pi),
+        (2.0 * math.pi * FAMILY_LENGTH, 2.0 * math.pi * FAMILY_LENGTH),
+        (2.0 * math.pi * FAMILY_LENGTH, 3.0 * math.pi * FAMILY_LENGTH),
+        (3.0 * math.pi * FAMILY_LENGTH, 2.0 * math.pi * FAMILY_LENGTH),
     ),
-    amplitude: float = 1.0,
+    amplitude: float = FAMILY_LENGTH,
     settings: LatticeSettings | None = None,
 ) -> FamilyTable:
     """Fig 7: mu/mu0 vs beta of identical surfaces A sin(2 pi x/lx) sin(2 pi y/ly), in phase.
 
-    The first pair of ``wavelengths`` (m) defaults to the symmetric (2 pi, 2 pi) surface,
-    the others to the asymmetric (2 pi, 3 pi) and (3 pi, 2 pi). ``settings`` default: full
-    contact, 64 x 64 stations per period, 64 time samples (ergodic or return travel).
-    Columns: ``beta_deg`` and, per surface, ``mu_over_mu0_<label>``, ``mu_x_over_mu0_<label>``,
-    ``mu_y_over_mu0_<label>`` with labels like ``l2pi_3pi``.
+    The first pair of ``wavelengths`` (m) defaults to the symmetric (2 pi, 2 pi) um surface,
+    the others to the asymmetric (2 pi, 3 pi) and (3 pi, 2 pi) um; A = 1 um. ``settings``
+    default: full contact, 64 x 64 stations per period, 64 time samples (ergodic or return
+    travel). Columns: ``beta_deg`` and, per surface, ``mu_over_mu0_<label>``,
+    ``mu_x_over_mu0_<label>``, ``mu_y_over_mu0_<label>`` with labels like ``l2pi_3pi``.
     """
     m = _check_mu0(mu0)
     betas = _betas(beta_deg)
@@ -277,13 +290,14 @@ def surfaces_2d_vs_beta(
     for pair in wavelengths:
         surface = sinusoid(amplitude, pair)
         polar = friction_polar(surface, surface, m, betas, settings=settings)
-        label = _label((float(pair[0]), float(pair[1])))
+        label = _label((float(pair[0]), float(pair[1])), amplitude)
         columns[f"mu_over_mu0_{label}"] = polar.mu / m
         columns[f"mu_x_over_mu0_{label}"] = polar.mu_x / m
         columns[f"mu_y_over_mu0_{label}"] = polar.mu_y / m
     return FamilyTable(
         "surfaces_2d_vs_beta",
-        f"Identical 2-D product sinusoids (Fig 7), A = {amplitude:g} m, mu0 = {m:g}",
+        f"Identical 2-D product sinusoids (Fig 7), A = {amplitude:g} m, mu0 = {m:g}; "
+        "wavelengths in units of A",
         columns,
         {"beta_deg": "deg"},
     )
@@ -294,10 +308,10 @@ def wavelength_map(
     factors: Sequence[float] = (1.0, 1.5, 2.0, 2.5, 3.0),
     beta_deg: Sequence[float] = (0.0, 45.0, 90.0),
     *,
-    amplitude: float = 1.0,
+    amplitude: float = FAMILY_LENGTH,
     settings: LatticeSettings | None = None,
 ) -> FamilyTable:
-    """Fig 8: mu/mu0 of identical surfaces for lambda_x, lambda_y = factor * pi.
+    """Fig 8: mu/mu0 of identical surfaces for lambda_x, lambda_y = factor * pi * A.
 
     A long table with one row per (beta, lambda_x, lambda_y): columns ``beta_deg``,
     ``lambda_x_over_pi``, ``lambda_y_over_pi``, ``mu_over_mu0``, ``mu_x_over_mu0``,
@@ -325,7 +339,7 @@ def wavelength_map(
     results = {}
     for fx in facs:
         for fy in facs:
-            surface = sinusoid(amplitude, (fx * math.pi, fy * math.pi))
+            surface = sinusoid(amplitude, (fx * math.pi * amplitude, fy * math.pi * amplitude))
             results[(fx, fy)] = friction_polar(surface, surface, m, betas, settings=settings)
     for k, beta in enumerate(betas):
         for fx in facs:
@@ -363,7 +377,7 @@ def wavelength_matrix(
 
 # --------------------------------------------------------------------------- Figs 10-14
 
-#: Loads per spring of the adhesion family, Fig 10 (k_c = 1 N/m, A = 1 m: L in units of k_c A).
+#: Loads per spring of the adhesion family, Fig 10, in units of k_c A.
 AD_LOADS = (3.0, 2.0, 1.5, 1.0, 0.5, 0.25, 0.1, 0.0, -0.1, -0.25)
 
 
@@ -373,18 +387,21 @@ def adhesion_cases(
     *,
     settings: LatticeSettings | None = None,
 ) -> dict[str, AdhesionSweep]:
-    """Fig 10: z = sin x (A = 1 m, lambda = 2 pi m), k_c = 1 N/m, k_t = k_c/2.
+    """Fig 10: z = A sin(x/A) (A = 1 um, lambda = 2 pi um), k_c = 1 N/m, k_t = k_c/2.
 
+    ``loads`` per spring are in units of ``k_c A`` (the sweeps record them in N).
     ``"sine/sine"``: identical in-phase surfaces at beta = 0 and 90 deg; ``"flat/sine"``:
     a flat upper surface at beta = 0. ``settings`` default: 2000 stations, 200 time
     samples (enough to resolve the tensile fraction).
     """
     m = _check_mu0(mu0)
     settings = settings or LatticeSettings(stations=2000, time_samples=200)
-    sine = sinusoid(1.0, 2.0 * math.pi)
+    a = FAMILY_LENGTH
+    sine = sinusoid(a, 2.0 * math.pi * a)
+    newtons = np.asarray(loads, dtype=np.float64) * settings.k_c * a
     return {
-        "sine/sine": adhesion_sweep(sine, sine, m, loads, [0.0, 90.0], settings=settings),
-        "flat/sine": adhesion_sweep(flat(), sine, m, loads, [0.0], settings=settings),
+        "sine/sine": adhesion_sweep(sine, sine, m, newtons, [0.0, 90.0], settings=settings),
+        "flat/sine": adhesion_sweep(flat(), sine, m, newtons, [0.0], settings=settings),
     }
 
 
@@ -405,13 +422,14 @@ def wear_cases(
 
     ``"flat/wedge"``, ``"wedge/wedge"``: symmetric 30 deg wedges (lambda = 1 mm), beta = 0,
     45, 90 deg, Eqs 15-16 at tan(phi) = B tan(30 deg); ``"2d"``: identical sin x sin y
-    surfaces (A = 1 m, lambda = 2 pi m) in full contact, beta = 0, 15, 30, 45 deg, on the
+    surfaces (A = 1 um, lambda = 2 pi um) in full contact, beta = 0, 15, 30, 45 deg, on the
     lattice (``settings`` default: 64 x 64 stations, 64 time samples).
     """
     m = _check_mu0(mu0)
     settings = settings or LatticeSettings(time_samples=64)
     w = wedge(30.0, 1e-3)
-    s = sinusoid(1.0, (2.0 * math.pi, 2.0 * math.pi))
+    a = FAMILY_LENGTH
+    s = sinusoid(a, (2.0 * math.pi * a, 2.0 * math.pi * a))
     betas_1d, betas_2d = (0.0, 45.0, 90.0), (0.0, 15.0, 30.0, 45.0)
     return {
         "flat/wedge": wear_history(w, flat(), m, betas_1d, wear, samples=samples),
@@ -427,8 +445,8 @@ def hierarchy_1d_cases(
 
     ``"wedge <phi> flat/rough"`` and ``"wedge <phi> rough/rough"`` for phi = 10, 20, 30 deg
     (the closed-form recursion of Eqs 15-16; Eqs 33-34 at 90 deg), and ``"sine flat/rough"``,
-    ``"sine rough/rough"``: self-similar sinusoids of slope amplitude 1 (A = 1 m,
-    lambda = 2 pi m per level, ratio 10) on the lattice (``settings`` default: 2000
+    ``"sine rough/rough"``: self-similar sinusoids of slope amplitude 1 (A = 1 mm,
+    lambda = 2 pi mm outermost, ratio 10) on the lattice (``settings`` default: 2000
     stations, 40 time samples, full contact). Levels beyond the validity domain are masked.
     """
     m = _check_mu0(mu0)
@@ -439,7 +457,8 @@ def hierarchy_1d_cases(
             out[f"wedge {phi:g} {name}"] = wedge_hierarchy(
                 m, angles, [0.0, 90.0], levels, on_invalid="mask"
             )
-    sine = sinusoid(1.0, 2.0 * math.pi)
+    a = HIERARCHY_LENGTH
+    sine = sinusoid(a, 2.0 * math.pi * a)
     for name, upper in (("flat/rough", flat()), ("rough/rough", sine)):
         out[f"sine {name}"] = hierarchy_friction(
             self_similar_levels(sine, upper, levels, 10.0),
@@ -458,15 +477,17 @@ def hierarchy_2d_cases(
     *,
     settings: LatticeSettings | None = None,
 ) -> dict[str, HierarchyResult]:
-    """Fig 13: self-similar identical sin sin levels (A = 1 m per level,
-    ratio 10) with wavelengths (2 pi, 2 pi), (2 pi, 3 pi) and (3 pi, 2 pi) m, vs beta, in
+    """Fig 13: self-similar identical sin sin levels (A = 1 mm outermost,
+    ratio 10) with wavelengths (2 pi, 2 pi), (2 pi, 3 pi) and (3 pi, 2 pi) A, vs beta, in
     full contact (``settings`` default: 32 x 32 stations, 16 time samples)."""
     m = _check_mu0(mu0)
     settings = settings or LatticeSettings(stations=32, time_samples=16)
     out: dict[str, HierarchyResult] = {}
     for pair in ((2.0, 2.0), (2.0, 3.0), (3.0, 2.0)):
-        s = sinusoid(1.0, (pair[0] * math.pi, pair[1] * math.pi))
-        out[_label((pair[0] * math.pi, pair[1] * math.pi))] = hierarchy_friction(
+        a = HIERARCHY_LENGTH
+        lengths = (pair[0] * math.pi * a, pair[1] * math.pi * a)
+        s = sinusoid(a, lengths)
+        out[_label(lengths, a)] = hierarchy_friction(
             self_similar_levels(s, s, levels, 10.0),
             m,
             beta_deg,
@@ -484,12 +505,13 @@ def hierarchy_wear_case(
     wear: WearSettings = FAMILY_WEAR,
     settings: LatticeSettings | None = None,
 ) -> HierarchyWearHistory:
-    """Fig 14: ``levels`` self-similar sin x sin y levels (ratio 10; A = 1 m,
-    lambda = 2 pi m outermost), identical surfaces, beta = 0, worn innermost first
+    """Fig 14: ``levels`` self-similar sin x sin y levels (ratio 10; A = 1 mm,
+    lambda = 2 pi mm outermost), identical surfaces, beta = 0, worn innermost first
     (``settings`` default: 32 x 32 stations, 16 time samples, full contact)."""
     m = _check_mu0(mu0)
     settings = settings or LatticeSettings(stations=32, time_samples=16)
-    s = sinusoid(1.0, (2.0 * math.pi, 2.0 * math.pi))
+    a = HIERARCHY_LENGTH
+    s = sinusoid(a, (2.0 * math.pi * a, 2.0 * math.pi * a))
     return hierarchy_wear(
         self_similar_levels(s, s, levels, 10.0),
         m,

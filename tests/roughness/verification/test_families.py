@@ -117,3 +117,19 @@ def test_bad_family_arguments() -> None:
         fam.wedge_cases(method="guess")
     with pytest.raises(ParameterError, match="case"):
         fam.case_angles("G", (30.0, 15.0))
+
+
+def test_families_at_physical_scale_equal_the_papers_unit_geometry() -> None:
+    # the paper's A = 1, lambda = 2 pi in metres against the default micrometres: full
+    # contact depends on slopes only, so mu/mu0 must agree to rounding
+    betas = (0.0, 30.0, 90.0)
+    unit = [(2 * np.pi, 2 * np.pi), (2 * np.pi, 3 * np.pi)]
+    coarse = LatticeSettings(load="full", stations=16, time_samples=8)
+    paper = fam.surfaces_2d_vs_beta(0.3, betas, wavelengths=unit, amplitude=1.0, settings=coarse)
+    scaled = [(a * fam.FAMILY_LENGTH, b * fam.FAMILY_LENGTH) for a, b in unit]
+    here = fam.surfaces_2d_vs_beta(0.3, betas, wavelengths=scaled, settings=coarse)
+    assert set(paper.columns) == set(here.columns)
+    for name in paper.columns:
+        np.testing.assert_allclose(here[name], paper[name], rtol=1e-9, atol=1e-12, err_msg=name)
+    assert pytest.approx(1e-6) == fam.FAMILY_LENGTH
+    assert pytest.approx(1e-3) == fam.HIERARCHY_LENGTH
