@@ -118,23 +118,19 @@ def _gap_stats(gap: np.ndarray) -> tuple[float, float, float]:
 
 @numba.njit(cache=True, nogil=True)
 def _mean_force(
-    gap: np.ndarray, bounds: np.ndarray, cols: int, parts: np.ndarray, c: float, kc: float,
-    kt: float,
-) -> tuple[float, float, int]:  # fmt: skip
+    gap: np.ndarray, bounds: np.ndarray, cols: int, c: float, kc: float, kt: float
+) -> tuple[float, float, int]:
     """Mean spring force per station at offset c, its slope in c, and the compressed count.
 
     Summed per chunk of rows of ``cols`` stations (``bounds``, see :func:`chunk_bounds`),
-    the chunks in order; ``parts`` is overwritten.
+    the chunks in order.
     """
-    _chunks(
-        _STAGE_FORCE, bounds, gap, gap, gap, gap, gap, gap, gap, gap, gap, 1, cols,
-        0, 0, c, kc, kt, False, math.inf, False, False, parts,
-    )  # fmt: skip
     f = 0.0
     counted = 0.0
     for k in range(bounds.size - 1):
-        f += parts[k, 0]
-        counted += parts[k, 1]
+        part, part_count = _force_sum(gap[bounds[k] * cols : bounds[k + 1] * cols], c, kc, kt)
+        f += part
+        counted += part_count
     n = gap.size
     count = int(counted)
     return f / n, (kc * count + kt * (n - count)) / n, count
@@ -150,9 +146,8 @@ def solve_offset_nb(
     """
     gmax, gmin, gsum = _gap_stats(gap)
     bounds = np.array([0, 1], dtype=np.int64)
-    parts = np.empty((1, PART_COLUMNS))
     return _solve_offset(
-        gap, bounds, gap.size, parts, kc, kt, load, c_start, gmax, gmin, gsum, 0.0, 0.0, False
+        gap, bounds, gap.size, kc, kt, load, c_start, gmax, gmin, gsum, 0.0, 0.0, False
     )  # fmt: skip
 
 
@@ -161,7 +156,6 @@ def _solve_offset(
     gap: np.ndarray,
     bounds: np.ndarray,
     cols: int,
-    parts: np.ndarray,
     kc: float,
     kt: float,
     load: float,
@@ -194,18 +188,18 @@ def _solve_offset(
         count = int(count_start)
         f, fp = f_start / n, (kc * count + kt * (n - count)) / n
     else:
-        f, fp, count = _mean_force(gap, bounds, cols, parts, c, kc, kt)
+        f, fp, count = _mean_force(gap, bounds, cols, c, kc, kt)
     for it in range(1, _MAX_NEWTON + 1):
         if fp <= 0.0:
             # No spring compressed (k_t = 0): the root lies above min(gap); the
             # one-spring solution is at or right of it (convexity).
             c = gmin + n * load / kc
-            f, fp, count = _mean_force(gap, bounds, cols, parts, c, kc, kt)
+            f, fp, count = _mean_force(gap, bounds, cols, c, kc, kt)
             if fp <= 0.0:  # the load is below the rounding of the gaps
                 return c, it
             continue
         c_new = c - (f - load) / fp
-        f, fp, count_new = _mean_force(gap, bounds, cols, parts, c_new, kc, kt)
+        f, fp, count_new = _mean_force(gap, bounds, cols, c_new, kc, kt)
         c = c_new
         if count_new == count:
             return c, it
@@ -218,7 +212,7 @@ def _solve_offset(
     while steps < 200 and hi - lo > 4e-16 * (abs(lo) + abs(hi)):
         steps += 1
         mid = 0.5 * (lo + hi)
-        f, _, _ = _mean_force(gap, bounds, cols, parts, mid, kc, kt)
+        f, _, _ = _mean_force(gap, bounds, cols, mid, kc, kt)
         if f < load:
             lo = mid
         else:
@@ -446,10 +440,6 @@ def _accumulate_lean(
 #: grid alone, so the results do not depend on the number of threads.
 CHUNK_STATIONS = 1 << 14
 
-#: Work stages of :func:`_chunk`.
-_STAGE_GAP = 0  # gaps of the chunk, their (max, min, sum), the force sum at c
-_STAGE_FORCE = 1  # force sum and compressed count at c
-_STAGE_SUMS = 2  # the sums of SAMPLE_FIELDS at c
 #: Columns of the per-chunk partial results.
 PART_COLUMNS = 8
 
@@ -489,20 +479,47 @@ def _force_sum(gap: np.ndarray, c: float, kc: float, kt: float) -> tuple[float, 
     return f, count
 
 
-@numba.njit(cache=True, nogil=True)
-def _chunk(
-    stage: int,
-    k: int,
-    bounds: np.ndarray,
+@numba.njit(cache=True, fastmath=_FAST)
+def _gap_chunk(
     gap: np.ndarray,
     z1: np.ndarray,
+    z2: np.ndarray,
+    r0: int,
+    r1: int,
+    rows: int,
+    cols: int,
+    rshift: int,
+    cshift: int,
+    c: float,
+    kc: float,
+    kt: float,
+    part: np.ndarray,
+) -> None:
+    """Gaps of rows r0 .. r1-1; in ``part``: their (max, min, sum) and, for a finite c,
+    the force sum and compressed count at c (taken while the chunk is in cache)."""
+    for i in range(r0, r1):
+        ii = i - rshift
+        if ii < 0:
+            ii += rows
+        _difference(gap, z2, z1, i * cols, ii * cols + cols - cshift, cshift)
+        _difference(gap, z2, z1, i * cols + cshift, ii * cols, cols - cshift)
+    chunk = gap[r0 * cols : r1 * cols]
+    part[0], part[1], part[2] = _gap_stats(chunk)
+    if math.isfinite(c):
+        part[3], part[4] = _force_sum(chunk, c, kc, kt)
+
+
+@numba.njit(cache=True)
+def _sums_chunk(
+    gap: np.ndarray,
     h1x: np.ndarray,
     h1y: np.ndarray,
     den1: np.ndarray,
-    z2: np.ndarray,
     h2x: np.ndarray,
     h2y: np.ndarray,
     den2: np.ndarray,
+    r0: int,
+    r1: int,
     rows: int,
     cols: int,
     rshift: int,
@@ -514,29 +531,10 @@ def _chunk(
     detach: float,
     drop: bool,
     check: bool,
-    parts: np.ndarray,
+    part: np.ndarray,
 ) -> None:
-    """One stage of the work on the rows bounds[k] .. bounds[k+1]-1; results in parts[k]."""
-    r0 = bounds[k]
-    r1 = bounds[k + 1]
-    s0 = r0 * cols
-    s1 = r1 * cols
-    if stage == _STAGE_FORCE:
-        parts[k, 0], parts[k, 1] = _force_sum(gap[s0:s1], c, kc, kt)
-        return
-    if stage == _STAGE_GAP:
-        for i in range(r0, r1):
-            ii = i - rshift
-            if ii < 0:
-                ii += rows
-            _difference(gap, z2, z1, i * cols, ii * cols + cols - cshift, cshift)
-            _difference(gap, z2, z1, i * cols + cshift, ii * cols, cols - cshift)
-        parts[k, 0], parts[k, 1], parts[k, 2] = _gap_stats(gap[s0:s1])
-        if math.isfinite(c):
-            parts[k, 3], parts[k, 4] = _force_sum(gap[s0:s1], c, kc, kt)
-        return
-    for j in range(PART_COLUMNS):
-        parts[k, j] = 0.0
+    """The sums of ``SAMPLE_FIELDS`` (force, x, y, total, counts) over rows r0 .. r1-1."""
+    part[:] = 0.0
     for i in range(r0, r1):
         ii = i - rshift
         if ii < 0:
@@ -549,57 +547,22 @@ def _chunk(
             if length == 0:
                 continue
             if check:
-                part = _accumulate_row(
+                fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv = _accumulate_row(
                     gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc,
                     kt, full, detach, drop,
                 )  # fmt: skip
-                fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv = part
-                parts[k, 6] += n_inv
+                part[6] += n_inv
             else:
                 fsum, xsum, ysum, ftot, comp, tens = _accumulate_lean(
                     gap, h1x, h1y, h2x, h2y, i * cols + k0, q0, length, c, kc, kt, full, detach
                 )
                 n_comp, n_tens = int(comp), int(tens)
-            parts[k, 0] += fsum
-            parts[k, 1] += xsum
-            parts[k, 2] += ysum
-            parts[k, 3] += ftot
-            parts[k, 4] += n_comp
-            parts[k, 5] += n_tens
-
-
-@numba.njit(cache=True, nogil=True)
-def _chunks(
-    stage: int,
-    bounds: np.ndarray,
-    gap: np.ndarray,
-    z1: np.ndarray,
-    h1x: np.ndarray,
-    h1y: np.ndarray,
-    den1: np.ndarray,
-    z2: np.ndarray,
-    h2x: np.ndarray,
-    h2y: np.ndarray,
-    den2: np.ndarray,
-    rows: int,
-    cols: int,
-    rshift: int,
-    cshift: int,
-    c: float,
-    kc: float,
-    kt: float,
-    full: bool,
-    detach: float,
-    drop: bool,
-    check: bool,
-    parts: np.ndarray,
-) -> None:
-    """:func:`_chunk` for every chunk, in order."""
-    for k in range(bounds.size - 1):
-        _chunk(
-            stage, k, bounds, gap, z1, h1x, h1y, den1, z2, h2x, h2y, den2, rows, cols, rshift,
-            cshift, c, kc, kt, full, detach, drop, check, parts,
-        )  # fmt: skip
+            part[0] += fsum
+            part[1] += xsum
+            part[2] += ysum
+            part[3] += ftot
+            part[4] += n_comp
+            part[5] += n_tens
 
 
 @numba.njit(cache=True, nogil=True)
@@ -686,10 +649,11 @@ def sample_into_nb(
     newton = mode == MODE_LOAD and not (detach < math.inf and kt > 0.0)
     c_first = c_in if newton else math.nan
     full = mode == MODE_FULL
-    _chunks(
-        _STAGE_GAP, bounds, gap, z1, h1x, h1y, den1, z2, h2x, h2y, den2, rows, cols,
-        rshift, cshift, c_first, kc, kt, full, detach, drop, check, parts,
-    )  # fmt: skip
+    for k in range(nch):
+        _gap_chunk(
+            gap, z1, z2, bounds[k], bounds[k + 1], rows, cols, rshift, cshift, c_first, kc, kt,
+            parts[k],
+        )  # fmt: skip
     iterations = 0
     c = c_in
     if mode == MODE_LOAD:
@@ -706,15 +670,16 @@ def sample_into_nb(
                 f_start += parts[k, 3]
                 count_start += parts[k, 4]
             c, iterations = _solve_offset(
-                gap, bounds, cols, parts, kc, kt, load, c_in, gmax, gmin, gsum,
+                gap, bounds, cols, kc, kt, load, c_in, gmax, gmin, gsum,
                 f_start, count_start, True,
             )  # fmt: skip
         else:
             c, iterations = solve_offset_detach_nb(gap, kc, kt, load, detach)
-    _chunks(
-        _STAGE_SUMS, bounds, gap, z1, h1x, h1y, den1, z2, h2x, h2y, den2, rows, cols,
-        rshift, cshift, c, kc, kt, full, detach, drop, check, parts,
-    )  # fmt: skip
+    for k in range(nch):
+        _sums_chunk(
+            gap, h1x, h1y, den1, h2x, h2y, den2, bounds[k], bounds[k + 1], rows, cols, rshift,
+            cshift, c, kc, kt, full, detach, drop, check, parts[k],
+        )  # fmt: skip
     fsum = 0.0
     xsum = 0.0
     ysum = 0.0
