@@ -35,6 +35,7 @@ violates Eq 1's bound), ``"mask"`` or ``"drop"``; ``engine`` = ``"numba"`` or ``
 from __future__ import annotations
 
 import math
+import queue
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, fields, replace
@@ -1044,8 +1045,22 @@ def _samples(
     if lat.mode == _kernels.MODE_SEPARATION and settings.separation is not None:
         c_cold = settings.separation
 
+    spare: queue.SimpleQueue[Any] = queue.SimpleQueue()  # buffers reused across blocks
+
     def block(j0: int, j1: int) -> list[tuple[Any, ...]]:
-        work = _kernels.workspace(lat.nx, lat.ny) if numba_engine else None
+        work = None
+        if numba_engine:
+            try:
+                work = spare.get_nowait()
+            except queue.Empty:
+                work = _kernels.workspace(lat.nx, lat.ny)
+        try:
+            return _block(j0, j1, work)
+        finally:
+            if work is not None:
+                spare.put(work)
+
+    def _block(j0: int, j1: int, work: Any) -> list[tuple[Any, ...]]:
         out: list[tuple[Any, ...]] = []
         c = c_cold
         full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
