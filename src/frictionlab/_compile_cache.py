@@ -1,4 +1,4 @@
-"""Where numba writes the compiled kernels of frictionlab (issue 14, item 4).
+"""Where numba writes the compiled kernels of frictionlab, and the removal of stale copies.
 
 numba's own default writes the cache next to the sources (``__pycache__``), which fails on
 read-only installs, and keys each entry on the time stamp of the function's own file only:
@@ -15,26 +15,43 @@ Any change of a compiled module gives a fresh directory (and one full recompilat
 about a minute on a 2-core machine), so no stale compiled code is ever loaded; edits
 elsewhere (CLI, I/O) keep the cache. ``FRICTIONLAB_CACHE_DIR`` overrides the location
 (the key is still appended); a user's own ``NUMBA_CACHE_DIR`` is respected as it is.
-Directories of earlier versions are not removed (a few MB each).
 
-:func:`configure` runs when :mod:`frictionlab` is imported, before any kernel is
-decorated (numba reads ``config.CACHE_DIR`` when a ``cache=True`` function is defined).
+Stale directories (other versions or sources) are removed when frictionlab is imported,
+only when this is certainly safe (POSIX only): the name has the ``<version>-<hash>``
+form, every file inside is a numba cache file (``.nbi``/``.nbc``) or frictionlab's own
+lock file, and no process is using it. A process holds a shared lock on the lock file of
+the directory it uses for as long as it runs; a directory is removed only under an
+exclusive lock, and a directory without a lock file (made before locks existed) only
+when it has not changed for a day. Any failure leaves the directory in place: pruning
+never stops a run.
 """
 
 from __future__ import annotations
 
 import hashlib
 import os
+import re
+import shutil
 import sys
 import tempfile
+import time
 from pathlib import Path
+from typing import IO
 
 from frictionlab._version import __version__
 
-__all__ = ["cache_dir", "configure", "source_hash"]
+__all__ = ["cache_dir", "configure", "prune", "source_hash"]
 
 _PACKAGE = Path(__file__).resolve().parent
 _chosen: Path | None = None
+_held: IO[bytes] | None = None
+
+#: The lock file inside every cache directory in use.
+LOCK_NAME = ".frictionlab-in-use"
+#: Directory names that frictionlab made: ``<version>-<16 hex digits>``.
+_KEY = re.compile(r"^[0-9A-Za-z.+!_-]+-[0-9a-f]{16}$")
+#: A directory without a lock file is removed only when unchanged for this long (s).
+UNLOCKED_GRACE_S = 86400.0
 
 
 def source_hash() -> str:
@@ -89,17 +106,107 @@ def cache_dir() -> Path:
     return _chosen
 
 
+def hold(directory: Path) -> IO[bytes] | None:
+    """Take a shared lock on ``directory``'s lock file (kept while the file stays open).
+
+    Returns the open file, or None where locks are unavailable or the directory is gone.
+    """
+    try:
+        import fcntl
+    except ImportError:  # not POSIX: no pruning either
+        return None
+    try:
+        handle = open(directory / LOCK_NAME, "ab")  # noqa: SIM115 (held open on purpose)
+    except OSError:
+        return None
+    try:
+        fcntl.flock(handle, fcntl.LOCK_SH)
+        # A pruner may have renamed the directory away between open and lock.
+        if os.fstat(handle.fileno()).st_ino != os.stat(directory / LOCK_NAME).st_ino:
+            raise OSError("lock file replaced")
+    except OSError:
+        handle.close()
+        return None
+    return handle
+
+
+def _only_cache_files(directory: Path) -> bool:
+    for path in directory.rglob("*"):
+        if path.is_symlink():
+            return False
+        if path.is_file() and path.suffix not in (".nbi", ".nbc") and path.name != LOCK_NAME:
+            return False
+    return True
+
+
+def _remove_if_unused(directory: Path) -> bool:
+    import fcntl
+
+    lock_path = directory / LOCK_NAME
+    if not lock_path.exists() and time.time() - directory.stat().st_mtime < UNLOCKED_GRACE_S:
+        return False  # made before lock files existed, and may be in use
+    with open(lock_path, "ab") as handle:
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:  # in use
+            return False
+        if not _only_cache_files(directory):
+            return False
+        doomed = directory.with_name(f"{directory.name}.removing-{os.getpid()}")
+        directory.rename(doomed)  # atomic: a starting process now makes a fresh one
+    shutil.rmtree(doomed, ignore_errors=True)
+    return True
+
+
+def prune(root: Path, keep: str) -> list[str]:
+    """Remove the stale cache directories in ``root`` (all but ``keep``); never raises.
+
+    Returns the names removed. See the module docstring for what is removed and when.
+    """
+    removed: list[str] = []
+    try:
+        import fcntl  # noqa: F401
+    except ImportError:
+        return removed
+    try:
+        entries = sorted(root.iterdir())
+    except OSError:
+        return removed
+    for entry in entries:
+        try:
+            if entry.name == keep or entry.is_symlink() or not entry.is_dir():
+                continue
+            if ".removing-" in entry.name and _KEY.match(entry.name.split(".removing-")[0]):
+                if _only_cache_files(entry):  # left by an interrupted removal
+                    shutil.rmtree(entry, ignore_errors=True)
+                continue
+            if _KEY.match(entry.name) and _remove_if_unused(entry):
+                removed.append(entry.name)
+        except OSError:
+            continue
+    return removed
+
+
 def configure() -> str:
     """Point numba's cache at :func:`cache_dir` unless ``NUMBA_CACHE_DIR`` is set.
 
+    Holds the directory's lock for the life of the process and removes stale siblings.
     Returns the directory in use. Must run before the first ``@njit(cache=True)``
     function of frictionlab is defined.
     """
+    global _held
     user = os.environ.get("NUMBA_CACHE_DIR")
     if user:
         return user
     import numba.core.config as config
 
-    path = str(cache_dir())
-    config.CACHE_DIR = path  # type: ignore[attr-defined]
-    return path
+    path = cache_dir()
+    for _ in range(2):  # a second try if a pruner removed the directory meanwhile
+        if _held is not None:
+            break
+        _writable(path)
+        _held = hold(path)
+    if _held is not None:
+        prune(path.parent, keep=path.name)
+    config.CACHE_DIR = str(path)  # type: ignore[attr-defined]
+    return str(path)

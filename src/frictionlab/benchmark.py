@@ -202,6 +202,12 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
 
 
 def _lattice(size: int, repeats: int, log: Callable[[str], None]) -> dict:
+    """Springs per second of a partial-contact polar on numba's threads and on one thread.
+
+    Springs are counted as ``2 x spring_evaluations`` (both families at every station and
+    time sample). The one-thread run gives the parallel gain and efficiency (gain over
+    the thread count); the process CPU time shows what the run cost on a shared machine.
+    """
     from frictionlab.roughness import generators
     from frictionlab.roughness.lattice import LatticeSettings, friction_polar
 
@@ -215,18 +221,34 @@ def _lattice(size: int, repeats: int, log: Callable[[str], None]) -> dict:
     def polar() -> None:
         result["polar"] = friction_polar(surface, generators.flat(), 0.3, betas, settings=settings)
 
+    threads = numba.get_num_threads()
     timing = _median(polar, repeats)
+    numba.set_num_threads(1)
+    try:
+        single = _median(polar, repeats)
+    finally:
+        numba.set_num_threads(threads)
     springs = 2.0 * result["polar"].spring_evaluations
     rate = springs / timing["median_s"]
-    log(f"lattice {size}^2 partial       {rate:8.3g} springs/s ({timing['median_s']:.2f} s)")
+    gain = single["median_s"] / timing["median_s"]
+    log(f"lattice {size}^2 partial       {rate:8.3g} springs/s ({timing['median_s']:.2f} s, "
+        f"CPU {timing['cpu_median_s']:.2f} s, {threads} threads); one thread "
+        f"{springs / single['median_s']:.3g} springs/s: gain {gain:.2f}")  # fmt: skip
     return {
         "grid": size,
         "directions": betas,
         "time_samples": result["polar"].time_samples.tolist(),
         "contact_fraction_mean": float(np.mean(result["polar"].contact_fraction_mean)),
+        "springs": springs,
         "springs_per_second": rate,
+        "springs_per_cpu_second": springs / timing["cpu_median_s"],
+        "threads": threads,
+        "springs_per_second_one_thread": springs / single["median_s"],
+        "parallel_gain": gain,
+        "parallel_efficiency": gain / threads,
         "target_springs_per_second": TARGET_SPRINGS_PER_SECOND,
         "timing": timing,
+        "timing_one_thread": single,
     }
 
 

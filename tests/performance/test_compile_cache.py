@@ -1,4 +1,4 @@
-"""numba's cache goes to a per-user directory keyed on the sources (issue 14, item 4)."""
+"""numba's cache goes to a per-user directory keyed on the sources; stale copies go away."""
 
 from __future__ import annotations
 
@@ -17,11 +17,11 @@ PROBE = (
 )
 
 
-def _run(env: dict[str, str]) -> str:
+def _run(env: dict[str, str], probe: str = PROBE) -> str:
     full = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
     full.update(env)
     done = subprocess.run(
-        [sys.executable, "-c", PROBE], env=full, capture_output=True, text=True, check=True
+        [sys.executable, "-c", probe], env=full, capture_output=True, text=True, check=True
     )
     return done.stdout.strip().splitlines()[-1]
 
@@ -52,3 +52,61 @@ def test_source_hash_changes_with_any_compiled_module(tmp_path: Path, monkeypatc
     assert _compile_cache.source_hash() == before
     (copy / "sub" / "b.py").write_text("import numba\ny = 3\n")
     assert _compile_cache.source_hash() != before
+
+
+KEY_A = "0.0.1-0123456789abcdef"
+KEY_B = "0.0.2-fedcba9876543210"
+
+
+def _stale(root: Path, name: str, files: tuple[str, ...] = ("home/x/mod.f-1.py311.nbi",)) -> Path:
+    folder = root / name
+    for relative in files:
+        (folder / relative).parent.mkdir(parents=True, exist_ok=True)
+        (folder / relative).write_bytes(b"")
+    (folder / _compile_cache.LOCK_NAME).write_bytes(b"")
+    return folder
+
+
+def test_prune_removes_only_stale_unused_cache_folders(tmp_path: Path) -> None:
+    current = _stale(tmp_path, "0.1.0-00000000000000aa")
+    stale = _stale(tmp_path, KEY_A, ("a/b/k.nbi", "a/b/k.1.nbc"))
+    foreign = _stale(tmp_path, KEY_B, ("notes.txt",))  # not only numba files: kept
+    other = tmp_path / "my-folder"  # not our name pattern: kept
+    other.mkdir()
+    removed = _compile_cache.prune(tmp_path, keep=current.name)
+    assert removed == [KEY_A]
+    assert not stale.exists() and current.exists() and foreign.exists() and other.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([current.name, KEY_B, "my-folder"])
+
+
+def test_prune_keeps_a_folder_in_use_and_never_raises(tmp_path: Path) -> None:
+    stale = _stale(tmp_path, KEY_A)
+    handle = _compile_cache.hold(stale)  # as a running process of that version does
+    assert handle is not None
+    try:
+        assert _compile_cache.prune(tmp_path, keep="x") == []
+        assert stale.exists()
+    finally:
+        handle.close()
+    assert _compile_cache.prune(tmp_path, keep="x") == [KEY_A]
+    assert _compile_cache.prune(tmp_path / "missing", keep="x") == []
+    (tmp_path / "file").write_text("x")
+    assert _compile_cache.prune(tmp_path / "file", keep="x") == []
+
+
+def test_folder_without_lock_file_is_removed_only_when_old(tmp_path: Path) -> None:
+    stale = _stale(tmp_path, KEY_A)
+    (stale / _compile_cache.LOCK_NAME).unlink()  # made before lock files existed
+    assert _compile_cache.prune(tmp_path, keep="x") == []  # recent: may be in use
+    old = os.stat(stale).st_mtime - 2 * _compile_cache.UNLOCKED_GRACE_S
+    os.utime(stale, (old, old))
+    assert _compile_cache.prune(tmp_path, keep="x") == [KEY_A]
+
+
+def test_import_prunes_stale_siblings(tmp_path: Path) -> None:
+    root = tmp_path / "frictionlab" / "numba"
+    stale = _stale(root, KEY_A)
+    probe = "import frictionlab, numba.core.config as c; print(c.CACHE_DIR)"
+    used = Path(_run({"XDG_CACHE_HOME": str(tmp_path), "FRICTIONLAB_CACHE_DIR": ""}, probe))
+    assert used.parent == root and used.exists() and not stale.exists()
+    assert (used / _compile_cache.LOCK_NAME).exists()

@@ -3,15 +3,16 @@
 Private module. :mod:`frictionlab.roughness.lattice` calls one time sample at a time:
 
 * :func:`multipliers_nb` / :func:`multipliers_np`: the global force multiplier
-  ``H(mu0, g, beta)`` of spec section 4 (frame-free form of Eqs 1-4) for many gradients;
-* :func:`solve_offset_nb` / :func:`solve_offset_np`: the load balance (spec section 4,
-  step 2) for the offset ``c = l0 - d``, with compressive stiffness ``k_c`` and tensile
-  stiffness ``k_t`` (``k_t = 0``: no adhesion);
+  ``H(mu0, g, beta)`` (frame-free form of Eqs 1-4) for many gradients;
+* :func:`solve_offset_nb` / :func:`solve_offset_np`: the load balance for the offset
+  ``c = l0 - d``, with compressive stiffness ``k_c`` and tensile stiffness ``k_t``
+  (``k_t = 0``: no adhesion);
 * :func:`solve_offset_detach_nb` / :func:`solve_offset_detach_np`: the load balance when
   stretched springs detach beyond a cut-off elongation (option, off by default): the
   largest root of a non-monotone balance;
-* :func:`sample_nb` / :func:`sample_np`: one time sample: spring forces, friction
-  forces of both families, validity check, sums (steps 2-5);
+* :func:`sample_into_nb` (caller's buffers) / :func:`sample_nb` / :func:`sample_np`: one
+  time sample: load balance, spring forces, friction forces of both families, validity
+  check, sums;
 * :func:`interp_periodic_nb`: bilinear periodic interpolation of sampled surfaces.
 
 Mode codes of the sample kernels: ``MODE_FULL`` (full-contact limit, every spring carries
@@ -54,7 +55,7 @@ _FAST = {"reassoc", "contract", "nsz"}
 
 @numba.njit(cache=True, inline="always")
 def _h_one(mu0: float, gx: float, gy: float, cb: float, sb: float) -> tuple[float, float, float]:
-    """H = (-F_x, -F_y) per unit F_z and the denominator n_z - mu0 t_z (spec section 4)."""
+    """H = (-F_x, -F_y) per unit F_z and the denominator n_z - mu0 t_z (frame-free Eqs 1-4)."""
     inv_n = 1.0 / math.sqrt(1.0 + gx * gx + gy * gy)
     a = gx * cb + gy * sb
     inv_t = 1.0 / math.sqrt(1.0 + a * a)
@@ -103,19 +104,6 @@ def multipliers_np(
 
 
 @numba.njit(cache=True, fastmath=_FAST)
-def _mean_force(gap: np.ndarray, c: float, kc: float, kt: float) -> tuple[float, float, int]:
-    """Mean spring force per station at offset c, its slope in c, and the compressed count."""
-    f = 0.0
-    count = 0
-    for i in range(gap.size):
-        u = c - gap[i]
-        f += kc * max(u, 0.0) + kt * min(u, 0.0)
-        count += u > 0.0
-    n = gap.size
-    return f / n, (kc * count + kt * (n - count)) / n, count
-
-
-@numba.njit(cache=True, fastmath=_FAST)
 def _gap_stats(gap: np.ndarray) -> tuple[float, float, float]:
     """(max, min, sum) of the gaps."""
     gmax = gap[0]
@@ -128,11 +116,58 @@ def _gap_stats(gap: np.ndarray) -> tuple[float, float, float]:
     return gmax, gmin, gsum
 
 
+@numba.njit(cache=True, nogil=True)
+def _mean_force(
+    gap: np.ndarray, bounds: np.ndarray, cols: int, c: float, kc: float, kt: float
+) -> tuple[float, float, int]:
+    """Mean spring force per station at offset c, its slope in c, and the compressed count.
+
+    Summed per chunk of rows of ``cols`` stations (``bounds``, see :func:`chunk_bounds`),
+    the chunks in order.
+    """
+    f = 0.0
+    counted = 0.0
+    for k in range(bounds.size - 1):
+        part, part_count = _force_sum(gap[bounds[k] * cols : bounds[k + 1] * cols], c, kc, kt)
+        f += part
+        counted += part_count
+    n = gap.size
+    count = int(counted)
+    return f / n, (kc * count + kt * (n - count)) / n, count
+
+
 @numba.njit(cache=True)
 def solve_offset_nb(
     gap: np.ndarray, kc: float, kt: float, load: float, c_start: float
 ) -> tuple[float, int]:
-    """Offset c with mean(k_c max(c-g,0) + k_t min(c-g,0)) = load (spec section 4, step 2).
+    """Offset c with mean(k_c max(c-g,0) + k_t min(c-g,0)) = load (1-D ``gap``, m).
+
+    See :func:`_solve_offset`; this entry point sums the stations serially in one chunk.
+    """
+    gmax, gmin, gsum = _gap_stats(gap)
+    bounds = np.array([0, 1], dtype=np.int64)
+    return _solve_offset(
+        gap, bounds, gap.size, kc, kt, load, c_start, gmax, gmin, gsum, 0.0, 0.0, False
+    )  # fmt: skip
+
+
+@numba.njit(cache=True, nogil=True)
+def _solve_offset(
+    gap: np.ndarray,
+    bounds: np.ndarray,
+    cols: int,
+    kc: float,
+    kt: float,
+    load: float,
+    c_start: float,
+    gmax: float,
+    gmin: float,
+    gsum: float,
+    f_start: float,
+    count_start: float,
+    have_start: bool,
+) -> tuple[float, int]:
+    """Offset c with mean(k_c max(c-g,0) + k_t min(c-g,0)) = load: the load balance.
 
     The mean force is piecewise linear, increasing and convex in c (``0 <= k_t <= k_c``).
     A Newton step solves the linear piece of its starting point exactly; when the step
@@ -140,25 +175,31 @@ def solve_offset_nb(
     iterates decrease monotonically; a step from the left overshoots to the right; a
     start with zero slope (no spring compressed, ``k_t = 0``) jumps to the one-spring
     solution ``min(gap) + n load/k_c``, which is right of the root. Bisection is the
-    fallback. Returns (c, iterations).
+    fallback. ``gmax, gmin, gsum``: statistics of the gaps; with ``have_start`` the force
+    sum and compressed count at a finite ``c_start`` are already known (computed with
+    the gaps). Returns (c, iterations).
     """
-    gmax, gmin, gsum = _gap_stats(gap)
-    c_full = gsum / gap.size + load / kc  # every spring compressed
+    n = gap.size
+    c_full = gsum / n + load / kc  # every spring compressed
     if c_full >= gmax:
         return c_full, 0
     c = c_start if math.isfinite(c_start) else c_full
-    f, fp, count = _mean_force(gap, c, kc, kt)
+    if have_start and math.isfinite(c_start):
+        count = int(count_start)
+        f, fp = f_start / n, (kc * count + kt * (n - count)) / n
+    else:
+        f, fp, count = _mean_force(gap, bounds, cols, c, kc, kt)
     for it in range(1, _MAX_NEWTON + 1):
         if fp <= 0.0:
             # No spring compressed (k_t = 0): the root lies above min(gap); the
             # one-spring solution is at or right of it (convexity).
-            c = gmin + gap.size * load / kc
-            f, fp, count = _mean_force(gap, c, kc, kt)
+            c = gmin + n * load / kc
+            f, fp, count = _mean_force(gap, bounds, cols, c, kc, kt)
             if fp <= 0.0:  # the load is below the rounding of the gaps
                 return c, it
             continue
         c_new = c - (f - load) / fp
-        f, fp, count_new = _mean_force(gap, c_new, kc, kt)
+        f, fp, count_new = _mean_force(gap, bounds, cols, c_new, kc, kt)
         c = c_new
         if count_new == count:
             return c, it
@@ -171,7 +212,7 @@ def solve_offset_nb(
     while steps < 200 and hi - lo > 4e-16 * (abs(lo) + abs(hi)):
         steps += 1
         mid = 0.5 * (lo + hi)
-        f, _, _ = _mean_force(gap, mid, kc, kt)
+        f, _, _ = _mean_force(gap, bounds, cols, mid, kc, kt)
         if f < load:
             lo = mid
         else:
@@ -353,6 +394,177 @@ def _accumulate_row(
     return fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv
 
 
+@numba.njit(cache=True, fastmath=_FAST)
+def _accumulate_lean(
+    gap: np.ndarray,
+    h1x: np.ndarray,
+    h1y: np.ndarray,
+    h2x: np.ndarray,
+    h2y: np.ndarray,
+    p0: int,
+    q0: int,
+    length: int,
+    c: float,
+    kc: float,
+    kt: float,
+    full: bool,
+    detach: float,
+) -> tuple[float, float, float, float, float, float]:
+    """:func:`_accumulate_row` when no contact can violate Eq 1: no denominators read.
+
+    Counts are accumulated as floats (exact below 2^53) so that the loop vectorises.
+    """
+    fsum = 0.0
+    xsum = 0.0
+    ysum = 0.0
+    ftot = 0.0
+    n_comp = 0.0
+    n_tens = 0.0
+    for m in range(length):
+        p = p0 + m
+        q = q0 + m
+        u = c - gap[p]
+        fc = 1.0 if full else kc * max(u, 0.0)
+        ft = 0.0 if full or u < -detach else kt * min(u, 0.0)
+        ftot += fc + ft
+        fsum += fc
+        xsum += fc * (h1x[p] + h2x[q])
+        ysum += fc * (h1y[p] + h2y[q])
+        n_comp += 1.0 if fc > 0.0 else 0.0
+        n_tens += 1.0 if ft < 0.0 else 0.0
+    return fsum, xsum, ysum, ftot, n_comp, n_tens
+
+
+#: Stations per chunk of the sample kernels (whole rows of the station grid, at least one):
+#: the chunks are the unit of work of the threads and of the partial sums, fixed by the
+#: grid alone, so the results do not depend on the number of threads.
+CHUNK_STATIONS = 1 << 14
+
+#: Columns of the per-chunk partial results.
+PART_COLUMNS = 8
+
+
+@numba.njit(cache=True)
+def chunk_bounds(nx: int, ny: int) -> np.ndarray:
+    """First row of every chunk and the row count at the end (int64, 1-D).
+
+    Rows are the grid rows in 2-D (nx rows of ny stations) and one row of nx stations in
+    1-D (ny = 1).
+    """
+    rows, cols = (1, nx) if ny == 1 else (nx, ny)
+    step = max(1, CHUNK_STATIONS // cols)
+    m = (rows + step - 1) // step
+    bounds = np.empty(m + 1, dtype=np.int64)
+    for i in range(m):
+        bounds[i] = i * step
+    bounds[m] = rows
+    return bounds
+
+
+def workspace(nx: int, ny: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Buffers of :func:`sample_into_nb` for an nx x ny grid: (gaps, chunk bounds, partials)."""
+    bounds = chunk_bounds(nx, ny)
+    return np.empty(nx * ny), bounds, np.empty((bounds.size - 1, PART_COLUMNS))
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _force_sum(gap: np.ndarray, c: float, kc: float, kt: float) -> tuple[float, float]:
+    """Sum of the spring forces at offset c and the compressed count (as a float)."""
+    f = 0.0
+    count = 0.0
+    for i in range(gap.size):
+        u = c - gap[i]
+        f += kc * max(u, 0.0) + kt * min(u, 0.0)
+        count += 1.0 if u > 0.0 else 0.0
+    return f, count
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _gap_chunk(
+    gap: np.ndarray,
+    z1: np.ndarray,
+    z2: np.ndarray,
+    r0: int,
+    r1: int,
+    rows: int,
+    cols: int,
+    rshift: int,
+    cshift: int,
+    c: float,
+    kc: float,
+    kt: float,
+    part: np.ndarray,
+) -> None:
+    """Gaps of rows r0 .. r1-1; in ``part``: their (max, min, sum) and, for a finite c,
+    the force sum and compressed count at c (taken while the chunk is in cache)."""
+    for i in range(r0, r1):
+        ii = i - rshift
+        if ii < 0:
+            ii += rows
+        _difference(gap, z2, z1, i * cols, ii * cols + cols - cshift, cshift)
+        _difference(gap, z2, z1, i * cols + cshift, ii * cols, cols - cshift)
+    chunk = gap[r0 * cols : r1 * cols]
+    part[0], part[1], part[2] = _gap_stats(chunk)
+    if math.isfinite(c):
+        part[3], part[4] = _force_sum(chunk, c, kc, kt)
+
+
+@numba.njit(cache=True)
+def _sums_chunk(
+    gap: np.ndarray,
+    h1x: np.ndarray,
+    h1y: np.ndarray,
+    den1: np.ndarray,
+    h2x: np.ndarray,
+    h2y: np.ndarray,
+    den2: np.ndarray,
+    r0: int,
+    r1: int,
+    rows: int,
+    cols: int,
+    rshift: int,
+    cshift: int,
+    c: float,
+    kc: float,
+    kt: float,
+    full: bool,
+    detach: float,
+    drop: bool,
+    check: bool,
+    part: np.ndarray,
+) -> None:
+    """The sums of ``SAMPLE_FIELDS`` (force, x, y, total, counts) over rows r0 .. r1-1."""
+    part[:] = 0.0
+    for i in range(r0, r1):
+        ii = i - rshift
+        if ii < 0:
+            ii += rows
+        # k in [0, cshift): kk = k - cshift + cols ; k in [cshift, cols): kk = k - cshift
+        for k0, q0, length in (
+            (0, ii * cols + cols - cshift, cshift),
+            (cshift, ii * cols, cols - cshift),
+        ):
+            if length == 0:
+                continue
+            if check:
+                fsum, xsum, ysum, ftot, n_comp, n_tens, n_inv = _accumulate_row(
+                    gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc,
+                    kt, full, detach, drop,
+                )  # fmt: skip
+                part[6] += n_inv
+            else:
+                fsum, xsum, ysum, ftot, comp, tens = _accumulate_lean(
+                    gap, h1x, h1y, h2x, h2y, i * cols + k0, q0, length, c, kc, kt, full, detach
+                )
+                n_comp, n_tens = int(comp), int(tens)
+            part[0] += fsum
+            part[1] += xsum
+            part[2] += ysum
+            part[3] += ftot
+            part[4] += n_comp
+            part[5] += n_tens
+
+
 @numba.njit(cache=True, nogil=True)
 def sample_nb(
     z1: np.ndarray,
@@ -375,7 +587,43 @@ def sample_nb(
     detach: float = math.inf,
     drop: bool = False,
 ) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
-    """One time sample (spec section 4, steps 1-5) over all stations; see ``SAMPLE_FIELDS``.
+    """One time sample over all stations (serial, fresh buffers); see :func:`sample_into_nb`."""
+    gap = np.empty(nx * ny)
+    bounds = chunk_bounds(nx, ny)
+    parts = np.empty((bounds.size - 1, PART_COLUMNS))
+    return sample_into_nb(
+        z1, h1x, h1y, den1, z2, h2x, h2y, den2, nx, ny, kx, ky, kc, kt, mode, load, c_in,
+        detach, drop, True, gap, bounds, parts,
+    )  # fmt: skip
+
+
+@numba.njit(cache=True, nogil=True)
+def sample_into_nb(
+    z1: np.ndarray,
+    h1x: np.ndarray,
+    h1y: np.ndarray,
+    den1: np.ndarray,
+    z2: np.ndarray,
+    h2x: np.ndarray,
+    h2y: np.ndarray,
+    den2: np.ndarray,
+    nx: int,
+    ny: int,
+    kx: int,
+    ky: int,
+    kc: float,
+    kt: float,
+    mode: int,
+    load: float,
+    c_in: float,
+    detach: float,
+    drop: bool,
+    check: bool,
+    gap: np.ndarray,
+    bounds: np.ndarray,
+    parts: np.ndarray,
+) -> tuple[float, int, float, float, float, float, int, int, int, int, int]:
+    """One time sample (the load balance and the sums) over all stations; see ``SAMPLE_FIELDS``.
 
     Stations are the nx x ny grid, flattened row-major (1-D: ny = 1). ``z1, h1x, h1y,
     den1``: surface 1 at the stations with its multipliers and Eq 1 denominators
@@ -384,57 +632,72 @@ def sample_nb(
     0 <= ky < ny: station (i, k) sees entry ((i - kx) mod nx, (k - ky) mod ny). Both
     families share the station and its compression ``u = c - gap``; only compressed
     springs carry friction (Eqs 5-9 summed per station); with ``drop`` a contact
-    violating Eq 1 is left out of the compressed-force sum too. Each row of stations (a grid row
-    in 2-D, all stations in 1-D) is processed as two contiguous runs, before and after
-    the wrap of the shifted index, which the compiler vectorises.
+    violating Eq 1 is left out of the compressed-force sum too.
+
+    ``check = False`` promises that no denominator is <= 0 (the caller checked once): the
+    denominators are then not read. ``gap`` (n), ``bounds`` and ``parts``: work buffers
+    from :func:`workspace`, overwritten (nothing is allocated). The stations are worked on
+    in chunks of whole rows (:func:`chunk_bounds`) whose partial sums are added in chunk
+    order; within a chunk each row is two contiguous runs, before and after the wrap of
+    the shifted index, which the compiler vectorises. The pass that forms a chunk's gaps
+    also takes their statistics and, with a finite ``c_in`` under load control, the first
+    force sum of the load balance while the chunk is in cache. The kernel releases the
+    GIL: samples of one lattice can run on several threads, each with its own buffers.
     """
-    n = nx * ny
-    # Rows of contiguous stations: the grid rows in 2-D, one row of nx stations in 1-D.
     rows, cols, rshift, cshift = (1, nx, 0, kx) if ny == 1 else (nx, ny, kx, ky)
-    gap = np.empty(n)
-    for i in range(rows):
-        ii = i - rshift
-        if ii < 0:
-            ii += rows
-        _difference(gap, z2, z1, i * cols, ii * cols + cols - cshift, cshift)
-        _difference(gap, z2, z1, i * cols + cshift, ii * cols, cols - cshift)
+    nch = bounds.size - 1
+    newton = mode == MODE_LOAD and not (detach < math.inf and kt > 0.0)
+    c_first = c_in if newton else math.nan
+    full = mode == MODE_FULL
+    for k in range(nch):
+        _gap_chunk(
+            gap, z1, z2, bounds[k], bounds[k + 1], rows, cols, rshift, cshift, c_first, kc, kt,
+            parts[k],
+        )  # fmt: skip
     iterations = 0
     c = c_in
     if mode == MODE_LOAD:
-        if detach < math.inf and kt > 0.0:
-            c, iterations = solve_offset_detach_nb(gap, kc, kt, load, detach)
+        if newton:
+            gmax = parts[0, 0]
+            gmin = parts[0, 1]
+            gsum = 0.0
+            f_start = 0.0
+            count_start = 0.0
+            for k in range(nch):
+                gmax = max(gmax, parts[k, 0])
+                gmin = min(gmin, parts[k, 1])
+                gsum += parts[k, 2]
+                f_start += parts[k, 3]
+                count_start += parts[k, 4]
+            c, iterations = _solve_offset(
+                gap, bounds, cols, kc, kt, load, c_in, gmax, gmin, gsum,
+                f_start, count_start, True,
+            )  # fmt: skip
         else:
-            c, iterations = solve_offset_nb(gap, kc, kt, load, c_in)
-    full = mode == MODE_FULL
+            c, iterations = solve_offset_detach_nb(gap, kc, kt, load, detach)
+    for k in range(nch):
+        _sums_chunk(
+            gap, h1x, h1y, den1, h2x, h2y, den2, bounds[k], bounds[k + 1], rows, cols, rshift,
+            cshift, c, kc, kt, full, detach, drop, check, parts[k],
+        )  # fmt: skip
     fsum = 0.0
     xsum = 0.0
     ysum = 0.0
     ftot = 0.0
-    n_comp = 0
-    n_tens = 0
-    n_inv = 0
-    for i in range(rows):
-        ii = i - rshift
-        if ii < 0:
-            ii += rows
-        # k in [0, cshift): kk = k - cshift + cols ; k in [cshift, cols): kk = k - cshift
-        for k0, q0, length in (
-            (0, ii * cols + cols - cshift, cshift),
-            (cshift, ii * cols, cols - cshift),
-        ):
-            if length == 0:
-                continue
-            part = _accumulate_row(
-                gap, h1x, h1y, den1, h2x, h2y, den2, i * cols + k0, q0, length, c, kc, kt, full,
-                detach, drop,
-            )  # fmt: skip
-            fsum += part[0]
-            xsum += part[1]
-            ysum += part[2]
-            ftot += part[3]
-            n_comp += part[4]
-            n_tens += part[5]
-            n_inv += part[6]
+    comp = 0.0
+    tens = 0.0
+    inv = 0.0
+    for k in range(nch):
+        fsum += parts[k, 0]
+        xsum += parts[k, 1]
+        ysum += parts[k, 2]
+        ftot += parts[k, 3]
+        comp += parts[k, 4]
+        tens += parts[k, 5]
+        inv += parts[k, 6]
+    n_comp = int(comp)
+    n_tens = int(tens)
+    n_inv = int(inv)
     first = -1
     family = 0
     if n_inv > 0:  # locate the first invalid contact (rare: the computation stops)

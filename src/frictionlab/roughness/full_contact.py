@@ -1,7 +1,7 @@
-"""Full contact as a direct area average of the force multiplier (spec section 2.6).
+"""Full contact as a direct area average of the force multiplier.
 
 In the full-contact limit every spring carries the same force at every instant, so the
-time average of the lattice (spec section 2.4) reduces to the plain area average of the
+time average of the lattice reduces to the plain area average of the
 multipliers ``H(mu0, grad f, beta)`` (frame-free Eqs 1-4) over the stations of both
 surfaces, one half from each spring family:
 
@@ -190,7 +190,7 @@ def full_contact_sums(
     """Sums of the multipliers over both surfaces for every direction in one pass.
 
     ``mu0``: the local coefficient, one value or one per direction (hierarchies pass
-    each direction's coefficient of the level below, spec Eq 29). ``g1``, ``g2``:
+    each direction's coefficient of the level below, Eq 29). ``g1``, ``g2``:
     gradients (dimensionless) of surfaces 1 and 2 at the N stations (flat arrays of
     equal size); ``cos_beta``, ``sin_beta``: the sliding directions. ``drop``: leave
     contacts violating Eq 1 out of the count (their H is never summed). The worst

@@ -7,17 +7,17 @@ The time-averaged lattice algorithm, for any pair of surfaces (profiles and heig
   stations: upper-fixed springs slide on surface 1 (lower, fixed),
   lower-fixed springs slide on surface 2 (upper, moving along beta).
 * **Time samples.** The upper surface is shifted by ``s_j = s_0 + (j/n) D (cos b, sin b)``
-  over one relative period D along beta (section 2.4), starting in phase (``s_0 = 0``).
+  over one relative period D along beta, starting in phase (``s_0 = 0``).
 * **Per sample.** Gap ``g = f2(P - s) - f1(P)``; load balance for ``c = l0 - d``
   (bisection-free exact Newton on the piecewise-linear spring law with k_c and k_t);
   compression ``u = c - g``; compressed springs carry friction with the multipliers
   ``H(mu0, grad f1(P), beta)`` and ``H(mu0, grad f2(P - s), beta)`` (frame-free Eqs 1-4);
   sums Eqs 5-9.
-* **Coefficients.** ``mu_x = <sum X>/<R_z>``, ``mu_y = <sum Y>/<R_z>`` (section 3.2);
+* **Coefficients.** ``mu_x = <sum X>/<R_z>``, ``mu_y = <sum Y>/<R_z>``;
   ``mu = sqrt(mu_x^2 + mu_y^2)`` ("magnitude", default) or ``mu_x cos b + mu_y sin b``
-  ("projection", the dissipative coefficient), option ``mu_definition`` (section 8.2).
+  ("projection", the dissipative coefficient), option ``mu_definition``.
 
-Options (section 8), all fields of :class:`LatticeSettings` with defaults: ``load``
+Options, all fields of :class:`LatticeSettings` with defaults: ``load``
 (``"full"``: the full-contact limit where every spring carries the same force; or the mean
 normal force per spring, N), ``control`` (``"load"``: L held and c solved each sample;
 ``"separation"``: c held), ``k_c`` = 1 N/m, ``k_t`` = 0 (tensile springs: they carry load,
@@ -35,6 +35,7 @@ violates Eq 1's bound), ``"mask"`` or ``"drop"``; ``engine`` = ``"numba"`` or ``
 from __future__ import annotations
 
 import math
+import queue
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, fields, replace
@@ -103,8 +104,8 @@ class LatticeSettings:
     ----------
     load:
         ``"full"`` (default): the full-contact limit, every spring carries the same force
-        (the load-independent value of wedges and height-uncorrelated profiles, section
-        2.6). A number: the mean normal force per spring (N), held constant while sliding
+        (the load-independent value of wedges and height-uncorrelated
+        profiles). A number: the mean normal force per spring (N), held constant while sliding
         (``control="load"``); > 0 unless ``k_t`` > 0.
     control:
         ``"load"`` (default, L held, c solved per sample) or ``"separation"`` (c held).
@@ -142,7 +143,7 @@ class LatticeSettings:
     phase:
         Initial offset (x, y) (m) of the upper surface; (0, 0) is "in phase".
     mu_definition:
-        ``"magnitude"`` (default) or ``"projection"`` (section 8.2).
+        ``"magnitude"`` (default) or ``"projection"``.
     on_invalid:
         ``"raise"`` (default): a ValidityError when a compressed contact violates Eq 1's
         bound (raised at the first offending time sample); ``"mask"``: that direction gets
@@ -751,9 +752,9 @@ def friction_polar(
     )
 
 
-#: Lattices with at least this many stations run their directions on parallel threads
-#: (the compiled sample kernel releases the GIL); smaller ones stay serial, where the
-#: threads' overhead would cost more than it saves (hierarchy levels, profiles).
+#: Lattices with at least this many stations compute their time samples in blocks shared
+#: among numba's threads (see :data:`SAMPLE_BLOCKS`); smaller ones in one serial chain,
+#: where the threads would cost more than they save (hierarchy levels, profiles).
 PARALLEL_MIN_STATIONS = 1 << 16
 
 
@@ -766,37 +767,12 @@ def _all_directions(
     settings: LatticeSettings,
     progress: Callable[[int, int], None] | None,
 ) -> list[_Direction]:
-    """:func:`_direction` for every direction, on numba's thread count when worth it.
-
-    The directions are independent, so the results equal the serial loop's exactly; they
-    are collected in order, and the first error (in the order of the directions) is raised.
-    """
-    workers = min(numba.get_num_threads(), betas.size)
-    if (
-        settings.engine != "numba"
-        or workers < 2
-        or lattice.geometry.n_stations < PARALLEL_MIN_STATIONS
-    ):
-        results = []
-        for i, b in enumerate(betas):
-            results.append(_direction(lattice, lower, upper, mu0, float(b), settings))
-            if progress is not None:
-                progress(i + 1, betas.size)
-        return results
-    with ThreadPoolExecutor(max_workers=workers) as pool:
-        futures = [
-            pool.submit(_direction, lattice, lower, upper, mu0, float(b), settings) for b in betas
-        ]
-        try:
-            results = []
-            for i, future in enumerate(futures):
-                results.append(future.result())
-                if progress is not None:
-                    progress(i + 1, betas.size)
-        except BaseException:
-            for future in futures:
-                future.cancel()
-            raise
+    """:func:`_direction` for every direction, in order (the threads work inside a sample)."""
+    results = []
+    for i, b in enumerate(betas):
+        results.append(_direction(lattice, lower, upper, mu0, float(b), settings))
+        if progress is not None:
+            progress(i + 1, betas.size)
     return results
 
 
@@ -849,7 +825,7 @@ def _average_directions(
     betas: FloatArray,
     settings: LatticeSettings,
 ) -> list[_Direction]:
-    """Full contact of every direction as the area average of the multipliers (section 2.6)."""
+    """Full contact of every direction as the area average of the multipliers."""
     cs = np.array([_cos_sin_deg(float(b)) for b in betas])
     sums = full_contact_sums(
         mu0, lat.g1, lat.g2, cs[:, 0], cs[:, 1], drop=settings.on_invalid == "drop",
@@ -936,51 +912,19 @@ def _direction(
     beta: float,
     settings: LatticeSettings,
 ) -> _Direction:
-    """Time average over the sliding path of one direction."""
-    numba_engine = settings.engine == "numba"
-    multipliers = _kernels.multipliers_nb if numba_engine else _kernels.multipliers_np
-    sample = _kernels.sample_nb if numba_engine else _kernels.sample_np
-    cb, sb = _cos_sin_deg(beta)
-    h1x, h1y, den1 = multipliers(mu0, lat.g1[0], lat.g1[1], cb, sb)
-    h2_start = multipliers(mu0, lat.g2[0], lat.g2[1], cb, sb)
+    """Time average over the sliding path of one direction (Eqs 5-9 and 21-22, time-averaged)."""
     path = _sliding_path(lat.geometry, beta, settings)
-    px, py = settings.phase
+    results = _samples(lat, upper, mu0, beta, path.shifts, settings)
     n_st = lat.geometry.n_stations
-    c = math.nan  # load control: no warm start yet
-    if lat.mode == _kernels.MODE_SEPARATION and settings.separation is not None:
-        c = settings.separation
     f_sum = x_sum = y_sum = f_tot = 0.0
     fractions = np.empty(path.shifts.shape[0])
     t_max = 0.0
     t_sum = 0.0
     iterations = 0
     first_invalid: tuple[int, int, int] | None = None
-    full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
-    detach = math.inf if settings.detachment is None else settings.detachment
     drop = settings.on_invalid == "drop"
     dropped = 0.0
-    for j, (sx, sy) in enumerate(path.shifts):
-        whole = _whole_stations(sx - px, sy - py, lat.spacing, lat.geometry.dimension)
-        if whole is not None and full_whole is not None:
-            res = full_whole
-        else:
-            if whole is not None:
-                z2, (h2x, h2y, den2) = lat.z2, h2_start
-                kx, ky = whole[0] % lat.nx, whole[1] % lat.ny
-            else:
-                z2, g2x, g2y = (
-                    np.ascontiguousarray(a).ravel()
-                    for a in upper.evaluate(lat.xs - sx, lat.ys - sy)
-                )
-                z2 = lat.z2 if lat.mode == _kernels.MODE_FULL else z2
-                h2x, h2y, den2 = multipliers(mu0, g2x, g2y, cb, sb)
-                kx = ky = 0
-            res = sample(
-                lat.z1, h1x, h1y, den1, z2, h2x, h2y, den2, lat.nx, lat.ny, kx, ky,
-                settings.k_c, settings.k_t, lat.mode, lat.load, c, detach, drop,
-            )  # fmt: skip
-            if lat.mode == _kernels.MODE_FULL and whole is not None:
-                full_whole = res
+    for j, res in enumerate(results):
         c_new, iters, fs, xs_, ys_, ft, n_comp, n_tens, n_inv, first, family = res
         if lat.mode == _kernels.MODE_LOAD and math.isnan(c_new):
             raise ParameterError(
@@ -989,8 +933,6 @@ def _direction(
                 f"above the pull-off load: with detachment = {settings.detachment} m the "
                 f"stretched springs cannot carry it (beta = {beta:g} deg)",
             )
-        if lat.mode == _kernels.MODE_LOAD:
-            c = c_new  # warm start of the next load balance
         iterations = max(iterations, iters)
         f_sum += fs
         x_sum += xs_
@@ -1064,6 +1006,119 @@ def _direction(
         mu_apparent=math.hypot(x_sum, y_sum)
         / (2.0 * (load * n_st * n_samples if adhesive else f_tot)),
     )
+
+
+#: Time samples of a large lattice (see :data:`PARALLEL_MIN_STATIONS`) are computed in this
+#: many blocks of consecutive samples, the blocks shared among numba's threads. Each block
+#: starts its load balance cold and warm-starts it from sample to sample; the blocks are
+#: fixed by the sample count alone, so the results do not depend on the thread count.
+SAMPLE_BLOCKS = 8
+
+
+def _samples(
+    lat: _Lattice,
+    upper: Surface,
+    mu0: float,
+    beta: float,
+    shifts: FloatArray,
+    settings: LatticeSettings,
+) -> list[tuple[Any, ...]]:
+    """The kernel's outcome (``SAMPLE_FIELDS``) of every time sample of one direction, in order.
+
+    A block stops early at a sample that ends the computation (a load above the pull-off
+    load, or a contact violating Eq 1 with ``on_invalid="raise"``): the caller raises at
+    the first such sample, so the samples after it are never read.
+    """
+    numba_engine = settings.engine == "numba"
+    multipliers = _kernels.multipliers_nb if numba_engine else _kernels.multipliers_np
+    cb, sb = _cos_sin_deg(beta)
+    h1x, h1y, den1 = multipliers(mu0, lat.g1[0], lat.g1[1], cb, sb)
+    h2_start = multipliers(mu0, lat.g2[0], lat.g2[1], cb, sb)
+    # Whether a contact of surface 1 (or of surface 2 at the start phase) can violate Eq 1:
+    # when none can, the compiled kernel does not read the denominators.
+    check1 = bool(np.any(den1 <= 0.0))
+    check2_start = bool(np.any(h2_start[2] <= 0.0))
+    px, py = settings.phase
+    detach = math.inf if settings.detachment is None else settings.detachment
+    drop = settings.on_invalid == "drop"
+    stop_invalid = settings.on_invalid == "raise"
+    c_cold = math.nan  # load control: no warm start
+    if lat.mode == _kernels.MODE_SEPARATION and settings.separation is not None:
+        c_cold = settings.separation
+
+    spare: queue.SimpleQueue[Any] = queue.SimpleQueue()  # buffers reused across blocks
+
+    def block(j0: int, j1: int) -> list[tuple[Any, ...]]:
+        work = None
+        if numba_engine:
+            try:
+                work = spare.get_nowait()
+            except queue.Empty:
+                work = _kernels.workspace(lat.nx, lat.ny)
+        try:
+            return _block(j0, j1, work)
+        finally:
+            if work is not None:
+                spare.put(work)
+
+    def _block(j0: int, j1: int, work: Any) -> list[tuple[Any, ...]]:
+        out: list[tuple[Any, ...]] = []
+        c = c_cold
+        full_whole: Any = None  # full contact: a whole-station shift only permutes the sums
+        for sx, sy in shifts[j0:j1]:
+            whole = _whole_stations(sx - px, sy - py, lat.spacing, lat.geometry.dimension)
+            if whole is not None and full_whole is not None:
+                res = full_whole
+            else:
+                if whole is not None:
+                    z2, (h2x, h2y, den2) = lat.z2, h2_start
+                    kx, ky = whole[0] % lat.nx, whole[1] % lat.ny
+                    check2 = check2_start
+                else:
+                    z2, g2x, g2y = (
+                        np.ascontiguousarray(a).ravel()
+                        for a in upper.evaluate(lat.xs - sx, lat.ys - sy)
+                    )
+                    z2 = lat.z2 if lat.mode == _kernels.MODE_FULL else z2
+                    h2x, h2y, den2 = multipliers(mu0, g2x, g2y, cb, sb)
+                    kx = ky = 0
+                    check2 = bool(np.any(den2 <= 0.0))
+                args = (
+                    lat.z1, h1x, h1y, den1, z2, h2x, h2y, den2, lat.nx, lat.ny, kx, ky,
+                    settings.k_c, settings.k_t, lat.mode, lat.load, c, detach, drop,
+                )  # fmt: skip
+                if work is None:
+                    res = _kernels.sample_np(*args)
+                else:
+                    res = _kernels.sample_into_nb(*args, check1 or check2, *work)
+                if lat.mode == _kernels.MODE_FULL and whole is not None:
+                    full_whole = res
+            out.append(res)
+            if lat.mode == _kernels.MODE_LOAD:
+                c = res[0]  # warm start of the next load balance
+                if math.isnan(c):
+                    break
+            if res[8] and stop_invalid:
+                break
+        return out
+
+    n = int(shifts.shape[0])
+    if not numba_engine or lat.geometry.n_stations < PARALLEL_MIN_STATIONS:
+        return block(0, n)
+    step = -(-n // SAMPLE_BLOCKS)
+    starts = list(range(0, n, step))
+    workers = min(numba.get_num_threads(), len(starts))
+    if workers < 2:
+        blocks = [block(j, min(j + step, n)) for j in starts]
+    else:
+        with ThreadPoolExecutor(max_workers=workers) as pool:
+            blocks = list(pool.map(lambda j: block(j, min(j + step, n)), starts))
+    results = []
+    for part in blocks:
+        results.extend(part)
+        if len(part) < step:  # stopped early: the caller raises at its last sample
+            break
+    return results
 
 
 def _whole_stations(

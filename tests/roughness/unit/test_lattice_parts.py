@@ -92,6 +92,43 @@ class TestSampleKernels:
         assert res[3] == pytest.approx(rolled.sum(), rel=1e-15)
 
 
+class TestChunkedKernel:
+    """sample_into_nb: any chunking of the rows, with or without reading denominators."""
+
+    @pytest.mark.parametrize("mode", [K.MODE_FULL, K.MODE_LOAD, K.MODE_SEPARATION])
+    @pytest.mark.parametrize(("kt", "detach"), [(0.0, math.inf), (0.5, math.inf), (0.5, 0.8)])
+    @pytest.mark.parametrize(("nx", "ny", "kx", "ky"), [(9, 6, 4, 5), (40, 1, 13, 0)])
+    def test_equals_numpy_for_any_chunks(self, mode, kt, detach, nx, ny, kx, ky) -> None:
+        rng = np.random.default_rng(11)
+        n = nx * ny
+        z1, z2 = rng.standard_normal((2, n))
+        h1x, h1y, h2x, h2y = rng.standard_normal((4, n))
+        den1, den2 = rng.uniform(0.1, 1.0, (2, n))  # every contact valid
+        rows = 1 if ny == 1 else nx
+        args = (z1, h1x, h1y, den1, z2, h2x, h2y, den2, nx, ny, kx, ky, 1.0, kt, mode, 0.4)
+        for c_in in (0.3, math.nan, -5.0, 5.0):  # warm starts left and right of the root
+            if mode != K.MODE_LOAD and math.isnan(c_in):
+                continue
+            want = K.sample_np(*args, c_in, detach, False)
+            for bounds in (np.array([0, rows]), np.arange(rows + 1), np.array([0, 1, rows])):
+                for check in (True, False):
+                    gap = np.full(n, np.nan)
+                    parts = np.full((bounds.size - 1, K.PART_COLUMNS), np.nan)
+                    got = K.sample_into_nb(*args, c_in, detach, False, check, gap,
+                                           bounds.astype(np.int64), parts)  # fmt: skip
+                    np.testing.assert_allclose(got[0], want[0], rtol=1e-12, atol=1e-12)
+                    np.testing.assert_allclose(got[2:6], want[2:6], rtol=1e-12, atol=1e-12)
+                    assert got[6:] == want[6:]
+
+    def test_chunk_bounds_cover_whole_rows(self) -> None:
+        b = K.chunk_bounds(1000, 100)  # rows of 100 stations
+        step = K.CHUNK_STATIONS // 100
+        assert b[0] == 0 and b[-1] == 1000 and np.all(np.diff(b)[:-1] == step)
+        assert 0 < b[-1] - b[-2] <= step
+        assert list(K.chunk_bounds(50, 1)) == [0, 1]  # a profile is one row
+        assert list(K.chunk_bounds(3, 10**6)) == [0, 1, 2, 3]  # one row at least
+
+
 class TestSettings:
     @pytest.mark.parametrize(
         ("kwargs", "field"),
