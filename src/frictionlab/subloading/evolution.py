@@ -64,9 +64,10 @@ def ratio_from(
     ``(y0, s0) = ratio_start(law, R0)``. Same numbers as :func:`ratio_after`.
     """
     if law == U_COT:
-        a = _HALF_PI * u * dlam
-        y = y0 * math.exp(-a)
-        s2 = s0 * s0 - y0 * y0 * math.expm1(-2.0 * a)
+        # one expm1: e^-a = 1 + em and expm1(-2a) = em (2 + em), both to a few ulp
+        em = math.expm1(-_HALF_PI * u * dlam)
+        y = y0 * (1.0 + em)
+        s2 = s0 * s0 - y0 * y0 * (em * (2.0 + em))
         s = math.sqrt(s2) if s2 > 0.0 else 0.0
         R = math.atan2(s, y) / _HALF_PI
         slope = u * y / s if s > 0.0 else math.inf
@@ -97,10 +98,10 @@ def ratio_sensitivity(law: int, u: float, y0: float, s0: float, dlam: float, R: 
     the local solve has converged.
     """
     if law == U_COT:
-        a = _HALF_PI * u * dlam
-        s2 = s0 * s0 - y0 * y0 * math.expm1(-2.0 * a)
+        em = math.expm1(-_HALF_PI * u * dlam)  # as in ratio_from
+        s2 = s0 * s0 - y0 * y0 * (em * (2.0 + em))
         s = math.sqrt(s2) if s2 > 0.0 else 0.0
-        return math.exp(-a) * s0 / s if s > 0.0 else 1.0
+        return (1.0 + em) * s0 / s if s > 0.0 else 1.0
     if dlam <= 0.0:
         return 1.0
     return 1.0 / (1.0 + u * dlam / R)
@@ -157,6 +158,10 @@ def _softening_rate(F: float, Fk: float, m: float) -> tuple[float, float]:
     if m == 1.0:
         return x, 1.0 / Fk
     return x**m, m * x ** (m - 1.0) / Fk
+
+
+#: Public name of the softening function for the kernels (phi, phi').
+softening_rate = _softening_rate
 
 
 @njit(cache=True)
@@ -524,8 +529,9 @@ def size_after(
         if a == 0.0:
             return F0, -kappa * (F0 / Fk - 1.0)
         F_inf = (kappa * dlam + xi * dt) / a
-        e = math.exp(-a)
-        one_minus_e_over_a = -math.expm1(-a) / a
+        em = math.expm1(-a)  # one transcendental: e^-a = 1 + em
+        e = 1.0 + em
+        one_minus_e_over_a = -em / a
         F = F_inf + (F0 - F_inf) * e
         dF = kappa * (1.0 - F_inf / Fk) * one_minus_e_over_a + (F_inf - F0) * e * kappa / Fk
         return min(max(F, Fk), Fs), dF

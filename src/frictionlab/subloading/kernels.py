@@ -30,12 +30,14 @@ from numba import njit, prange
 
 from frictionlab.subloading.evolution import (
     BACKWARD_EULER,
+    U_COT,
     ratio_from,
     ratio_sensitivity,
     ratio_start,
     recovered_size,
     recovery_rate,
     size_after,
+    softening_rate,
 )
 from frictionlab.subloading.surfaces import COULOMB, potential
 
@@ -251,6 +253,54 @@ def _path_minimum(
 
 
 @njit(cache=True)
+def _start(
+    r0: float, r1: float, phi_tr: float, phi_tr_w: float, w_tr: float, fh1t: float,
+    fh2t: float, A1: float, A2: float, Aref: float, alpha_t: float, R_start: float,
+    y0: float, s0: float, u: float, ulaw: int, F_rec: float, Fk: float, kappa: float,
+    m: float,
+) -> float:  # fmt: skip
+    """Starting value of q for the local solve, from the trial state alone (no residual).
+
+    One Newton step of r(q) from q = 0, whose slope is known there in closed form:
+    ``-dPhi/dq = Phi_w W0^2 A_ref^2 / w^tr`` and ``d(dlam)/dq = W0 A_ref^2 / alpha_t``
+    with ``W0 = |fhat^tr_i / A_i^2|``, R rising at ``dR/d(dlam) = u cot(pi R_start/2)``
+    (or ``-u ln R_start``) and F at ``-kappa phi(F)``. R is concave in dlam, so this
+    tangent model stays below the root; so does the model with R = 1 (R never exceeds 1),
+    and the larger of the two is taken. For the isotropic cone the first is exact but for
+    the curvature of R and F. Falls back to regula falsi between r(0) and r(1) (when r(1)
+    has been evaluated), then to the return with R F frozen. Returns -1 when ``r0`` is not
+    finite (a trial state outside the domain of g).
+    """
+    if not math.isfinite(r0):
+        return -1.0
+    A2ref = Aref * Aref
+    W0 = math.hypot(fh1t / (A1 * A1), fh2t / (A2 * A2))
+    dphi = phi_tr_w * W0 * W0 / w_tr * A2ref  # -dPhi/dq at q = 0
+    ddlam = W0 * A2ref / alpha_t  # d(dlam)/dq at q = 0
+    if ulaw == U_COT:
+        dR = u * y0 / s0 if s0 > 0.0 else math.inf
+    else:
+        dR = -u * math.log(R_start) if R_start > 0.0 else math.inf
+    dF = -kappa * softening_rate(F_rec, Fk, m)[0]
+    q = -1.0
+    den = dphi + (dR * F_rec + R_start * dF) * ddlam
+    if den > 0.0 and math.isfinite(den):
+        q = r0 / den
+    r_sat = phi_tr - F_rec  # r(0) with R = 1
+    den_sat = dphi + dF * ddlam
+    if r_sat > 0.0 and den_sat > 0.0 and math.isfinite(den_sat):
+        q = max(q, r_sat / den_sat)
+    if 0.0 < q < 1.0:
+        return q
+    if math.isfinite(r1):
+        q = r0 / (r0 - r1)
+        if 0.0 < q < 1.0:
+            return q
+    q = r0 / phi_tr if phi_tr > 0.0 else 0.5
+    return q if 0.0 < q < 1.0 else 0.5
+
+
+@njit(cache=True)
 def _point(
     i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
@@ -442,53 +492,63 @@ def _point(
         out_status[i] = STICK
         return
 
-    # 5. plastic corrector: bracket [0, 1] in q; cos/sin of pi R_start/2 once per point
+    # 5. plastic corrector on the bracket [0, 1] in q: r(0) = r0 > 0 (the loading test),
+    #    r(1) < 0 (checked below). cos/sin of pi R_start/2 once per point.
     y0, s0 = ratio_start(ulaw, R_start)
-    end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                    R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
-                    rform)  # fmt: skip
-    r1 = end[0]
-    if not r1 < 0.0:
-        # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of f:
-        # only possible for a closed surface loaded normally with a small tangential
-        # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
-        # tangential mechanism, pitfall 3), so R = f_n g(0)/F if that is <= 1.
-        R_end = end[13] / end[7]
-        if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
-            _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                      out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
-            out_status[i] = FAILED
+    # At q = 1 (fhat = 0) Phi is 0 (cone) or f_n g(0) = f_n (closed surfaces), while
+    # R F >= R_start F_k (R only grows with dlam, F never leaves [F_k, F_s]): r(1) < 0 is
+    # then known without evaluating it, and the evaluation is only needed otherwise.
+    if surface == COULOMB:
+        need_end = not R_start > 0.0
+    else:
+        need_end = not fn_tr < 0.999 * R_start * Fk
+    r1 = -math.inf
+    if need_end:
+        end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+                        R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
+                        integ, rform)  # fmt: skip
+        r1 = end[0]
+        if not r1 < 0.0:
+            # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of
+            # f: only possible for a closed surface loaded normally with a small tangential
+            # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
+            # tangential mechanism left), so R = f_n g(0)/F if that is <= 1.
+            R_end = end[13] / end[7]
+            if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
+                _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
+                          out_traction, out_F, out_R, out_gap, out_tangent,
+                          want_tangent)  # fmt: skip
+                out_status[i] = FAILED
+                return
+            dlam = end[4]
+            norm = math.hypot(fh1t, fh2t)
+            tb1 = fh1t / norm
+            tb2 = fh2t / norm
+            _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
+                        min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
+                        out_dlam, out_vp, out_diss, out_status)  # fmt: skip
+            # f_t = f_n beta: independent of du_t
+            if want_tangent:
+                out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
+                out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
+                out_tangent[i, 2, 2] = alpha_n
             return
-        dlam = end[4]
-        norm = math.hypot(fh1t, fh2t)
-        tb1 = fh1t / norm
-        tb2 = fh2t / norm
-        _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
-                    min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
-                    out_dlam, out_vp, out_diss, out_status)  # fmt: skip
-        # f_t = f_n beta: independent of du_t
-        if want_tangent:
-            out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
-            out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
-            out_tangent[i, 2, 2] = alpha_n
-        return
-    # Unknown t in [0, 1]: q = t, or 1 - q = t when the regula-falsi estimate lies in
-    # the upper half, so that a return almost to the axis (q -> 1) keeps full precision.
-    if math.isfinite(r0):
-        q0 = r0 / (r0 - r1)
-        if not 0.0 < q0 < 1.0:
-            q0 = 0.5
-        flip = q0 > 0.5
-    else:  # trial outside the domain of g: locate the root's half first
+    q0 = _start(r0, r1, phi_tr, phi_tr_w, w_tr, fh1t, fh2t, A1, A2, Aref, alpha_t, R_start,
+                y0, s0, u, ulaw, F_rec, Fk, kappa, m)  # fmt: skip
+    if q0 < 0.0:  # trial outside the domain of g: locate the root's half first
         mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
                         tear_k, R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
                         integ, rform)[0]  # fmt: skip
-        flip = mid > 0.0
-        q0 = 0.75 if flip else 0.25
+        q0 = 0.75 if mid > 0.0 else 0.25
+    # Unknown t in [0, 1/2]: q = t, or 1 - q = t when q lies in the upper half (switched
+    # as the iterates move), so that a return almost to the axis (q -> 1) keeps full
+    # precision.
+    flip = q0 > 0.5
     dqdt = -1.0 if flip else 1.0
     t = 1.0 - q0 if flip else q0
     t_pos = 1.0 if flip else 0.0  # end of the bracket with r > 0 (q = 0)
     t_neg = 0.0 if flip else 1.0  # end with r < 0 (q = 1)
+    log_newton = surface != COULOMB
     converged = False
     it = 0
     dx = 1.0
@@ -518,21 +578,37 @@ def _point(
             cond = abs(res[17]) if math.isfinite(res[17]) else 0.0
             converged = abs(r) <= RTOL_ACCEPT * max(scale, cond)
             break
-        # Newton on the log residual ln(Phi / (R F)) (same root and sign; nearly linear
-        # for the exponential Cam-clay surface), safeguarded as in rtsafe: bisect when
-        # the step leaves the bracket or does not at least halve the step before last.
-        phi = res[13]
-        rf = res[5] * res[7]
+        # Newton, safeguarded as in rtsafe: bisect when the step leaves the bracket or
+        # does not at least halve the step before last. For the cone on the residual
+        # itself (Phi is linear in q for an isotropic cone); for the closed surfaces, whose
+        # Phi grows steeply with w, on ln(Phi / (R F)), which has the same root and sign
+        # (nearly linear for the exponential Cam-clay surface).
+        dgdt = Aref * Aref / (omq * omq) * dqdt  # d gamma / d t
         t_new = -1.0
-        if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
-            dlog = (res[15] / phi - res[16] / rf) * Aref * Aref / (omq * omq) * dqdt
-            if dlog != 0.0 and math.isfinite(dlog):
-                t_new = t - math.log(phi / rf) / dlog
+        if log_newton:
+            phi = res[13]
+            rf = res[5] * res[7]
+            if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
+                dlog = (res[15] / phi - res[16] / rf) * dgdt
+                if dlog != 0.0 and math.isfinite(dlog):
+                    t_new = t - math.log(phi / rf) / dlog
+        else:
+            slope = res[1] * dgdt
+            if slope != 0.0 and math.isfinite(slope) and math.isfinite(r):
+                t_new = t - r / slope
         if not (lo < t_new < hi) or abs(t_new - t) > 0.5 * abs(dx_old):
             t_new = 0.5 * (lo + hi)
         dx_old = dx
         dx = t_new - t
         t = t_new
+        if t > 0.5:
+            # keep the smaller of q and 1 - q as the unknown, so that a root near either
+            # end is resolved to full precision (1 - t is exact here)
+            flip = not flip
+            dqdt = -dqdt
+            t = 1.0 - t
+            t_pos = 1.0 - t_pos
+            t_neg = 1.0 - t_neg
         q = 1.0 - t if flip else t
         omq = t if flip else 1.0 - t
         res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
