@@ -59,6 +59,8 @@ SEPARATION_RTOL = 1e-12
 #: Subintervals of the trial path searched for the smallest ratio Phi/F (step 3).
 PATH_SAMPLES = 8
 MAX_ITERATIONS = 100
+#: Newton iterations on the model residual that give the local solve its start.
+MODEL_ITERATIONS = 4
 
 
 @njit(cache=True)
@@ -72,6 +74,15 @@ def _returned(fh1t: float, fh2t: float, A1: float, A2: float, gamma: float):  # 
     a1 = A1 * A1 / d1
     a2 = A2 * A2 / d2
     return d1, d2, a1, a2, fh1t * a1, fh2t * a2
+
+
+@njit(cache=True)
+def _norm(x: float, y: float) -> float:
+    """sqrt(x^2 + y^2); by ``math.hypot`` only where the squares could over- or underflow."""
+    s = x * x + y * y
+    if 1e-290 < s < 1e290:
+        return math.sqrt(s)
+    return math.hypot(x, y)
 
 
 @njit(cache=True)
@@ -91,7 +102,7 @@ def _state_at(
     Entry 14 of the tuple (dR/dR0) is left 0: the caller evaluates it after convergence.
     """
     if omq <= 0.0:  # limit gamma -> infinity: fhat -> 0, dlam -> |fhat^tr|/alpha_t
-        dlam = math.hypot(fh1t, fh2t) / alpha_t
+        dlam = _norm(fh1t, fh2t) / alpha_t
         R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
         F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
         phi = 0.0 if surface == COULOMB else fn * 1.0
@@ -101,9 +112,9 @@ def _state_at(
     d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
     t1 = fh1t / d1  # = fh1 / A1^2
     t2 = fh2t / d2
-    W = math.hypot(t1, t2)
+    W = _norm(t1, t2)
     dlam = gamma * W / alpha_t
-    w = math.hypot(fh1 / A1, fh2 / A2)
+    w = _norm(fh1 / A1, fh2 / A2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fn)
     R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
     F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
@@ -144,7 +155,7 @@ def _path_ratio(
     q1 = h1 + s * e1
     q2 = h2 + s * e2
     fns = fn0 + s * dfn
-    w = math.hypot(q1 / A1, q2 / A2)
+    w = _norm(q1 / A1, q2 / A2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fns)
     F = recovered_size(F_old, Fs, Fk, xi, m, n, s * dt, integ, rform)
     dF = _path_size_slope(F, s, Fs, xi, n, dt, integ, rform)
@@ -173,7 +184,7 @@ def _ratio_slope(phi: float, phi_w: float, phi_fn: float, w: float, q1: float, q
     if w > 0.0:
         dw = ((q1 / A1) * (e1 / A1) + (q2 / A2) * (e2 / A2)) / w
     else:
-        dw = math.hypot(e1 / A1, e2 / A2)
+        dw = _norm(e1 / A1, e2 / A2)
     rho = phi / F
     return rho, (phi_w * dw + phi_fn * dfn) / F - rho * dF / F
 
@@ -253,11 +264,49 @@ def _path_minimum(
 
 
 @njit(cache=True)
+def _model_at(
+    q: float, fh1t: float, fh2t: float, fn: float, A1: float, A2: float, Aref: float,
+    alpha_t: float, surface: int, tear_k: float, R0: float, dR: float, ddR: float,
+    dddR: float, F0: float, dF: float, ddF: float,
+) -> tuple[float, float]:  # fmt: skip
+    """Model residual m(q) and dm/dq for the start of the local solve.
+
+    Phi exact (as in :func:`_state_at`), R and F replaced by their Taylor polynomials in
+    dlam about the trial state, ``R0 + dR dlam + ddR dlam^2/2 + dddR dlam^3/6`` (held at
+    1, and at its value where its slope vanishes) and ``F0 + dF dlam + ddF dlam^2/2``:
+    no transcendental function of the law is evaluated.
+    """
+    omq = 1.0 - q
+    gamma = Aref * Aref * q / omq
+    d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
+    t1 = fh1t / d1
+    t2 = fh2t / d2
+    W = _norm(t1, t2)
+    dlam = gamma * W / alpha_t
+    w = _norm(fh1 / A1, fh2 / A2)
+    phi, phi_w, _ = potential(surface, tear_k, w, fn)
+    R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR / 6.0))
+    Rp = dR + dlam * (ddR + 0.5 * dddR * dlam)
+    if R > 1.0 or Rp < 0.0:  # beyond the reach of the series: R saturates
+        R = min(R, 1.0)
+        Rp = 0.0
+    F = F0 + dlam * (dF + 0.5 * ddF * dlam)
+    dF = dF + ddF * dlam
+    dphi = 0.0  # dPhi/dgamma
+    if w > 0.0:
+        dphi = -phi_w * (fh1 * fh1 / (A1 * A1 * d1) + fh2 * fh2 / (A2 * A2 * d2)) / w
+    dW = -(t1 * t1 / d1 + t2 * t2 / d2) / W if W > 0.0 else 0.0
+    ddlam = (W + gamma * dW) / alpha_t
+    dm = dphi - (Rp * F + R * dF) * ddlam
+    return phi - R * F, dm * Aref * Aref / (omq * omq)
+
+
+@njit(cache=True)
 def _start(
     r0: float, r1: float, phi_tr: float, phi_tr_w: float, w_tr: float, fh1t: float,
-    fh2t: float, A1: float, A2: float, Aref: float, alpha_t: float, R_start: float,
-    y0: float, s0: float, u: float, ulaw: int, F_rec: float, Fk: float, kappa: float,
-    m: float,
+    fh2t: float, fn: float, A1: float, A2: float, Aref: float, alpha_t: float,
+    surface: int, tear_k: float, R_start: float, y0: float, s0: float, u: float,
+    ulaw: int, F_rec: float, Fk: float, kappa: float, m: float,
 ) -> float:  # fmt: skip
     """Starting value of q for the local solve, from the trial state alone (no residual).
 
@@ -266,15 +315,16 @@ def _start(
     with ``W0 = |fhat^tr_i / A_i^2|``, R rising at ``dR/d(dlam) = u cot(pi R_start/2)``
     (or ``-u ln R_start``) and F at ``-kappa phi(F)``. R is concave in dlam, so this
     tangent model stays below the root; so does the model with R = 1 (R never exceeds 1),
-    and the larger of the two is taken. For the isotropic cone the first is exact but for
-    the curvature of R and F. Falls back to regula falsi between r(0) and r(1) (when r(1)
-    has been evaluated), then to the return with R F frozen. Returns -1 when ``r0`` is not
-    finite (a trial state outside the domain of g).
+    and the larger of the two is taken. A few Newton iterations on the model residual of
+    :func:`_model_at` (Phi exact, R and F Taylor polynomials) then leave only the error of
+    the truncated Taylor series of R and F. Falls back to regula falsi between r(0) and
+    r(1) (when r(1) has been evaluated), then to the return with R F frozen. Returns -1
+    when ``r0`` is not finite (a trial state outside the domain of g).
     """
     if not math.isfinite(r0):
         return -1.0
     A2ref = Aref * Aref
-    W0 = math.hypot(fh1t / (A1 * A1), fh2t / (A2 * A2))
+    W0 = _norm(fh1t / (A1 * A1), fh2t / (A2 * A2))
     dphi = phi_tr_w * W0 * W0 / w_tr * A2ref  # -dPhi/dq at q = 0
     ddlam = W0 * A2ref / alpha_t  # d(dlam)/dq at q = 0
     if ulaw == U_COT:
@@ -291,6 +341,31 @@ def _start(
     if r_sat > 0.0 and den_sat > 0.0 and math.isfinite(den_sat):
         q = max(q, r_sat / den_sat)
     if 0.0 < q < 1.0:
+        if not math.isfinite(dR):
+            return q
+        # refine on the model residual: Phi exact (its nonlinearity in q comes from the
+        # orthotropy and the closed surfaces' g), R to second order, F to first
+        if ulaw == U_COT:  # dR = u cot(pi R/2)
+            ddR = -0.5 * math.pi * (u * u + dR * dR) * dR / u
+            dddR = -0.5 * math.pi * ddR * (3.0 * dR * dR + u * u) / u
+        else:  # dR = -u ln R
+            ddR = -u * dR / R_start
+            dddR = -u * (ddR * R_start - dR * dR) / (R_start * R_start)
+        ddF = -kappa * softening_rate(F_rec, Fk, m)[1] * dF  # dF = -kappa phi(F)
+        for _ in range(MODEL_ITERATIONS):
+            mq, dmq = _model_at(q, fh1t, fh2t, fn, A1, A2, Aref, alpha_t, surface, tear_k,
+                                R_start, dR, ddR, dddR, F_rec, dF, ddF)  # fmt: skip
+            if not (dmq < 0.0 and math.isfinite(mq) and math.isfinite(dmq)):
+                break
+            q_new = q - mq / dmq
+            if q_new <= 0.0:
+                q_new = 0.5 * q
+            elif q_new >= 1.0:
+                q_new = 0.5 * (1.0 + q)
+            done = abs(q_new - q) <= 1e-6 * min(q_new, 1.0 - q_new)
+            q = q_new
+            if done:
+                break
         return q
     if math.isfinite(r1):
         q = r0 / (r0 - r1)
@@ -302,12 +377,15 @@ def _start(
 
 @njit(cache=True)
 def _point(
-    i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+    i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
     out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
     out_status, out_iter,
 ):  # fmt: skip
     """Advance point ``i`` (parameter row ``row``, time increment ``dt``) by one increment.
+
+    ``(ca, sa)`` are the cosine and sine of the row's orthotropy angle (evaluated once by
+    the loops when all points share one row).
 
     The readable per-point definition of the update (steps 0-7 of the module docstring);
     :func:`step_points` and :func:`step_points_parallel` only loop over it. The tangent
@@ -325,8 +403,6 @@ def _point(
     A1 = P[row, P_A1]
     A2 = P[row, P_A2]
     Aref = max(A1, A2)
-    ca = math.cos(P[row, P_ANGLE])
-    sa = math.sin(P[row, P_ANGLE])
     # 0. into principal axes (contact frame -> (e*_1, e*_2))
     b1 = ca * P[row, P_BETA1] + sa * P[row, P_BETA2]
     b2 = -sa * P[row, P_BETA1] + ca * P[row, P_BETA2]
@@ -406,7 +482,7 @@ def _point(
     e1 = fh1t - h1
     e2 = fh2t - h2
     dfn = fn_tr - fn0
-    w_tr = math.hypot(fh1t / A1, fh2t / A2)
+    w_tr = _norm(fh1t / A1, fh2t / A2)
     phi_tr, phi_tr_w, phi_tr_fn = potential(surface, tear_k, w_tr, fn_tr)
 
     # 3. starting ratio: the smallest Phi/F along the trial path (partial unloading,
@@ -417,7 +493,7 @@ def _point(
     gR1 = 0.0  # gradient of R_start with respect to (du1, du2, dun), principal axes
     gR2 = 0.0
     gRn = 0.0
-    w0 = math.hypot(h1 / A1, h2 / A2)
+    w0 = _norm(h1 / A1, h2 / A2)
     phi0, phi0_w, phi0_fn = potential(surface, tear_k, w0, fn0)
     dF0 = _path_size_slope(F_old[i], 0.0, Fs, xi, n, dt, integ, rform)
     r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, e1, e2, dfn, A1, A2,
@@ -521,7 +597,7 @@ def _point(
                 out_status[i] = FAILED
                 return
             dlam = end[4]
-            norm = math.hypot(fh1t, fh2t)
+            norm = _norm(fh1t, fh2t)
             tb1 = fh1t / norm
             tb2 = fh2t / norm
             _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
@@ -533,8 +609,8 @@ def _point(
                 out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
                 out_tangent[i, 2, 2] = alpha_n
             return
-    q0 = _start(r0, r1, phi_tr, phi_tr_w, w_tr, fh1t, fh2t, A1, A2, Aref, alpha_t, R_start,
-                y0, s0, u, ulaw, F_rec, Fk, kappa, m)  # fmt: skip
+    q0 = _start(r0, r1, phi_tr, phi_tr_w, w_tr, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t,
+                surface, tear_k, R_start, y0, s0, u, ulaw, F_rec, Fk, kappa, m)  # fmt: skip
     if q0 < 0.0:  # trial outside the domain of g: locate the root's half first
         mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
                         tear_k, R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
@@ -678,6 +754,12 @@ def _point(
 
 
 @njit(cache=True)
+def _axes(P, row):  # fmt: skip
+    """Cosine and sine of the orthotropy angle of parameter row ``row``."""
+    return math.cos(P[row, P_ANGLE]), math.sin(P[row, P_ANGLE])
+
+
+@njit(cache=True)
 def step_points(
     traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
@@ -693,10 +775,12 @@ def step_points(
     """
     npts = traction.shape[0]
     shared_p = P.shape[0] == 1
+    ca0, sa0 = _axes(P, 0) if shared_p else (1.0, 0.0)
     for i in range(npts):
         row = 0 if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
-        _point(i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+        ca, sa = (ca0, sa0) if shared_p else _axes(P, row)
+        _point(i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
                surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
                out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
                out_status, out_iter)  # fmt: skip
@@ -717,11 +801,13 @@ def step_points_parallel(
     """
     npts = traction.shape[0]
     shared_p = P.shape[0] == 1
+    ca0, sa0 = _axes(P, 0) if shared_p else (1.0, 0.0)
     for k in prange(npts):
         i = np.int64(k)
         row = np.int64(0) if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
-        _point(i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+        ca, sa = (ca0, sa0) if shared_p else _axes(P, row)
+        _point(i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
                surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
                out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
                out_status, out_iter)  # fmt: skip
