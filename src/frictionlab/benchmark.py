@@ -1,4 +1,4 @@
-"""Speed figures of issue 14, all measured in one process (``frictionlab bench``).
+"""Speed figures of the law and the lattice, measured in one process (``frictionlab bench``).
 
 Every timing is taken after a warm-up call, as the median of ``repeats`` (>= 5) runs,
 with its baseline measured in the same process just before it (the machine may be
@@ -310,7 +310,7 @@ def run(
     machine["numba_threading_layer"] = numba.threading_layer()
     lattice = _lattice(lattice_size, repeats, log)
     payload = {
-        "benchmark": "issue 14: speed and scale",
+        "benchmark": "speed and scale",
         "frictionlab": __version__,
         "method": f"one process, warm-up then median of {repeats} runs; baselines measured "
         "in the same process",

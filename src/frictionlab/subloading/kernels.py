@@ -1,7 +1,7 @@
-"""Compiled (numba) implicit return map of the subloading-friction law, spec §4.
+"""Compiled (numba) implicit return map of the subloading-friction law.
 
 One call of :func:`step_points` advances N independent contact points by one
-increment. Per point (spec §4.2):
+increment. Per point:
 
 0. rotate the contact-frame components into the principal axes of orthotropy;
 1. elastic predictor ``f_t^tr = f_t + alpha_t du_t``, ``f_n^tr = f_n + alpha_n (du_n - gap)``;
@@ -9,12 +9,14 @@ increment. Per point (spec §4.2):
 2. recovery-only size ``F^tr = F(dlam = 0)``;
 3. partial-unloading correction of the starting ratio when the straight trial path
    passes its point of smallest |fhat| inside the step (T. Chang's correction);
-4. loading test on the trial state (never on the sign of lambda, pitfall 5);
+4. loading test on the trial state (never on the sign of the plastic multiplier, which
+   a converged corrector cannot tell apart from rounding);
 5. plastic corrector with ONE scalar unknown ``q`` in [0, 1): the backward-Euler flow
    ``fhat_i = fhat_i^tr A_i^2/(A_i^2 + gamma)``, ``gamma = A_ref^2 q/(1 - q)``, gives
    ``dlam = gamma W(gamma)/alpha_t``; for isotropic surfaces this is the radial return
    with ``q = alpha_t dlam / |fhat^tr|`` — the unknown is the plastic increment itself,
-   never R (pitfall 1). Safeguarded Newton inside a sign bracket.
+   never R (which is flat in dlam near R = 1). Safeguarded Newton inside a sign bracket,
+   from a start solved on a cheap model of the residual (see :func:`_start`).
 6. update; 7. algorithmic consistent tangent by implicit differentiation of the scalar
    residual (exact for isotropic, rotated and orthotropic surfaces).
 
@@ -54,7 +56,8 @@ RTOL_RESIDUAL = 1e-13
 #: Accepted residual when the bracket has collapsed to round-off (documented invariant).
 RTOL_ACCEPT = 1e-10
 #: A trial normal traction at or below this fraction of the terms it is computed from
-#: (|f_n| and alpha_n |du_n - gap|) is zero to rounding: the contact opens (pitfall 9).
+#: (|f_n| and alpha_n |du_n - gap|) is zero to rounding: the contact opens (the surface
+#: is singular at f_n = 0, so a rounding residue must not be treated as contact).
 SEPARATION_RTOL = 1e-12
 #: Subintervals of the trial path searched for the smallest ratio Phi/F (step 3).
 PATH_SAMPLES = 8
@@ -348,9 +351,9 @@ def _start(
         if ulaw == U_COT:  # dR = u cot(pi R/2)
             ddR = -0.5 * math.pi * (u * u + dR * dR) * dR / u
             dddR = -0.5 * math.pi * ddR * (3.0 * dR * dR + u * u) / u
-        else:  # dR = -u ln R
-            ddR = -u * dR / R_start
-            dddR = -u * (ddR * R_start - dR * dR) / (R_start * R_start)
+        else:  # implicit Euler R - R0 + u dlam ln R = 0, differentiated at dlam = 0
+            ddR = -2.0 * u * dR / R_start
+            dddR = 3.0 * u * (dR * dR / R_start - ddR) / R_start
         ddF = -kappa * softening_rate(F_rec, Fk, m)[1] * dF  # dF = -kappa phi(F)
         for _ in range(MODEL_ITERATIONS):
             mq, dmq = _model_at(q, fh1t, fh2t, fn, A1, A2, Aref, alpha_t, surface, tear_k,
@@ -427,7 +430,7 @@ def _point(
     # 2. recovery-only size
     F_rec = recovered_size(F_old[i], Fs, Fk, xi, m, n, dt, integ, rform)
     # 1. elastic predictor and separation: a trial normal traction that is zero to
-    #    the rounding of its own computation opens the contact (pitfall 9)
+    #    the rounding of its own computation opens the contact
     closing_in = alpha_n * (dun - gap_old[i])
     fn_tr = fn + closing_in
     if fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in)):
@@ -545,7 +548,8 @@ def _point(
     if w_tr == 0.0 or r0 <= RTOL_RESIDUAL * F_rec:
         R_new = phi_tr / F_rec
         if surface != COULOMB and R_new > 1.0 + RTOL_ACCEPT:
-            # normal traction pushed the state outside a closed surface (pitfall 3)
+            # normal traction pushed the state outside a closed surface: the rate form has
+            # no tangential mechanism that could bring it back
             _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
                       out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
             out_status[i] = FAILED
