@@ -1,4 +1,4 @@
-"""numba's cache goes to a per-user directory keyed on the sources (issue 14, item 4)."""
+"""numba's cache goes to a per-user directory keyed on the sources."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Directions on parallel threads give the serial loop's polar exactly (issue 14, item 3)."""
+"""Directions on parallel threads give the serial loop's polar exactly."""
 
 from __future__ import annotations
 
