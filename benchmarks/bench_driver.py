@@ -1,4 +1,4 @@
-"""Benchmark of the loading-programme driver (issue 3), ratios measured in one process.
+"""Benchmark of the loading-programme driver, ratios measured in one process.
 
 1. driver overhead: ``simulate`` on a 2000-step slide against a bare loop of
    ``subloading.update`` calls doing the same increments (ratio of wall times);

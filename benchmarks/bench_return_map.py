@@ -1,10 +1,10 @@
-"""Benchmark of the vectorised implicit return map (issue 2).
+"""Benchmark of the vectorised implicit return map.
 
 Reports the cost per contact point and per increment of ``frictionlab.subloading.update`` for
 several surfaces, and measures, in the same process, the speed-up of the compiled kernel over the
 same per-point loop run by the Python interpreter (``frictionlab.subloading.interpreted``: the
 kernel's source with every function interpreted) on a smaller batch. ``frictionlab bench`` (or
-``benchmarks/bench_speed.py``) reports the issue-14 figures against a plain Coulomb return.
+``benchmarks/bench_speed.py``) reports the speed figures against a plain Coulomb return.
 
 Run: ``python benchmarks/bench_return_map.py [--points N]``; writes
 ``benchmarks/results/return_map.json``.

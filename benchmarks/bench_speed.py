@@ -1,4 +1,4 @@
-"""The issue-14 speed figures (same as ``frictionlab bench``); writes benchmarks/results/speed.json.
+"""The speed figures of ``frictionlab bench``; writes benchmarks/results/speed.json.
 
 Run: ``python benchmarks/bench_speed.py [--points N] [--lattice-size N]``.
 """

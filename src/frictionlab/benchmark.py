@@ -1,4 +1,4 @@
-"""Speed figures of issue 14, all measured in one process (``frictionlab bench``).
+"""Speed figures of the law and the lattice, measured in one process (``frictionlab bench``).
 
 Every timing is taken after a warm-up call, as the median of ``repeats`` (>= 5) runs,
 with its baseline measured in the same process just before it (the machine may be
@@ -13,9 +13,11 @@ Figures (per contact point per increment, N points, all sliding unless stated):
   recovery, rotation, orthotropy), with fresh outputs and the tangent (the default),
   with preallocated outputs and no tangent, and the serial kernel (the parallel gain);
   modified Cam-clay for a closed surface;
-* ``python_loop``: the straightforward per-point Python loop of the full law (the
-  kernel's source run by the interpreter, :mod:`frictionlab.subloading.interpreted`) on
-  a few points — the baseline of the ``>= 1000x`` target;
+* two per-point Python loops of the full law on a few points, the baselines of the
+  ``>= 1000x`` target: ``python_loop``, the kernel's own source run by the interpreter
+  (:mod:`frictionlab.subloading.interpreted`, lean: plain floats and ``math``), and
+  ``update_loop``, what a user would write, ``for i in range(N): update(params,
+  state_i, du_i, dt)`` with the one-point states and increments prepared beforehand;
 * ``lattice_partial``: a 1024^2 self-affine map in partial contact against a flat
   counter-face, 3 directions, 64 time samples: springs per second (target >= 3e8);
 * ``first_call``: import + first call of the law and of the lattice in a child process,
@@ -154,8 +156,20 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
                   for a in args)  # fmt: skip
     python = _median(lambda: interpreted.step_points(*small), max(repeats, 5))
     python_per_point = python["median_s"] / m
-    log(f"per-point Python loop        {python_per_point * 1e6:8.1f} us/point (CPU time "
+    log(f"kernel source interpreted    {python_per_point * 1e6:8.1f} us/point (CPU time "
         f"{python['cpu_median_s'] / m * 1e6:.1f})")  # fmt: skip
+
+    # what a user would write: one update() call per point, states prepared beforehand
+    states = [state.take([i]) for i in range(m)]
+    slips = [du[i : i + 1] for i in range(m)]
+
+    def user_loop() -> None:
+        for i in range(m):
+            update(full, states[i], slips[i], 0.01)
+
+    loop = _median(user_loop, max(repeats, 5))
+    loop_per_point = loop["median_s"] / m
+    log(f"per-point update() loop      {loop_per_point * 1e6:8.1f} us/point")
 
     mcc = SubloadingParams(surface="modified_cam_clay", F_s=1.0, F_k=0.6, M=0.5, u=100.0,
                            kappa=1.0, xi=1e-3)  # fmt: skip
@@ -180,6 +194,8 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         "modified_cam_clay_update_us_per_point": per_point(closed),
         "python_loop_points": m,
         "python_loop_us_per_point": python_per_point * 1e6,
+        "update_loop_us_per_point": loop_per_point * 1e6,
+        "speedup_over_update_loop": loop_per_point * 1e6 / per_point(default),
         "law_over_coulomb": per_point(default) / per_point(coulomb),
         "law_lean_over_coulomb": per_point(lean) / per_point(coulomb),
         "parallel_gain": per_point(serial) / per_point(parallel),
@@ -196,6 +212,7 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
             "serial": serial,
             "parallel": parallel,
             "python_loop": python,
+            "update_loop": loop,
             "modified_cam_clay": closed,
         },
     }
@@ -315,7 +332,7 @@ def run(
     machine["numba_threading_layer"] = numba.threading_layer()
     lattice = _lattice(lattice_size, repeats, log)
     payload = {
-        "benchmark": "issue 14: speed and scale",
+        "benchmark": "speed and scale",
         "frictionlab": __version__,
         "method": f"one process, warm-up then median of {repeats} runs; baselines measured "
         "in the same process",

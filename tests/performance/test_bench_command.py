@@ -19,7 +19,12 @@ def test_bench_writes_every_figure(tmp_path: Path) -> None:
     assert data["machine"]["cpu_count"] >= 1
     law = data["law"]
     assert law["fraction_sliding"] == 1.0 and law["timings"]["update"]["runs"] >= 5
-    for key in ("law_over_coulomb", "speedup_over_python", "parallel_gain"):
+    for key in (
+        "law_over_coulomb",
+        "speedup_over_python",
+        "speedup_over_update_loop",
+        "parallel_gain",
+    ):
         assert np.isfinite(law[key]) and law[key] > 0.0
     assert data["lattice_partial"]["springs_per_second"] > 0.0
     assert main([*args, "--repeats", "3"]) == 2  # fewer than 5 runs is refused

@@ -1,4 +1,4 @@
-"""Helpers shared by the subloading tests: parameter sets of spec §3.3 and a stepper."""
+"""Helpers shared by the subloading tests: two reference parameter sets and a stepper."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ V = 0.1  # driving velocity of the reference scenarios [m/s]
 
 
 def set_a(**changes: object) -> SubloadingParams:
-    """Parameter set A (spec §3.3): isotropic Coulomb cone."""
+    """Parameter set A: isotropic Coulomb cone."""
     base: dict[str, object] = dict(
         surface="coulomb", alpha_n=1000.0, alpha_t=1000.0, mu_s=0.5, mu_k=0.3,
         u=100.0, kappa=1.0, xi=1e-3,
@@ -22,7 +22,7 @@ def set_a(**changes: object) -> SubloadingParams:
 
 
 def set_b(surface: str = "modified_cam_clay", **changes: object) -> SubloadingParams:
-    """Parameter set B (spec §3.3): closed surface, F_s = 1, F_k = 0.6, M = 0.5."""
+    """Parameter set B: closed surface, F_s = 1, F_k = 0.6, M = 0.5."""
     base: dict[str, object] = dict(
         surface=surface, alpha_n=1000.0, alpha_t=1000.0, F_s=1.0, F_k=0.6, M=0.5,
         u=100.0, kappa=1.0, xi=1e-3,

@@ -1,4 +1,4 @@
-"""The compiled per-point helpers equal direct NumPy evaluations (issue 14, item 1)."""
+"""The compiled per-point helpers equal direct NumPy evaluations."""
 
 from __future__ import annotations
 

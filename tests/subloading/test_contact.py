@@ -1,4 +1,4 @@
-"""3-D contact: normal approach, separation and re-closing, objectivity (spec §4.2, §5 item 18)."""
+"""3-D contact: normal approach, separation and re-closing, objectivity."""
 
 from __future__ import annotations
 
@@ -33,7 +33,7 @@ def test_normal_approach_is_elastic_and_exact() -> None:
     state = slide(params, fresh(params), 0.2, 100).state
     for dun in (1e-4, -2e-4, 3e-5):
         step = update(params, state, np.array([[1e-4, 0.0, dun]]), 0.01)
-        assert step.traction[0, 2] == state.traction[0, 2] + 2500.0 * dun  # exact (test 13)
+        assert step.traction[0, 2] == state.traction[0, 2] + 2500.0 * dun  # exact (linear)
         assert step.plastic_slip_increment[0, 2] == 0.0
         state = step.state
 

@@ -1,11 +1,11 @@
 """The update is a continuous function of (slip increment, time increment, state).
 
-Issue: the partial-unloading correction of the starting ratio (spec §4.2 step 3) was
-applied only when the minimum of the norm along the trial path lay strictly inside the
-step, and divided by the end-of-step size: tractions jumped by 3 % when the slip direction
-crossed 90 degrees to the traction with dt > 0, and rotating a closed-surface problem
-in-plane changed the answer by 1e-3 to 6e-2. The references here are exact symmetries
-(in-plane rotation) and the continuity itself.
+The partial-unloading correction of the starting ratio (the smallest Phi/F along the
+trial path) was once applied only when the minimum of the norm along the trial path lay
+strictly inside the step, and divided by the end-of-step size: tractions jumped by 3 %
+when the slip direction crossed 90 degrees to the traction with dt > 0, and rotating a
+closed-surface problem in-plane changed the answer by 1e-3 to 6e-2. The references here
+are exact symmetries (in-plane rotation) and the continuity itself.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """The implicit update against fine-step explicit integration of the rate equations.
 
-Spec §5 item 17: the explicit scheme converges to the implicit map at first order.
+The explicit scheme converges to the implicit map at first order.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""U(R), Eq (29), Eq (30) and the F integrators against ODE integration (spec §5 items 1–3)."""
+"""U(R), Eq (29), Eq (30) and the F integrators against ODE integration."""
 
 from __future__ import annotations
 
@@ -61,7 +61,7 @@ def test_eq29_closed_form_equals_ode(R0: float, dup: float) -> None:
 
 
 def test_eq29_accuracy_near_one() -> None:
-    """R from a start within 1e-12 of 1 stays monotone and exact (pitfall 1)."""
+    """R from a start within 1e-12 of 1 stays monotone and exact (no arccos near 1)."""
     u = 100.0
     R0 = 1.0 - 1e-12
     for dlam in (1e-12, 1e-9, 1e-3):

@@ -2,7 +2,7 @@
 
 Issue: exponents m, n != 1 and the ``F_s/F - 1`` recovery form were integrated by a
 first-order split, so a few large steps did not give the answer of many small ones
-(spec §4.3, §6 Q1/Q10). References here are independent: the m = n = 1 closed form, an
+References here are independent: the m = n = 1 closed form, an
 accurate ODE solution (SciPy DOP853), and the driver with many small steps.
 """
 

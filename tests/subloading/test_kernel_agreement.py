@@ -1,4 +1,4 @@
-"""The compiled kernels agree with the interpreted per-point definition (issue 14).
+"""The compiled kernels agree with the interpreted per-point definition.
 
 ``frictionlab.subloading.interpreted`` runs the very source of the kernels by the Python
 interpreter (numba's decorators replaced by the identity). The compiled serial loop, the

@@ -1,4 +1,4 @@
-"""Property-based tests: random parameters and random increment sequences (spec §5 item 13)."""
+"""Property-based tests: random parameters and random increment sequences."""
 
 from __future__ import annotations
 
@@ -96,7 +96,7 @@ def test_invariants_hold_after_every_step(setup, program) -> None:  # type: igno
         assert np.all(step.plastic_multiplier >= 0.0)
         assert np.all(step.plastic_slip_increment[:, 2] == 0.0)
         for i in range(2):
-            if not ok[i]:  # only when the normal traction leaves a closed surface (pitfall 3)
+            if not ok[i]:  # only when the normal traction leaves a closed surface
                 np.testing.assert_array_equal(new.traction[i], old.traction[i])
                 trial_fn = old.traction[i, 2] + float(params.alpha_n) * (du[i, 2] - old.gap[i])
                 assert not params.is_cone and trial_fn > F_k

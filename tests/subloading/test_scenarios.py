@@ -1,4 +1,4 @@
-"""Reference scenarios of spec §3.3 with their analytic expectations (spec §5 items 3–12)."""
+"""Reference scenarios with their analytic expectations."""
 
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ MU_S, MU_K, KAPPA, XI, U = 0.5, 0.3, 1.0, 1e-3, 100.0
 
 
 def mu_ss(velocity: float) -> float:
-    """Spec §2.6, typed independently of the library: (kappa V + xi)/(kappa V/mu_k + xi/mu_s)."""
+    """Steady size, typed independently of the library: (kappa V + xi)/(kappa V/mu_k + xi/mu_s)."""
     return (KAPPA * velocity + XI) / (KAPPA * velocity / MU_K + XI / MU_S)
 
 
@@ -33,7 +33,7 @@ def test_a1_monotonic_curve_is_smooth_with_peak_below_mu_s() -> None:
     h = slide(params, fresh(params), distance=1.0, steps=1000)
     ratio = h.traction[:, 0, 0]
     peak = int(np.argmax(ratio))
-    assert 0.3 < ratio[peak] < MU_S  # softening during the transition (pitfall 13)
+    assert 0.3 < ratio[peak] < MU_S  # softening during the transition
     assert h.R[-1, 0] == pytest.approx(1.0, abs=1e-12)
     # after the peak: plastic loading in the softening branch, decaying toward mu_ss
     assert np.all(h.status[peak:, 0] == Status.SLIP)
@@ -318,7 +318,7 @@ def test_mirror_symmetry_without_rotation(factory) -> None:  # type: ignore[no-u
 
 # --------------------------------------------------------------------------- loading criterion
 def test_loading_criterion_with_recovery_term() -> None:
-    """Creep below N.C^e v = m^c is elastic; above it is plastic (Eq 47, spec test 15)."""
+    """Creep below N.C^e v = m^c is elastic; above it is plastic (Eq 47)."""
     params = set_a()
     state = slide(params, fresh(params), 2.0, 400).state
     mu = float(state.F[0])
@@ -341,7 +341,7 @@ def test_unloading_after_reversal_has_the_elastic_tangent() -> None:
 
 
 def test_partial_unloading_correction_for_a_reversal_inside_one_step() -> None:
-    """A single step through zero traction reloads smoothly from R_start = 0 (pitfall 6)."""
+    """A single step through zero traction reloads smoothly from R_start = 0."""
     params = set_a(kappa=0.0, xi=0.0)
     state = slide(params, fresh(params), 0.5, 100).state  # at mu_s, R = 1
     reverse = -(2 * MU_S / 1000.0 + 2e-4)  # unload fully, reload 2e-4 the other way
@@ -354,7 +354,7 @@ def test_partial_unloading_correction_for_a_reversal_inside_one_step() -> None:
 
 
 def test_initial_ratio_of_a_rotated_closed_surface() -> None:
-    """R0 = f_n g(|beta|/M)/F_s for a virgin closed surface (spec §3.3, set B)."""
+    """R0 = f_n g(|beta|/M)/F_s for a virgin closed surface (set B)."""
     beta, M, fn = 0.1, 0.5, 0.2
     params = set_b("modified_cam_clay", rotation=(0.0, beta))
     state = fresh(params, fn=fn)

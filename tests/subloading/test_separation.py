@@ -1,4 +1,4 @@
-"""Unloading to the edge of separation (spec pitfall 9, §5 item 13).
+"""Unloading to the edge of separation (the surface is singular at f_n = 0).
 
 Issue: an unload that left 0 < f_n(trial) <= 1e-8 with tangential traction made the tear
 and parabola solves fail (ConvergenceError), and there was no tolerance for "no contact".
@@ -15,7 +15,7 @@ from .support import set_a, set_b, slide
 
 
 def _g_and_slope(surface: str, chi: float) -> tuple[float, float]:
-    """g(chi), g'(chi) of spec Eqs 51-54 (defaults), written out here."""
+    """g(chi), g'(chi) of Eqs (51)-(54) (defaults), written out here."""
     if surface == "cam_clay":
         return float(np.exp(chi)), float(np.exp(chi))
     if surface == "modified_cam_clay":

@@ -1,4 +1,4 @@
-"""Closed sliding-yield surfaces, Eqs (48)–(54) and spec §2.10 (test 11, E5 closed forms)."""
+"""Closed sliding-yield surfaces, Eqs (48)–(54), and their friction-coefficient closed forms."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ CLOSED = ("cam_clay", "modified_cam_clay", "tear", "parabola")
 
 @pytest.mark.parametrize("surface", CLOSED)
 def test_g_normalisation_and_top_point(surface: str) -> None:
-    """g(0) = 1 and g(1) = g'(1): the top of the surface lies at the ratio M (spec §2.10)."""
+    """g(0) = 1 and g(1) = g'(1): the top of the surface lies at the ratio M."""
     g0, _ = g_function(surface, np.array([0.0]))
     g1, dg1 = g_function(surface, np.array([1.0]))
     assert g0[0] == pytest.approx(1.0, rel=1e-15)
@@ -40,7 +40,7 @@ def test_outside_domain_is_infinite_not_nan() -> None:
 
 @pytest.mark.parametrize("ratio", [0.05, 0.10, 0.20, 0.30, 0.40])
 def test_friction_coefficient_closed_forms_of_the_table(ratio: float) -> None:
-    """E5: mu(f_n) = M g^-1(F/f_n) against the table of spec §2.10, typed independently."""
+    """mu(f_n) = M g^-1(F/f_n) against closed forms typed independently."""
     M, F = 0.5, 1.0
     fn = ratio * F
     expected = {
@@ -62,7 +62,7 @@ def test_friction_coefficient_domain_checked() -> None:
 
 
 def test_tear_family_option_keeps_the_tear_property() -> None:
-    """(1 - a chi^2)^-k with a = 1/(2k+1): g(0) = 1, g(1) = g'(1) for any k (spec §6 Q2)."""
+    """(1 - a chi^2)^-k with a = 1/(2k+1): g(0) = 1, g(1) = g'(1) for any k."""
     for k in (0.5, 1.0, 2.0, 3.0):
         g1, dg1 = g_function("tear", np.array([1.0]), tear_k=k)
         assert g1[0] == pytest.approx(dg1[0], rel=1e-13)

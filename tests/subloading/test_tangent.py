@@ -1,4 +1,4 @@
-"""Consistent tangent against central finite differences (spec §5 item 16)."""
+"""Consistent tangent against central finite differences."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Bad input is rejected with a ParameterError naming the field (issue 2, validation list)."""
+"""Bad input is rejected with a ParameterError naming the field."""
 
 from __future__ import annotations
 
@@ -140,7 +140,7 @@ def test_update_rejects_bad_increments() -> None:
 
 
 def test_failed_point_is_reported_by_status_and_mask_never_nan() -> None:
-    # Normal loading of a closed surface beyond F makes the point inadmissible (pitfall 3).
+    # Normal loading of a closed surface beyond F makes the point inadmissible.
     params = set_b()
     state = initial_state(params, normal_traction=np.array([0.2, 0.2]))
     du = np.array([[1e-5, 0.0, 0.0], [1e-5, 0.0, 5e-3]])  # second point: f_n -> 5.2 > F

@@ -1,11 +1,11 @@
-"""Evolution of the normal sliding-yield ratio R and of the size F (or mu), spec §2.6–2.7, §4.3.
+"""Evolution of the normal sliding-yield ratio R and of the size F (or mu), Eqs (25)-(30).
 
 Compiled scalar kernels used by the return map:
 
 * :func:`ratio_after` — R after a plastic increment ``dlam`` (= Delta u^p): Eq (29) in
   closed form for U = u cot(pi R/2) (Eq 28), implicit Euler for U = -u ln R (Eq 30);
 * :func:`size_after` — F after a plastic increment ``dlam`` and a time increment ``dt``
-  (Eq 25 / 69), with the integrators of spec §4.3.
+  (Eq 25 / 69), exact for constant rates over the step or by backward Euler.
 
 Public NumPy closed forms (for users, calibration and tests) follow below them.
 """
@@ -64,9 +64,10 @@ def ratio_from(
     ``(y0, s0) = ratio_start(law, R0)``. Same numbers as :func:`ratio_after`.
     """
     if law == U_COT:
-        a = _HALF_PI * u * dlam
-        y = y0 * math.exp(-a)
-        s2 = s0 * s0 - y0 * y0 * math.expm1(-2.0 * a)
+        # one expm1: e^-a = 1 + em and expm1(-2a) = em (2 + em), both to a few ulp
+        em = math.expm1(-_HALF_PI * u * dlam)
+        y = y0 * (1.0 + em)
+        s2 = s0 * s0 - y0 * y0 * (em * (2.0 + em))
         s = math.sqrt(s2) if s2 > 0.0 else 0.0
         R = math.atan2(s, y) / _HALF_PI
         slope = u * y / s if s > 0.0 else math.inf
@@ -97,10 +98,10 @@ def ratio_sensitivity(law: int, u: float, y0: float, s0: float, dlam: float, R: 
     the local solve has converged.
     """
     if law == U_COT:
-        a = _HALF_PI * u * dlam
-        s2 = s0 * s0 - y0 * y0 * math.expm1(-2.0 * a)
+        em = math.expm1(-_HALF_PI * u * dlam)  # as in ratio_from
+        s2 = s0 * s0 - y0 * y0 * (em * (2.0 + em))
         s = math.sqrt(s2) if s2 > 0.0 else 0.0
-        return math.exp(-a) * s0 / s if s > 0.0 else 1.0
+        return (1.0 + em) * s0 / s if s > 0.0 else 1.0
     if dlam <= 0.0:
         return 1.0
     return 1.0 / (1.0 + u * dlam / R)
@@ -112,9 +113,10 @@ def ratio_after(law: int, u: float, R0: float, dlam: float) -> tuple[float, floa
 
     Cot law, Eq (29): ``cos(pi R/2) = cos(pi R0/2) exp(-pi u dlam/2)``, evaluated as
     ``R = (2/pi) atan2(sqrt(s0^2 - y0^2 expm1(-2a)), y0 e^-a)`` with ``a = pi u dlam/2``,
-    accurate at both R -> 0 and R -> 1 (pitfalls 1, 2). ``dR/d(dlam) = u cot(pi R/2)``.
+    accurate at both R -> 0 and R -> 1 (no arccos of a number near 1, no cancellation in
+    1 - cos^2). ``dR/d(dlam) = u cot(pi R/2)``.
 
-    Ln law, Eq (30), implicit Euler (spec §4.3): ``R - R0 + u dlam ln R = 0``, solved by
+    Ln law, Eq (30), implicit Euler: ``R - R0 + u dlam ln R = 0``, solved by
     Newton in ``ln R`` (convex and increasing, so Newton from the right is monotone).
 
     The composition of :func:`ratio_start`, :func:`ratio_from` and the sensitivity; the
@@ -159,9 +161,13 @@ def _softening_rate(F: float, Fk: float, m: float) -> tuple[float, float]:
     return x**m, m * x ** (m - 1.0) / Fk
 
 
+#: Public name of the softening function for the kernels (phi, phi').
+softening_rate = _softening_rate
+
+
 @njit(cache=True)
 def _recover_exactly(F0: float, Fs: float, xi: float, n: float, dt: float) -> float:
-    """F after pure recovery over dt, closed forms of spec §2.6 (form 1 - F/F_s)."""
+    """F after pure recovery over dt, closed forms of Eq (25) with kappa = 0 (form 1 - F/F_s)."""
     if xi == 0.0 or dt == 0.0:
         return F0
     x0 = max(1.0 - F0 / Fs, 0.0)
@@ -415,7 +421,7 @@ def _attractor_sensitivity(F_inf: float, Fs: float, Fk: float, a: float, b: floa
 def constant_rate_size(
     F0: float, Fs: float, Fk: float, a: float, b: float, m: float, n: float, form: int
 ) -> tuple[float, float]:
-    """Exact F after one step of constant rates, and dF/da (spec §4.3, §6 Q1/Q10).
+    """Exact F after one step of constant rates, and dF/da.
 
     Over the step, with pseudo-time tau in [0, 1], ``dF/dtau = G(F) = b psi(F) - a phi(F)``
     where ``a = kappa dlam``, ``b = xi dt``, ``phi = (F/F_k - 1)^m`` and ``psi`` the
@@ -502,19 +508,19 @@ def size_after(
 ) -> tuple[float, float]:  # fmt: skip
     """F (or mu) and dF/d(dlam) after plastic sliding ``dlam`` and time ``dt``, Eq (25)/(69).
 
-    ``integrator == EXPONENTIAL`` (default, spec §4.3, §6 Q10): exact for constant rates
+    ``integrator == EXPONENTIAL`` (default): exact for constant rates
     over the step (plastic rate dlam/dt and time rate both constant), for every option:
 
     * m = n = 1 and the default recovery form: closed form,
       ``a = kappa dlam/F_k + xi dt/F_s``, ``F_inf = (kappa dlam + xi dt)/a``,
       ``F = F_inf + (F0 - F_inf) e^-a``;
     * pure softening (dt = 0 or xi = 0), or pure recovery in the default form: the closed
-      forms of spec §2.6;
+      forms of Eq (25) with one rate set to zero;
     * otherwise :func:`constant_rate_size`, the monotone scalar equation solved to
       ``RTOL_EXACT`` — so a few large steps give the answer of many small ones.
 
-    ``integrator == BACKWARD_EULER``: the monotone scalar equation of §4.3 (first order).
-    The result always lies in [F_k, F_s] (pitfall 4).
+    ``integrator == BACKWARD_EULER``: backward Euler of Eq (25), a monotone scalar
+    equation (first order). The result always lies in [F_k, F_s].
     """
     if integrator == BACKWARD_EULER:
         return _backward_euler(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, form)
@@ -524,8 +530,9 @@ def size_after(
         if a == 0.0:
             return F0, -kappa * (F0 / Fk - 1.0)
         F_inf = (kappa * dlam + xi * dt) / a
-        e = math.exp(-a)
-        one_minus_e_over_a = -math.expm1(-a) / a
+        em = math.expm1(-a)  # one transcendental: e^-a = 1 + em
+        e = 1.0 + em
+        one_minus_e_over_a = -em / a
         F = F_inf + (F0 - F_inf) * e
         dF = kappa * (1.0 - F_inf / Fk) * one_minus_e_over_a + (F_inf - F0) * e * kappa / Fk
         return min(max(F, Fk), Fs), dF
@@ -549,9 +556,9 @@ def recovered_size(
     F0: float, Fs: float, Fk: float, xi: float, m: float, n: float, dt: float,
     integrator: int, form: int,
 ) -> float:  # fmt: skip
-    """F after the time ``dt`` with no plastic sliding (recovery only, spec §4.2 step 2).
+    """F after the time ``dt`` with no plastic sliding (recovery only).
 
-    Closed forms of spec §2.6 for the default form ``1 - F/F_s`` (any n); the exact
+    Closed forms of Eq (25) with kappa = 0 for the default form ``1 - F/F_s`` (any n); the exact
     constant-rate solution for the ``F_s/F - 1`` form; backward Euler when chosen.
     """
     if integrator == BACKWARD_EULER:
@@ -595,7 +602,7 @@ def plastic_slip_for_ratio(R0: ArrayLike, R: ArrayLike, u: float) -> np.ndarray:
 def ratcheting_slip_per_cycle(R_max: ArrayLike, u: float) -> np.ndarray:
     """Residual slip per traction cycle 0 -> R_max -> 0 with kappa = xi = 0 [m].
 
-    ``(2/(pi u)) ln sec(pi R_max/2)`` (spec A6): the hallmark of the subloading concept.
+    ``(2/(pi u)) ln sec(pi R_max/2)``: the hallmark of the subloading concept.
     """
     return plastic_slip_for_ratio(np.zeros_like(np.asarray(R_max, dtype=np.float64)), R_max, u)
 
@@ -603,7 +610,7 @@ def ratcheting_slip_per_cycle(R_max: ArrayLike, u: float) -> np.ndarray:
 def hold_recovery(
     F0: ArrayLike, F_s: float, xi: float, time: ArrayLike, n: float = 1.0
 ) -> np.ndarray:
-    """F after a hold of ``time`` [s] from F0 (no sliding), closed forms of spec §2.6."""
+    """F after a hold of ``time`` [s] from F0 (no sliding), closed forms of Eq (25)."""
     F0 = np.asarray(F0, dtype=np.float64)
     t = np.asarray(time, dtype=np.float64)
     x0 = np.maximum(1.0 - F0 / F_s, 0.0)
@@ -618,7 +625,7 @@ def hold_recovery(
 
 
 def steady_size(velocity: ArrayLike, kappa: float, xi: float, F_s: float, F_k: float) -> np.ndarray:
-    """Steady-sliding size F_ss(V) = (kappa V + xi)/(kappa V/F_k + xi/F_s), spec §2.6.
+    """Steady-sliding size F_ss(V) = (kappa V + xi)/(kappa V/F_k + xi/F_s), Eq (25) at rest.
 
     For the cone this is mu_ss(V), the steady friction coefficient at sliding speed V.
     """

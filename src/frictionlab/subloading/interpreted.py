@@ -8,7 +8,8 @@ calls — is then plain Python with ``math`` semantics (the equivalent of
 
 * the tests, which check that the compiled kernels (serial and parallel, with and
   without the tangent) agree with this per-point definition on random inputs, and
-* the benchmark, as the "straightforward per-point Python loop of the full law".
+* the benchmark, as one of its two per-point Python baselines (the other is a loop of
+  one-point ``update()`` calls).
 
 Slow by design (tens of microseconds per point); never used by the library itself.
 """

@@ -1,7 +1,7 @@
-"""Compiled (numba) implicit return map of the subloading-friction law, spec §4.
+"""Compiled (numba) implicit return map of the subloading-friction law.
 
 One call of :func:`step_points` advances N independent contact points by one
-increment. Per point (spec §4.2):
+increment. Per point:
 
 0. rotate the contact-frame components into the principal axes of orthotropy;
 1. elastic predictor ``f_t^tr = f_t + alpha_t du_t``, ``f_n^tr = f_n + alpha_n (du_n - gap)``;
@@ -9,12 +9,14 @@ increment. Per point (spec §4.2):
 2. recovery-only size ``F^tr = F(dlam = 0)``;
 3. partial-unloading correction of the starting ratio when the straight trial path
    passes its point of smallest |fhat| inside the step (T. Chang's correction);
-4. loading test on the trial state (never on the sign of lambda, pitfall 5);
+4. loading test on the trial state (never on the sign of the plastic multiplier, which
+   a converged corrector cannot tell apart from rounding);
 5. plastic corrector with ONE scalar unknown ``q`` in [0, 1): the backward-Euler flow
    ``fhat_i = fhat_i^tr A_i^2/(A_i^2 + gamma)``, ``gamma = A_ref^2 q/(1 - q)``, gives
    ``dlam = gamma W(gamma)/alpha_t``; for isotropic surfaces this is the radial return
    with ``q = alpha_t dlam / |fhat^tr|`` — the unknown is the plastic increment itself,
-   never R (pitfall 1). Safeguarded Newton inside a sign bracket.
+   never R (which is flat in dlam near R = 1). Safeguarded Newton inside a sign bracket,
+   from a start solved on a cheap model of the residual (see :func:`_start`).
 6. update; 7. algorithmic consistent tangent by implicit differentiation of the scalar
    residual (exact for isotropic, rotated and orthotropic surfaces).
 
@@ -30,12 +32,14 @@ from numba import njit, prange
 
 from frictionlab.subloading.evolution import (
     BACKWARD_EULER,
+    U_COT,
     ratio_from,
     ratio_sensitivity,
     ratio_start,
     recovered_size,
     recovery_rate,
     size_after,
+    softening_rate,
 )
 from frictionlab.subloading.surfaces import COULOMB, potential
 
@@ -52,11 +56,14 @@ RTOL_RESIDUAL = 1e-13
 #: Accepted residual when the bracket has collapsed to round-off (documented invariant).
 RTOL_ACCEPT = 1e-10
 #: A trial normal traction at or below this fraction of the terms it is computed from
-#: (|f_n| and alpha_n |du_n - gap|) is zero to rounding: the contact opens (pitfall 9).
+#: (|f_n| and alpha_n |du_n - gap|) is zero to rounding: the contact opens (the surface
+#: is singular at f_n = 0, so a rounding residue must not be treated as contact).
 SEPARATION_RTOL = 1e-12
 #: Subintervals of the trial path searched for the smallest ratio Phi/F (step 3).
 PATH_SAMPLES = 8
 MAX_ITERATIONS = 100
+#: Newton iterations on the model residual that give the local solve its start.
+MODEL_ITERATIONS = 4
 
 
 @njit(cache=True)
@@ -70,6 +77,15 @@ def _returned(fh1t: float, fh2t: float, A1: float, A2: float, gamma: float):  # 
     a1 = A1 * A1 / d1
     a2 = A2 * A2 / d2
     return d1, d2, a1, a2, fh1t * a1, fh2t * a2
+
+
+@njit(cache=True)
+def _norm(x: float, y: float) -> float:
+    """sqrt(x^2 + y^2); by ``math.hypot`` only where the squares could over- or underflow."""
+    s = x * x + y * y
+    if 1e-290 < s < 1e290:
+        return math.sqrt(s)
+    return math.hypot(x, y)
 
 
 @njit(cache=True)
@@ -89,7 +105,7 @@ def _state_at(
     Entry 14 of the tuple (dR/dR0) is left 0: the caller evaluates it after convergence.
     """
     if omq <= 0.0:  # limit gamma -> infinity: fhat -> 0, dlam -> |fhat^tr|/alpha_t
-        dlam = math.hypot(fh1t, fh2t) / alpha_t
+        dlam = _norm(fh1t, fh2t) / alpha_t
         R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
         F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
         phi = 0.0 if surface == COULOMB else fn * 1.0
@@ -99,9 +115,9 @@ def _state_at(
     d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
     t1 = fh1t / d1  # = fh1 / A1^2
     t2 = fh2t / d2
-    W = math.hypot(t1, t2)
+    W = _norm(t1, t2)
     dlam = gamma * W / alpha_t
-    w = math.hypot(fh1 / A1, fh2 / A2)
+    w = _norm(fh1 / A1, fh2 / A2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fn)
     R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
     F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
@@ -142,7 +158,7 @@ def _path_ratio(
     q1 = h1 + s * e1
     q2 = h2 + s * e2
     fns = fn0 + s * dfn
-    w = math.hypot(q1 / A1, q2 / A2)
+    w = _norm(q1 / A1, q2 / A2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fns)
     F = recovered_size(F_old, Fs, Fk, xi, m, n, s * dt, integ, rform)
     dF = _path_size_slope(F, s, Fs, xi, n, dt, integ, rform)
@@ -171,7 +187,7 @@ def _ratio_slope(phi: float, phi_w: float, phi_fn: float, w: float, q1: float, q
     if w > 0.0:
         dw = ((q1 / A1) * (e1 / A1) + (q2 / A2) * (e2 / A2)) / w
     else:
-        dw = math.hypot(e1 / A1, e2 / A2)
+        dw = _norm(e1 / A1, e2 / A2)
     rho = phi / F
     return rho, (phi_w * dw + phi_fn * dfn) / F - rho * dF / F
 
@@ -251,13 +267,128 @@ def _path_minimum(
 
 
 @njit(cache=True)
+def _model_at(
+    q: float, fh1t: float, fh2t: float, fn: float, A1: float, A2: float, Aref: float,
+    alpha_t: float, surface: int, tear_k: float, R0: float, dR: float, ddR: float,
+    dddR: float, F0: float, dF: float, ddF: float,
+) -> tuple[float, float]:  # fmt: skip
+    """Model residual m(q) and dm/dq for the start of the local solve.
+
+    Phi exact (as in :func:`_state_at`), R and F replaced by their Taylor polynomials in
+    dlam about the trial state, ``R0 + dR dlam + ddR dlam^2/2 + dddR dlam^3/6`` (held at
+    1, and at its value where its slope vanishes) and ``F0 + dF dlam + ddF dlam^2/2``:
+    no transcendental function of the law is evaluated.
+    """
+    omq = 1.0 - q
+    gamma = Aref * Aref * q / omq
+    d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
+    t1 = fh1t / d1
+    t2 = fh2t / d2
+    W = _norm(t1, t2)
+    dlam = gamma * W / alpha_t
+    w = _norm(fh1 / A1, fh2 / A2)
+    phi, phi_w, _ = potential(surface, tear_k, w, fn)
+    R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR / 6.0))
+    Rp = dR + dlam * (ddR + 0.5 * dddR * dlam)
+    if R > 1.0 or Rp < 0.0:  # beyond the reach of the series: R saturates
+        R = min(R, 1.0)
+        Rp = 0.0
+    F = F0 + dlam * (dF + 0.5 * ddF * dlam)
+    dF = dF + ddF * dlam
+    dphi = 0.0  # dPhi/dgamma
+    if w > 0.0:
+        dphi = -phi_w * (fh1 * fh1 / (A1 * A1 * d1) + fh2 * fh2 / (A2 * A2 * d2)) / w
+    dW = -(t1 * t1 / d1 + t2 * t2 / d2) / W if W > 0.0 else 0.0
+    ddlam = (W + gamma * dW) / alpha_t
+    dm = dphi - (Rp * F + R * dF) * ddlam
+    return phi - R * F, dm * Aref * Aref / (omq * omq)
+
+
+@njit(cache=True)
+def _start(
+    r0: float, r1: float, phi_tr: float, phi_tr_w: float, w_tr: float, fh1t: float,
+    fh2t: float, fn: float, A1: float, A2: float, Aref: float, alpha_t: float,
+    surface: int, tear_k: float, R_start: float, y0: float, s0: float, u: float,
+    ulaw: int, F_rec: float, Fk: float, kappa: float, m: float,
+) -> float:  # fmt: skip
+    """Starting value of q for the local solve, from the trial state alone (no residual).
+
+    One Newton step of r(q) from q = 0, whose slope is known there in closed form:
+    ``-dPhi/dq = Phi_w W0^2 A_ref^2 / w^tr`` and ``d(dlam)/dq = W0 A_ref^2 / alpha_t``
+    with ``W0 = |fhat^tr_i / A_i^2|``, R rising at ``dR/d(dlam) = u cot(pi R_start/2)``
+    (or ``-u ln R_start``) and F at ``-kappa phi(F)``. R is concave in dlam, so this
+    tangent model stays below the root; so does the model with R = 1 (R never exceeds 1),
+    and the larger of the two is taken. A few Newton iterations on the model residual of
+    :func:`_model_at` (Phi exact, R and F Taylor polynomials) then leave only the error of
+    the truncated Taylor series of R and F. Falls back to regula falsi between r(0) and
+    r(1) (when r(1) has been evaluated), then to the return with R F frozen. Returns -1
+    when ``r0`` is not finite (a trial state outside the domain of g).
+    """
+    if not math.isfinite(r0):
+        return -1.0
+    A2ref = Aref * Aref
+    W0 = _norm(fh1t / (A1 * A1), fh2t / (A2 * A2))
+    dphi = phi_tr_w * W0 * W0 / w_tr * A2ref  # -dPhi/dq at q = 0
+    ddlam = W0 * A2ref / alpha_t  # d(dlam)/dq at q = 0
+    if ulaw == U_COT:
+        dR = u * y0 / s0 if s0 > 0.0 else math.inf
+    else:
+        dR = -u * math.log(R_start) if R_start > 0.0 else math.inf
+    dF = -kappa * softening_rate(F_rec, Fk, m)[0]
+    q = -1.0
+    den = dphi + (dR * F_rec + R_start * dF) * ddlam
+    if den > 0.0 and math.isfinite(den):
+        q = r0 / den
+    r_sat = phi_tr - F_rec  # r(0) with R = 1
+    den_sat = dphi + dF * ddlam
+    if r_sat > 0.0 and den_sat > 0.0 and math.isfinite(den_sat):
+        q = max(q, r_sat / den_sat)
+    if 0.0 < q < 1.0:
+        if not math.isfinite(dR):
+            return q
+        # refine on the model residual: Phi exact (its nonlinearity in q comes from the
+        # orthotropy and the closed surfaces' g), R to second order, F to first
+        if ulaw == U_COT:  # dR = u cot(pi R/2)
+            ddR = -0.5 * math.pi * (u * u + dR * dR) * dR / u
+            dddR = -0.5 * math.pi * ddR * (3.0 * dR * dR + u * u) / u
+        else:  # implicit Euler R - R0 + u dlam ln R = 0, differentiated at dlam = 0
+            ddR = -2.0 * u * dR / R_start
+            dddR = 3.0 * u * (dR * dR / R_start - ddR) / R_start
+        ddF = -kappa * softening_rate(F_rec, Fk, m)[1] * dF  # dF = -kappa phi(F)
+        for _ in range(MODEL_ITERATIONS):
+            mq, dmq = _model_at(q, fh1t, fh2t, fn, A1, A2, Aref, alpha_t, surface, tear_k,
+                                R_start, dR, ddR, dddR, F_rec, dF, ddF)  # fmt: skip
+            if not (dmq < 0.0 and math.isfinite(mq) and math.isfinite(dmq)):
+                break
+            q_new = q - mq / dmq
+            if q_new <= 0.0:
+                q_new = 0.5 * q
+            elif q_new >= 1.0:
+                q_new = 0.5 * (1.0 + q)
+            done = abs(q_new - q) <= 1e-6 * min(q_new, 1.0 - q_new)
+            q = q_new
+            if done:
+                break
+        return q
+    if math.isfinite(r1):
+        q = r0 / (r0 - r1)
+        if 0.0 < q < 1.0:
+            return q
+    q = r0 / phi_tr if phi_tr > 0.0 else 0.5
+    return q if 0.0 < q < 1.0 else 0.5
+
+
+@njit(cache=True)
 def _point(
-    i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+    i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
     out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
     out_status, out_iter,
 ):  # fmt: skip
     """Advance point ``i`` (parameter row ``row``, time increment ``dt``) by one increment.
+
+    ``(ca, sa)`` are the cosine and sine of the row's orthotropy angle (evaluated once by
+    the loops when all points share one row).
 
     The readable per-point definition of the update (steps 0-7 of the module docstring);
     :func:`step_points` and :func:`step_points_parallel` only loop over it. The tangent
@@ -275,8 +406,6 @@ def _point(
     A1 = P[row, P_A1]
     A2 = P[row, P_A2]
     Aref = max(A1, A2)
-    ca = math.cos(P[row, P_ANGLE])
-    sa = math.sin(P[row, P_ANGLE])
     # 0. into principal axes (contact frame -> (e*_1, e*_2))
     b1 = ca * P[row, P_BETA1] + sa * P[row, P_BETA2]
     b2 = -sa * P[row, P_BETA1] + ca * P[row, P_BETA2]
@@ -301,7 +430,7 @@ def _point(
     # 2. recovery-only size
     F_rec = recovered_size(F_old[i], Fs, Fk, xi, m, n, dt, integ, rform)
     # 1. elastic predictor and separation: a trial normal traction that is zero to
-    #    the rounding of its own computation opens the contact (pitfall 9)
+    #    the rounding of its own computation opens the contact
     closing_in = alpha_n * (dun - gap_old[i])
     fn_tr = fn + closing_in
     if fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in)):
@@ -356,7 +485,7 @@ def _point(
     e1 = fh1t - h1
     e2 = fh2t - h2
     dfn = fn_tr - fn0
-    w_tr = math.hypot(fh1t / A1, fh2t / A2)
+    w_tr = _norm(fh1t / A1, fh2t / A2)
     phi_tr, phi_tr_w, phi_tr_fn = potential(surface, tear_k, w_tr, fn_tr)
 
     # 3. starting ratio: the smallest Phi/F along the trial path (partial unloading,
@@ -367,7 +496,7 @@ def _point(
     gR1 = 0.0  # gradient of R_start with respect to (du1, du2, dun), principal axes
     gR2 = 0.0
     gRn = 0.0
-    w0 = math.hypot(h1 / A1, h2 / A2)
+    w0 = _norm(h1 / A1, h2 / A2)
     phi0, phi0_w, phi0_fn = potential(surface, tear_k, w0, fn0)
     dF0 = _path_size_slope(F_old[i], 0.0, Fs, xi, n, dt, integ, rform)
     r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, e1, e2, dfn, A1, A2,
@@ -419,7 +548,8 @@ def _point(
     if w_tr == 0.0 or r0 <= RTOL_RESIDUAL * F_rec:
         R_new = phi_tr / F_rec
         if surface != COULOMB and R_new > 1.0 + RTOL_ACCEPT:
-            # normal traction pushed the state outside a closed surface (pitfall 3)
+            # normal traction pushed the state outside a closed surface: the rate form has
+            # no tangential mechanism that could bring it back
             _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
                       out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
             out_status[i] = FAILED
@@ -442,53 +572,63 @@ def _point(
         out_status[i] = STICK
         return
 
-    # 5. plastic corrector: bracket [0, 1] in q; cos/sin of pi R_start/2 once per point
+    # 5. plastic corrector on the bracket [0, 1] in q: r(0) = r0 > 0 (the loading test),
+    #    r(1) < 0 (checked below). cos/sin of pi R_start/2 once per point.
     y0, s0 = ratio_start(ulaw, R_start)
-    end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                    R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
-                    rform)  # fmt: skip
-    r1 = end[0]
-    if not r1 < 0.0:
-        # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of f:
-        # only possible for a closed surface loaded normally with a small tangential
-        # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
-        # tangential mechanism, pitfall 3), so R = f_n g(0)/F if that is <= 1.
-        R_end = end[13] / end[7]
-        if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
-            _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                      out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
-            out_status[i] = FAILED
+    # At q = 1 (fhat = 0) Phi is 0 (cone) or f_n g(0) = f_n (closed surfaces), while
+    # R F >= R_start F_k (R only grows with dlam, F never leaves [F_k, F_s]): r(1) < 0 is
+    # then known without evaluating it, and the evaluation is only needed otherwise.
+    if surface == COULOMB:
+        need_end = not R_start > 0.0
+    else:
+        need_end = not fn_tr < 0.999 * R_start * Fk
+    r1 = -math.inf
+    if need_end:
+        end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
+                        R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
+                        integ, rform)  # fmt: skip
+        r1 = end[0]
+        if not r1 < 0.0:
+            # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of
+            # f: only possible for a closed surface loaded normally with a small tangential
+            # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
+            # tangential mechanism left), so R = f_n g(0)/F if that is <= 1.
+            R_end = end[13] / end[7]
+            if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
+                _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
+                          out_traction, out_F, out_R, out_gap, out_tangent,
+                          want_tangent)  # fmt: skip
+                out_status[i] = FAILED
+                return
+            dlam = end[4]
+            norm = _norm(fh1t, fh2t)
+            tb1 = fh1t / norm
+            tb2 = fh2t / norm
+            _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
+                        min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
+                        out_dlam, out_vp, out_diss, out_status)  # fmt: skip
+            # f_t = f_n beta: independent of du_t
+            if want_tangent:
+                out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
+                out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
+                out_tangent[i, 2, 2] = alpha_n
             return
-        dlam = end[4]
-        norm = math.hypot(fh1t, fh2t)
-        tb1 = fh1t / norm
-        tb2 = fh2t / norm
-        _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
-                    min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
-                    out_dlam, out_vp, out_diss, out_status)  # fmt: skip
-        # f_t = f_n beta: independent of du_t
-        if want_tangent:
-            out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
-            out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
-            out_tangent[i, 2, 2] = alpha_n
-        return
-    # Unknown t in [0, 1]: q = t, or 1 - q = t when the regula-falsi estimate lies in
-    # the upper half, so that a return almost to the axis (q -> 1) keeps full precision.
-    if math.isfinite(r0):
-        q0 = r0 / (r0 - r1)
-        if not 0.0 < q0 < 1.0:
-            q0 = 0.5
-        flip = q0 > 0.5
-    else:  # trial outside the domain of g: locate the root's half first
+    q0 = _start(r0, r1, phi_tr, phi_tr_w, w_tr, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t,
+                surface, tear_k, R_start, y0, s0, u, ulaw, F_rec, Fk, kappa, m)  # fmt: skip
+    if q0 < 0.0:  # trial outside the domain of g: locate the root's half first
         mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
                         tear_k, R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
                         integ, rform)[0]  # fmt: skip
-        flip = mid > 0.0
-        q0 = 0.75 if flip else 0.25
+        q0 = 0.75 if mid > 0.0 else 0.25
+    # Unknown t in [0, 1/2]: q = t, or 1 - q = t when q lies in the upper half (switched
+    # as the iterates move), so that a return almost to the axis (q -> 1) keeps full
+    # precision.
+    flip = q0 > 0.5
     dqdt = -1.0 if flip else 1.0
     t = 1.0 - q0 if flip else q0
     t_pos = 1.0 if flip else 0.0  # end of the bracket with r > 0 (q = 0)
     t_neg = 0.0 if flip else 1.0  # end with r < 0 (q = 1)
+    log_newton = surface != COULOMB
     converged = False
     it = 0
     dx = 1.0
@@ -518,21 +658,37 @@ def _point(
             cond = abs(res[17]) if math.isfinite(res[17]) else 0.0
             converged = abs(r) <= RTOL_ACCEPT * max(scale, cond)
             break
-        # Newton on the log residual ln(Phi / (R F)) (same root and sign; nearly linear
-        # for the exponential Cam-clay surface), safeguarded as in rtsafe: bisect when
-        # the step leaves the bracket or does not at least halve the step before last.
-        phi = res[13]
-        rf = res[5] * res[7]
+        # Newton, safeguarded as in rtsafe: bisect when the step leaves the bracket or
+        # does not at least halve the step before last. For the cone on the residual
+        # itself (Phi is linear in q for an isotropic cone); for the closed surfaces, whose
+        # Phi grows steeply with w, on ln(Phi / (R F)), which has the same root and sign
+        # (nearly linear for the exponential Cam-clay surface).
+        dgdt = Aref * Aref / (omq * omq) * dqdt  # d gamma / d t
         t_new = -1.0
-        if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
-            dlog = (res[15] / phi - res[16] / rf) * Aref * Aref / (omq * omq) * dqdt
-            if dlog != 0.0 and math.isfinite(dlog):
-                t_new = t - math.log(phi / rf) / dlog
+        if log_newton:
+            phi = res[13]
+            rf = res[5] * res[7]
+            if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
+                dlog = (res[15] / phi - res[16] / rf) * dgdt
+                if dlog != 0.0 and math.isfinite(dlog):
+                    t_new = t - math.log(phi / rf) / dlog
+        else:
+            slope = res[1] * dgdt
+            if slope != 0.0 and math.isfinite(slope) and math.isfinite(r):
+                t_new = t - r / slope
         if not (lo < t_new < hi) or abs(t_new - t) > 0.5 * abs(dx_old):
             t_new = 0.5 * (lo + hi)
         dx_old = dx
         dx = t_new - t
         t = t_new
+        if t > 0.5:
+            # keep the smaller of q and 1 - q as the unknown, so that a root near either
+            # end is resolved to full precision (1 - t is exact here)
+            flip = not flip
+            dqdt = -dqdt
+            t = 1.0 - t
+            t_pos = 1.0 - t_pos
+            t_neg = 1.0 - t_neg
         q = 1.0 - t if flip else t
         omq = t if flip else 1.0 - t
         res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
@@ -602,6 +758,12 @@ def _point(
 
 
 @njit(cache=True)
+def _axes(P, row):  # fmt: skip
+    """Cosine and sine of the orthotropy angle of parameter row ``row``."""
+    return math.cos(P[row, P_ANGLE]), math.sin(P[row, P_ANGLE])
+
+
+@njit(cache=True)
 def step_points(
     traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
@@ -617,10 +779,12 @@ def step_points(
     """
     npts = traction.shape[0]
     shared_p = P.shape[0] == 1
+    ca0, sa0 = _axes(P, 0) if shared_p else (1.0, 0.0)
     for i in range(npts):
         row = 0 if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
-        _point(i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+        ca, sa = (ca0, sa0) if shared_p else _axes(P, row)
+        _point(i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
                surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
                out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
                out_status, out_iter)  # fmt: skip
@@ -641,11 +805,13 @@ def step_points_parallel(
     """
     npts = traction.shape[0]
     shared_p = P.shape[0] == 1
+    ca0, sa0 = _axes(P, 0) if shared_p else (1.0, 0.0)
     for k in prange(npts):
         i = np.int64(k)
         row = np.int64(0) if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
-        _point(i, row, dt, traction, F_old, R_old, gap_old, slip_inc, P,
+        ca, sa = (ca0, sa0) if shared_p else _axes(P, row)
+        _point(i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
                surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
                out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
                out_status, out_iter)  # fmt: skip

@@ -1,4 +1,4 @@
-"""Sliding-yield surface families, spec §2.4, §2.10–2.12.
+"""Sliding-yield surface families, Eqs (48)–(54), (67), (82)–(84), (95).
 
 Every surface is written as a potential ``Phi(w, f_n)`` of the normal traction ``f_n``
 (compression positive) and the elliptic norm of the rotated tangential traction
@@ -51,7 +51,7 @@ SURFACE_CODES = {
 
 @njit(cache=True)
 def g_value(code: int, tear_k: float, chi: float) -> tuple[float, float]:
-    """g(chi) and g'(chi) of Eqs (51)–(54); (+inf, +inf) outside the domain (pitfall 8)."""
+    """g(chi) and g'(chi) of Eqs (51)–(54); (+inf, +inf) outside the domain of g."""
     if code == CAM_CLAY:
         e = math.exp(chi)
         return e, e
@@ -74,7 +74,7 @@ def g_value(code: int, tear_k: float, chi: float) -> tuple[float, float]:
 
 @njit(cache=True)
 def potential(code: int, tear_k: float, w: float, fn: float) -> tuple[float, float, float]:
-    """Phi(w, f_n) and its partial derivatives (Phi_w, Phi_fn); spec §4.4.
+    """Phi(w, f_n) and its partial derivatives (Phi_w, Phi_fn).
 
     Cone: Phi = w/f_n, Phi_w = 1/f_n, Phi_fn = -w/f_n^2.
     Closed: Phi = f_n g(chi), Phi_w = g'(chi), Phi_fn = g - chi g'.
@@ -140,7 +140,7 @@ def g_function(surface: str, chi: ArrayLike, tear_k: float = 1.0) -> tuple[np.nd
 
 
 def g_inverse(surface: str, G: ArrayLike, tear_k: float = 1.0) -> np.ndarray:
-    """chi* with g(chi*) = G for G >= 1 (the branch chi >= 0); spec §2.10 table."""
+    """chi* with g(chi*) = G for G >= 1 (the branch chi >= 0), in closed form."""
     code = _code(surface)
     G = np.asarray(G, dtype=np.float64)
     if np.any(~(G >= 1.0)):
@@ -164,9 +164,9 @@ def friction_coefficient_on_yield(
     M: float = 1.0,
     tear_k: float = 1.0,
 ) -> np.ndarray:
-    """Friction coefficient ``|f_t|/f_n`` on a closed sliding-yield surface, spec §2.10.
+    """Friction coefficient ``|f_t|/f_n`` on a closed sliding-yield surface.
 
-    ``mu(f_n) = M g^{-1}(F / f_n)`` for ``0 < f_n <= F`` (E5 / test 11). For the cone
+    ``mu(f_n) = M g^{-1}(F / f_n)`` for ``0 < f_n <= F``. For the cone
     this is simply ``F`` (= mu).
     """
     fn = np.asarray(normal_traction, dtype=np.float64)
@@ -189,7 +189,7 @@ def yield_function(
 
     ``traction`` and ``rotation`` must be given in the principal axes of orthotropy.
     Returns ``(...)``; ``f_n <= 0`` gives NaN-free 0 only for zero tangential traction,
-    otherwise +inf (the surface is singular there, pitfall 9).
+    otherwise +inf (the surface is singular there).
     """
     code = _code(surface)
     f = np.asarray(traction, dtype=np.float64)
