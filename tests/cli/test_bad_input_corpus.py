@@ -295,3 +295,53 @@ def test_filling_a_mostly_undefined_topography_is_refused(
     lines = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(lines) == 1, lines
     assert f"{64 - defined} of 64 points undefined" in lines[0] and "fill_missing" in lines[0]
+
+
+def _roughness_with_file(tmp_path: Path, name: str) -> Path:
+    text = ROUGHNESS.replace('kind = "flat"', f'kind = "file"\npath = "{name}"\nunit = "um"{FILE}')
+    (tmp_path / "s.toml").write_text(text)
+    return tmp_path / "s.toml"
+
+
+@pytest.mark.parametrize(
+    ("rows", "message"),
+    [
+        ("0 1 2\n3 4\n5 6 7\n", "line 2 has 2 values, expected 3"),
+        ("# heights\n0 1 2 3\n3 4 5 6\n\n5 6 7 8\n1 2 3 4 5\n", "line 6 has 5 values, expected 4"),
+        ("0,1,2\n3,4,5\n6,7,8,9\n", "line 3 has 4 values, expected 3"),
+    ],
+)
+def test_a_ragged_text_topography_names_the_line(
+    rows: str, message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "ragged.txt").write_text(rows)
+    scenario = _roughness_with_file(tmp_path, "ragged.txt")
+    code = main(["roughness", str(scenario), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1, lines
+    assert "ragged.txt" in lines[0] and message in lines[0]
+    assert not (tmp_path / "out").exists()
+
+
+def test_an_unreadable_topography_file_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Permission denied (simulated: the tests may run as root, where chmod does not deny)."""
+    from frictionlab.roughness import topography
+
+    heights = np.zeros((4, 4))
+    np.savetxt(tmp_path / "locked.txt", heights)
+    real_open = open
+
+    def denying_open(name: object, *args: object, **kwargs: object) -> object:
+        if str(name).endswith("locked.txt"):
+            raise PermissionError(13, "Permission denied", str(name))
+        return real_open(name, *args, **kwargs)  # type: ignore[call-overload]
+
+    monkeypatch.setattr(topography, "open", denying_open, raising=False)
+    scenario = _roughness_with_file(tmp_path, "locked.txt")
+    code = main(["roughness", str(scenario), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1, lines
+    assert "locked.txt" in lines[0] and "Permission denied" in lines[0]
+    assert not (tmp_path / "out").exists()

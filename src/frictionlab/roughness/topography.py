@@ -53,6 +53,7 @@ from __future__ import annotations
 import hashlib
 import math
 import os
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -447,6 +448,8 @@ def read_prepared(
         raise InputError(f"cannot read surface file '{name}': {_describe(exc)}") from None
     if os.path.getsize(name) == 0:
         raise InputError(f"cannot read surface file '{name}': the file is empty")
+    if format in (None, "asc", "xyz", "matrix"):
+        _check_text_rows(name)
     if unit is not None:
         try:
             _unit_factor(unit)
@@ -500,6 +503,50 @@ def read_prepared(
         "channel": channel,
     }
     return PreparedSurface(prepared.surface, {**source, **prepared.info}, prepared.warnings)
+
+
+#: Separators of the values on a row of a plain-text height matrix.
+_TEXT_SEPARATORS = re.compile(r"[\s,;]+")
+
+
+def _numeric_row(line: str) -> int:
+    """Number of values on a row of numbers (0 if the line is not made of numbers only)."""
+    tokens = [t for t in _TEXT_SEPARATORS.split(line.strip()) if t]
+    try:
+        for token in tokens:
+            float(token)
+    except ValueError:
+        return 0
+    return len(tokens)
+
+
+def _check_text_rows(name: str) -> None:
+    """Refuse a plain-text height matrix whose rows of numbers differ in length.
+
+    Binary files and text without rows of numbers are left to the readers. Raises
+    :class:`~frictionlab.errors.InputError` naming the first row of another length.
+    """
+    try:
+        with open(name, "rb") as handle:
+            head = handle.read(4096)
+            if b"\0" in head:
+                return
+            raw = head + handle.read()
+        text = raw.decode("utf-8")
+    except (OSError, UnicodeDecodeError):
+        return
+    expected = 0
+    for number, line in enumerate(text.splitlines(), start=1):
+        count = _numeric_row(line)
+        if count == 0:
+            continue
+        if expected == 0:
+            expected = count
+        elif count != expected:
+            raise InputError(
+                f"cannot read surface file '{name}': line {number} has {count} values, "
+                f"expected {expected} (every row of a height matrix has the same length)"
+            )
 
 
 def _describe(exc: Exception) -> str:
