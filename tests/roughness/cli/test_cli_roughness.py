@@ -239,9 +239,11 @@ def test_the_output_lock_is_held_for_the_whole_run(tmp_path, capsys, monkeypatch
     seen: list[str] = []
 
     def computing(*args, **kwargs):
-        with pytest.raises(InputError, match="being written by another frictionlab run"):
-            with output_set(out):
-                pass  # pragma: no cover - the lock is held by the run
+        with (
+            pytest.raises(InputError, match="being written by another frictionlab run"),
+            output_set(out),
+        ):
+            pass  # pragma: no cover - the lock is held by the run
         seen.append("refused")
         return real(*args, **kwargs)
 
