@@ -345,3 +345,23 @@ def test_an_unreadable_topography_file_is_one_line(
     assert code == 2 and len(lines) == 1, lines
     assert "locked.txt" in lines[0] and "Permission denied" in lines[0]
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(
+    ("segment", "words"),
+    [
+        ('kind = "normal"\ntraction = 1e-200', "cannot be told from zero"),
+        ('kind = "normal"\ntraction_change = -0.9999999999999999', "cannot be told from zero"),
+    ],
+)
+def test_a_normal_traction_target_indistinguishable_from_zero_is_one_line(
+    segment: str, words: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """It used to open the contact silently (exit 0)."""
+    text = SIMULATE.replace('kind = "hold"\nduration = 10.0', segment)
+    (tmp_path / "s.toml").write_text(text)
+    code = main(["simulate", str(tmp_path / "s.toml"), "--out", str(tmp_path / "out"), "--quiet",
+                 "--no-plots"])  # fmt: skip
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 1 and len(lines) == 1 and words in lines[0], lines
+    assert "Traceback" not in lines[0]

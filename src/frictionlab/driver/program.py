@@ -129,6 +129,12 @@ def _sizes(*arrays: np.ndarray | None, tail: int = 0) -> set[int]:
     return {a.shape[0] for a in arrays if a is not None and a.ndim > tail}
 
 
+def _lerp(a: np.ndarray, b: np.ndarray, s: float) -> np.ndarray:
+    """``(1 - s) a + s b``: exactly ``b`` at ``s = 1`` (a target is never lost to
+    ``a + s (b - a)``'s cancellation, e.g. 1e-200 Pa from 1 Pa)."""
+    return (1.0 - s) * a + s * b
+
+
 def _vec(value: np.ndarray, n: int) -> np.ndarray:
     return np.broadcast_to(value, (n,)).astype(np.float64)
 
@@ -598,8 +604,7 @@ class _NormalPlan(SegmentPlan):
         zeros = np.zeros((n, 2))
         if self.target is None:
             return Control(dt, zeros, self.resolved["approach"] / self.steps)
-        fn0 = self.start[:, 2]
-        target = fn0 + (k + 1) / self.steps * (self.target - fn0)
+        target = _lerp(self.start[:, 2], self.target, (k + 1) / self.steps)
         return Control(dt, zeros, np.zeros(n), fn_target=target)
 
 
@@ -772,7 +777,7 @@ class _TablePlan(SegmentPlan):
         if self.seg.normal_traction is not None:
             a = self.start[:, 2] if i == 0 else np.full(n, self.seg.normal_traction[i])
             b = np.full(n, self.seg.normal_traction[i + 1])
-            return Control(dt, du_t, np.zeros(n), fn_target=a + (j + 1) / c * (b - a))
+            return Control(dt, du_t, np.zeros(n), fn_target=_lerp(a, b, (j + 1) / c))
         return Control(dt, du_t, np.zeros(n))
 
 
