@@ -136,9 +136,17 @@ def _grid(raw: Any) -> dict[str, list[Any]]:
     grid = _flatten(raw)
     if not grid:
         raise InputError('[grid] is empty: give at least one "section.key" = [values]')
+    owner: dict[str, str] = {}
     for key, values in grid.items():
         if not all(key.split(LINK)):
             raise InputError(f"[grid].'{key}' has an empty key around '{LINK}'")
+        for part in key.split(LINK):
+            if part in owner:
+                raise InputError(
+                    f"[grid] sets '{part}' twice ('{owner[part]}' and '{key}'): give each "
+                    "key one axis"
+                )
+            owner[part] = key
         if not isinstance(values, list) or not values:
             raise InputError(f"[grid].'{key}' must be a non-empty list of values, got {values!r}")
         for v in values:
