@@ -365,3 +365,17 @@ def test_a_normal_traction_target_indistinguishable_from_zero_is_one_line(
     lines = capsys.readouterr().err.strip().splitlines()
     assert code == 1 and len(lines) == 1 and words in lines[0], lines
     assert "Traceback" not in lines[0]
+
+
+def test_a_traction_target_max_step_asking_for_endless_steps_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Its step count is known only when the segment starts: it used to run for ever."""
+    text = SIMULATE.replace(
+        'kind = "hold"\nduration = 10.0', 'kind = "normal"\ntraction = 2.0\nmax_step = 1e-300'
+    )
+    (tmp_path / "s.toml").write_text(text)
+    code = main(["simulate", str(tmp_path / "s.toml"), "--out", str(tmp_path / "out"), "--quiet"])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1 and "max_step" in lines[0], lines
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
