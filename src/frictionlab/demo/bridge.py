@@ -1,4 +1,4 @@
-"""The demo's bridge section (issue 10): two rough surfaces -> a fitted, runnable law.
+"""The demo's bridge section: two rough surfaces -> a fitted, runnable law.
 
 Runs the bundled bridge scenario ``frictionlab/data/bridge/ratchet.toml`` through the same
 code path as ``frictionlab bridge`` (outputs in ``OUT/bridge/``), then the fitted law it

@@ -492,7 +492,7 @@ class _CyclePlan(SegmentPlan):
 class Hold:
     """Stop: zero sliding velocity for ``duration`` [s] (the traction is held, F recovers).
 
-    The recovery is integrated exactly (pitfall 15), so one step (the default) is
+    The recovery is integrated exactly, so one step (the default) is
     exact at the end; more steps give intermediate values.
     """
 
@@ -629,7 +629,7 @@ class TractionControl:
     target in ``steps`` equal increments (default 100; or ``max_step`` [Pa] of traction
     per step); the driver solves for the slip of each step with Newton's method on the
     consistent tangent. With ``cycles = n`` the segment goes to the target and back to
-    the start traction n times (ratcheting, spec A6). ``duration`` [s] is the time of
+    the start traction n times (ratcheting). ``duration`` [s] is the time of
     one leg (default 0: rate-independent). The normal approach is held. A target the
     contact cannot carry (gross sliding) makes the computation fail.
     """
@@ -911,7 +911,7 @@ def slide_hold_slide(
     hold_steps: int = 1,
     reslide_steps: int | None = None,
 ) -> Program:
-    """Slide, hold for ``hold_time`` [s] (scalar or one per point), slide again (spec A3).
+    """Slide, hold for ``hold_time`` [s] (scalar or one per point), slide again.
 
     ``reslide_distance`` defaults to 0.3 of ``distance``; the re-slide keeps the step
     length of the first slide unless ``reslide_steps`` is given.
