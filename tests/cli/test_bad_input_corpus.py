@@ -379,3 +379,16 @@ def test_a_traction_target_max_step_asking_for_endless_steps_is_one_line(
     lines = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(lines) == 1 and "max_step" in lines[0], lines
     assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
+
+
+def test_a_text_file_that_could_be_a_matrix_or_points_needs_a_format(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Three values per line were read as x y z points, silently (sizes from the 'x, y')."""
+    np.savetxt(tmp_path / "h.txt", np.arange(9.0).reshape(3, 3))
+    scenario = _roughness_with_file(tmp_path, "h.txt")
+    code = main(["roughness", str(scenario), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1, lines
+    assert "format" in lines[0] and "'asc'" in lines[0] and "'xyz'" in lines[0]
+    assert not (tmp_path / "out").exists()
