@@ -148,7 +148,10 @@ class _LawStep:
             return
         alpha_n = _elastic(params, "alpha_n", state.n_points)
         self.beyond = np.where(closing, fn_target / alpha_n, 0.0)  # approach past closure [m]
-        self.fraction = np.where(closing, self.beyond / (state.gap + self.beyond), 1.0)
+        reach = state.gap + self.beyond
+        self.fraction = np.where(
+            closing & (reach > 0.0), self.beyond / np.where(reach > 0.0, reach, 1.0), 1.0
+        )
         self.closing = closing
         self.closed_form = replace(state, gap=np.where(closing, 0.0, state.gap))
 
