@@ -255,6 +255,8 @@ def test_tiny_normal_traction_fails_in_one_line(
                  "--no-plots"])  # fmt: skip
     err = capsys.readouterr().err
     assert code == 1 and "Traceback" not in err and "computation failed" in err
+    assert len(err.strip().splitlines()) == 1
+    assert "more than 1e+15 times the normal traction 1e-300 Pa" in err  # says why
 
 
 def test_the_corpus_is_large() -> None:

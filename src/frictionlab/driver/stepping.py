@@ -115,7 +115,7 @@ def _unreachable_normal_target(state: ContactState, fn_target: np.ndarray) -> At
         solves=0,
         ok=False,
         reason=(
-            f"the prescribed normal traction {fn_target[i]:.6g} Pa (point {i}) is at most "
+            f"the prescribed normal traction {fn_target[i]:.6g} Pa (point {i + 1}) is at most "
             f"{SEPARATION_RTOL:g} times the normal traction {fn[i]:.6g} Pa it is reached from: "
             "it cannot be told from zero (no contact) in that step; prescribe an approach to "
             "open the contact, or a larger traction"
@@ -174,6 +174,30 @@ class _LawStep:
         return replace(res, state=new, tangent=tangent)
 
 
+#: Tangential trial load over normal traction beyond which the return map cannot resolve
+#: the return in double precision (its unknown 1 - q falls below the rounding of 1).
+UNRESOLVED_LOAD_RATIO = 1e15
+
+
+def _resolution_hint(
+    params: SubloadingParams, state: ContactState, du: np.ndarray, failed: np.ndarray
+) -> str:
+    """Why a failed point may have failed: a tangential load far beyond its normal traction."""
+    n = state.n_points
+    fn = np.maximum(state.traction[:, 2], 0.0)
+    trial = state.traction[:, :2] + _elastic(params, "alpha_t", n)[:, None] * du[:, :2]
+    load = np.hypot(trial[:, 0], trial[:, 1])
+    extreme = failed & (load > UNRESOLVED_LOAD_RATIO * fn) & (fn > 0.0)
+    if not extreme.any():
+        return ""
+    i = int(np.argmax(extreme))
+    return (
+        f" (at point {i + 1} the trial tangential traction {load[i]:.3g} Pa is more than "
+        f"{UNRESOLVED_LOAD_RATIO:g} times the normal traction {fn[i]:.3g} Pa: beyond what the "
+        "return map resolves in double precision; use a larger normal traction)"
+    )
+
+
 def solve_control(params: SubloadingParams, state: ContactState, control: Control) -> Attempt:
     """Apply one mixed-control increment (no substepping).
 
@@ -199,7 +223,10 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
     iters = np.zeros(n, dtype=np.int64)
     if control.ft_target is None:
         single = law(du, control.dt)
-        return _result_attempt(single, du, 1, iters + single.iterations)
+        attempt = _result_attempt(single, du, 1, iters + single.iterations)
+        if not attempt.ok:
+            attempt.reason += _resolution_hint(params, state, du, single.status == _FAILED)
+        return attempt
 
     target = control.ft_target
     alpha_t = _elastic(params, "alpha_t", n)
