@@ -255,6 +255,8 @@ def test_tiny_normal_traction_fails_in_one_line(
                  "--no-plots"])  # fmt: skip
     err = capsys.readouterr().err
     assert code == 1 and "Traceback" not in err and "computation failed" in err
+    assert len(err.strip().splitlines()) == 1
+    assert "more than 1e+15 times the normal traction 1e-300 Pa" in err  # says why
 
 
 def test_the_corpus_is_large() -> None:
@@ -295,3 +297,100 @@ def test_filling_a_mostly_undefined_topography_is_refused(
     lines = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(lines) == 1, lines
     assert f"{64 - defined} of 64 points undefined" in lines[0] and "fill_missing" in lines[0]
+
+
+def _roughness_with_file(tmp_path: Path, name: str) -> Path:
+    text = ROUGHNESS.replace('kind = "flat"', f'kind = "file"\npath = "{name}"\nunit = "um"{FILE}')
+    (tmp_path / "s.toml").write_text(text)
+    return tmp_path / "s.toml"
+
+
+@pytest.mark.parametrize(
+    ("rows", "message"),
+    [
+        ("0 1 2\n3 4\n5 6 7\n", "line 2 has 2 values, expected 3"),
+        ("# heights\n0 1 2 3\n3 4 5 6\n\n5 6 7 8\n1 2 3 4 5\n", "line 6 has 5 values, expected 4"),
+        ("0,1,2\n3,4,5\n6,7,8,9\n", "line 3 has 4 values, expected 3"),
+    ],
+)
+def test_a_ragged_text_topography_names_the_line(
+    rows: str, message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "ragged.txt").write_text(rows)
+    scenario = _roughness_with_file(tmp_path, "ragged.txt")
+    code = main(["roughness", str(scenario), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1, lines
+    assert "ragged.txt" in lines[0] and message in lines[0]
+    assert not (tmp_path / "out").exists()
+
+
+def test_an_unreadable_topography_file_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Permission denied (simulated: the tests may run as root, where chmod does not deny)."""
+    from frictionlab.roughness import topography
+
+    heights = np.zeros((4, 4))
+    np.savetxt(tmp_path / "locked.txt", heights)
+    real_open = open
+
+    def denying_open(name: object, *args: object, **kwargs: object) -> object:
+        if str(name).endswith("locked.txt"):
+            raise PermissionError(13, "Permission denied", str(name))
+        return real_open(name, *args, **kwargs)  # type: ignore[call-overload]
+
+    monkeypatch.setattr(topography, "open", denying_open, raising=False)
+    scenario = _roughness_with_file(tmp_path, "locked.txt")
+    code = main(["roughness", str(scenario), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1, lines
+    assert "locked.txt" in lines[0] and "Permission denied" in lines[0]
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(
+    ("segment", "words"),
+    [
+        ('kind = "normal"\ntraction = 1e-200', "cannot be told from zero"),
+        ('kind = "normal"\ntraction_change = -0.9999999999999999', "cannot be told from zero"),
+    ],
+)
+def test_a_normal_traction_target_indistinguishable_from_zero_is_one_line(
+    segment: str, words: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """It used to open the contact silently (exit 0)."""
+    text = SIMULATE.replace('kind = "hold"\nduration = 10.0', segment)
+    (tmp_path / "s.toml").write_text(text)
+    code = main(["simulate", str(tmp_path / "s.toml"), "--out", str(tmp_path / "out"), "--quiet",
+                 "--no-plots"])  # fmt: skip
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 1 and len(lines) == 1 and words in lines[0], lines
+    assert "Traceback" not in lines[0]
+
+
+def test_a_traction_target_max_step_asking_for_endless_steps_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Its step count is known only when the segment starts: it used to run for ever."""
+    text = SIMULATE.replace(
+        'kind = "hold"\nduration = 10.0', 'kind = "normal"\ntraction = 2.0\nmax_step = 1e-300'
+    )
+    (tmp_path / "s.toml").write_text(text)
+    code = main(["simulate", str(tmp_path / "s.toml"), "--out", str(tmp_path / "out"), "--quiet"])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1 and "max_step" in lines[0], lines
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
+
+
+def test_a_text_file_that_could_be_a_matrix_or_points_needs_a_format(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Three values per line were read as x y z points, silently (sizes from the 'x, y')."""
+    np.savetxt(tmp_path / "h.txt", np.arange(9.0).reshape(3, 3))
+    scenario = _roughness_with_file(tmp_path, "h.txt")
+    code = main(["roughness", str(scenario), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(lines) == 1, lines
+    assert "format" in lines[0] and "'asc'" in lines[0] and "'xyz'" in lines[0]
+    assert not (tmp_path / "out").exists()

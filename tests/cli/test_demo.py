@@ -202,3 +202,19 @@ def test_report_opens_in_headless_chromium(demo_dir: Path, tmp_path: Path) -> No
     assert pixels.shape[:2] == (800, 1280)
     ink = np.any(pixels < 0.9, axis=-1).mean()  # share of pixels darker than near-white
     assert 0.01 < ink < 0.9 and pixels.std() > 0.05, (ink, pixels.std())
+
+
+def test_recorded_input_paths_exist_after_the_swap(demo_dir: Path) -> None:
+    """Paths in the summaries name files of the published set, never the staging directory."""
+    summaries = list(demo_dir.rglob("summary.json"))
+    assert demo_dir / "bridge" / "fitted_law" / "summary.json" in summaries
+    for path in summaries:
+        summary = json.loads(path.read_text())
+        recorded = [item["path"] for item in summary.get("provenance", {}).get("inputs", [])]
+        if isinstance(summary.get("scenario"), str) and summary["scenario"]:
+            recorded.append(summary["scenario"])
+        for name in recorded:
+            target = path.parent / name  # an absolute name replaces the folder
+            assert target.is_file(), f"{path.relative_to(demo_dir)} records {name}"
+    fitted = json.loads((demo_dir / "bridge" / "fitted_law" / "summary.json").read_text())
+    assert fitted["scenario"] == "../fitted_law.toml"

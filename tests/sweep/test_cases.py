@@ -60,10 +60,32 @@ def test_case_lists() -> None:
     assert [c.overrides for c in spec.cases] == [{"law.mu_s": 0.6}, {"law.mu_k": 0.2}]
 
 
+def test_linked_keys_in_a_case_list_take_the_same_value() -> None:
+    data = tomllib.loads(
+        'base = "b.toml"\n[[case]]\n"program.1.velocity+program.3.velocity" = 0.2\n'
+        '"law.mu_s" = 0.6\n[[case]]\n"law.mu_k" = 0.2\n'
+    )
+    spec = parse_sweep(data, Path("."))
+    assert spec.keys == ("program.1.velocity", "program.3.velocity", "law.mu_s", "law.mu_k")
+    assert spec.cases[0].overrides == {
+        "program.1.velocity": 0.2, "program.3.velocity": 0.2, "law.mu_s": 0.6
+    }  # fmt: skip
+    # the same case written without the link has the same id
+    plain = tomllib.loads(
+        'base = "b.toml"\n[[case]]\n"program.3.velocity" = 0.2\n"law.mu_s" = 0.6\n'
+        '"program.1.velocity" = 0.2\n'
+    )
+    assert parse_sweep(plain, Path(".")).cases[0].id == spec.cases[0].id
+
+
 @pytest.mark.parametrize(
     ("text", "words"),
     [
+        ('base = "b.toml"\n[[case]]\n"a.b+" = 1\n', "empty key around '+'"),
+        ('base = "b.toml"\n[[case]]\n"a.b+c.d" = 1\n"a.b" = 2\n', "sets 'a.b' twice"),
         ('base = "b.toml"\n[grid]\n', "[grid] is empty"),
+        ('base = "b.toml"\n[grid]\n"a.b" = [1]\n"a.b+c.d" = [2]\n', "sets 'a.b' twice"),
+        ('base = "b.toml"\n[grid]\n"a.b+a.b" = [1]\n', "sets 'a.b' twice"),
         ('base = "b.toml"\n[grid]\n"a.b" = []\n', "non-empty list"),
         ('base = "b.toml"\nbogus = 1\n[grid]\n"a.b" = [1]\n', "unknown key 'bogus'"),
         ('[grid]\n"a.b" = [1]\n', "base must name"),
@@ -111,7 +133,7 @@ def test_ledger_resume_rules(tmp_path: Path) -> None:
     assert not (tmp_path / case.id / "stale.csv").exists()
     record = read_record(tmp_path / case.id)
     assert is_done(record, case, "sha")
-    assert not is_done(record, case, "other base")  # the base scenario changed: run again
+    assert not is_done(record, case, "other base")  # an input file changed: run again
     failed = make_record(case, "simulate", "sha", "failed", "boom", 0.1, [])
     assert not is_done(failed, case, "sha")  # failed cases are retried
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 import json
 import os
 import signal
@@ -10,6 +11,7 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -191,3 +193,63 @@ def test_bundled_example_validates(tmp_path: Path) -> None:
         "program.1.velocity=1e-05",
         "program.3.velocity=1e-05",
     )
+
+
+TABLE_PROGRAM = """
+[[program]]
+kind = "table"
+file = "tables/slip.csv"
+"""
+
+
+def _table_sweep(tmp: Path, slip_end: float) -> Path:
+    """A sweep whose base scenario's last segment reads tables/slip.csv (time, slip_1)."""
+    sweep = write_sweep(tmp, '[grid]\n"program.2.duration" = [1.0, 10.0]\n')
+    base = tmp / "base.toml"
+    base.write_text(base.read_text() + TABLE_PROGRAM)
+    (tmp / "tables").mkdir(exist_ok=True)
+    (tmp / "tables" / "slip.csv").write_text(f"time,slip_1\n0,0\n1,{slip_end!r}\n")
+    return sweep
+
+
+def test_a_task_carries_the_base_and_the_files_it_names(tmp_path: Path) -> None:
+    """A worker that cannot see the sweep's folder still runs the case, from the task alone."""
+    from frictionlab.commands._sweep_task import run_task
+    from frictionlab.commands.sweep import load_spec
+
+    here = tmp_path / "here"
+    here.mkdir()
+    _table_sweep(here, 0.05)
+    _, _, tasks = load_spec(here / "sweep.toml", plots=False)
+    original = (here / "base.toml").resolve()
+    moved = here.rename(tmp_path / "elsewhere")  # the worker has no file at those paths
+    result = run_task(tasks[0])
+    assert result.ok, result.error
+    summary = json.loads(result.files["summary.json"])
+    assert summary["scenario"] == str(original)  # the outputs name the original inputs
+    recorded = {item["path"] for item in summary["provenance"]["inputs"]}
+    assert recorded == {str(original), str(original.parent / "tables" / "slip.csv")}
+    # the table was read: the last segment slides 0.05 m more than the base programme
+    history = pd.read_csv(io.BytesIO(result.files["history.csv"]), comment="#")
+    alone = tmp_path / "alone"
+    assert main(["simulate", str(moved / "base.toml"), "--out", str(alone), "--quiet",
+                 "--no-plots", "--set", "program.2.duration=1.0"]) == 0  # fmt: skip
+    expected = pd.read_csv(alone / "history.csv", comment="#")
+    assert history.shape == expected.shape
+    assert np.array_equal(history.to_numpy(), expected.to_numpy())
+
+
+def test_a_changed_table_reruns_the_cases_that_read_it(tmp_path: Path) -> None:
+    sweep = _table_sweep(tmp_path, 0.05)
+    out = tmp_path / "out"
+    argv = ["sweep", str(sweep), "--out", str(out), "--quiet", "--no-plots", "--workers", "1"]
+    assert main(argv) == 0
+    first = {p.parent.name: p.read_bytes() for p in out.glob("cases/*/history.csv")}
+    stamps = {p: p.stat().st_mtime_ns for p in out.glob("cases/*/case.json")}
+    assert main(argv) == 0  # unchanged inputs: nothing runs again
+    assert {p: p.stat().st_mtime_ns for p in out.glob("cases/*/case.json")} == stamps
+    (tmp_path / "tables" / "slip.csv").write_text("time,slip_1\n0,0\n1,0.1\n")
+    assert main(argv) == 0  # only the table changed: every case runs again, on the new table
+    second = {p.parent.name: p.read_bytes() for p in out.glob("cases/*/history.csv")}
+    assert set(second) == set(first) and all(second[k] != first[k] for k in first)
+    assert all(p.stat().st_mtime_ns > stamps[p] for p in stamps)

@@ -130,38 +130,40 @@ def run(args: argparse.Namespace) -> int:
     if not quiet:
         for text in scenario.warnings:
             print(f"frictionlab roughness: warning: {text}", file=sys.stderr)
-    started = time.perf_counter()
-    try:
-        with progress_bar(f"roughness {scenario_path.name}", enabled=not quiet) as progress:
-            polar = friction_polar(
-                scenario.lower, scenario.upper, scenario.mu0, scenario.beta_deg,
-                settings=scenario.settings, progress=progress,
-            )  # fmt: skip
-            if not np.all(polar.in_contact):
-                beta = float(polar.beta_deg[int(np.argmin(polar.in_contact))])
-                raise InputError(
-                    f"[sliding].load = {scenario.settings.load} compresses no spring at beta = "
-                    f"{beta:g} deg, so mu is undefined there: allowed a load that keeps some "
-                    "spring compressed (sweeps through zero and tension belong in [adhesion])"
-                )
-            plot_polar = _full_circle(scenario, polar, progress) if plots else polar
-        extensions = _extensions(scenario)
-    except ValidityError as exc:
-        # Full contact fails in its one pass over all directions, partial contact at the
-        # first offending time sample: either way within seconds, before the rest.
-        raise ValidityError(f"{exc}.{_diagnose(scenario)} {_ways_forward(scenario)}") from None
-    seconds = time.perf_counter() - started
-
-    files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, polar, scenario_path)}
-    files.update(_extension_files(scenario, extensions, scenario_path, plots))
-    summary = _summary(scenario, polar, plot_polar, scenario_path, seconds)
-    summary.update(_extension_summary(scenario, extensions))
-    extra = sorted(name for name in files if name != "polar.csv")
-    summary["files"] = ["polar.csv", "summary.json", *(["polar.png"] if plots else []), *extra]
-    if plots:
-        files["polar.png"] = _png(scenario, plot_polar)
-    summary = stamp(summary, summary["files"], _input_files(scenario_path, data))
+    # the output set (and its lock) is held for the whole run, as simulate does: two runs
+    # on one --out cannot interleave
     with output_set(out_dir, args.overwrite) as oset:
+        started = time.perf_counter()
+        try:
+            with progress_bar(f"roughness {scenario_path.name}", enabled=not quiet) as progress:
+                polar = friction_polar(
+                    scenario.lower, scenario.upper, scenario.mu0, scenario.beta_deg,
+                    settings=scenario.settings, progress=progress,
+                )  # fmt: skip
+                if not np.all(polar.in_contact):
+                    beta = float(polar.beta_deg[int(np.argmin(polar.in_contact))])
+                    raise InputError(
+                        f"[sliding].load = {scenario.settings.load} compresses no spring at beta = "
+                        f"{beta:g} deg, so mu is undefined there: allowed a load that keeps some "
+                        "spring compressed (sweeps through zero and tension belong in [adhesion])"
+                    )
+                plot_polar = _full_circle(scenario, polar, progress) if plots else polar
+            extensions = _extensions(scenario)
+        except ValidityError as exc:
+            # Full contact fails in its one pass over all directions, partial contact at the
+            # first offending time sample: either way within seconds, before the rest.
+            raise ValidityError(f"{exc}.{_diagnose(scenario)} {_ways_forward(scenario)}") from None
+        seconds = time.perf_counter() - started
+
+        files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, polar, scenario_path)}
+        files.update(_extension_files(scenario, extensions, scenario_path, plots))
+        summary = _summary(scenario, polar, plot_polar, scenario_path, seconds)
+        summary.update(_extension_summary(scenario, extensions))
+        extra = sorted(name for name in files if name != "polar.csv")
+        summary["files"] = ["polar.csv", "summary.json", *(["polar.png"] if plots else []), *extra]
+        if plots:
+            files["polar.png"] = _png(scenario, plot_polar)
+        summary = stamp(summary, summary["files"], _input_files(scenario_path, data))
         for name, content in files.items():
             if isinstance(content, bytes):
                 write_bytes_atomic(oset.staging / name, content)

@@ -30,13 +30,13 @@ from frictionlab.io.config import apply_overrides, load_toml
 from frictionlab.sweep.cases import check_key, format_overrides, override_strings
 from frictionlab.sweep.figures import summary_figures
 from frictionlab.sweep.ledger import (
-    file_sha256,
+    inputs_sha256,
     is_done,
     make_record,
     read_record,
     write_case,
 )
-from frictionlab.sweep.spec import SweepSpec, detect_command, parse_sweep
+from frictionlab.sweep.spec import SweepSpec, detect_command, named_files, parse_sweep
 from frictionlab.sweep.table import format_table, sweep_table
 
 HELP = "run a grid or list of scenarios (local processes or a Dask cluster), resumable"
@@ -69,12 +69,12 @@ def run(args: argparse.Namespace) -> int:
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers = {args.workers} is invalid: allowed an integer >= 1")
     spec, command, tasks = load_spec(args.sweep, plots=not args.no_plots)
-    base_sha = file_sha256(spec.base)
+    shas = {t.case_id: t.inputs_sha256 for t in tasks}
     cases_dir = out / "cases"
     records: dict[str, dict[str, Any]] = {}
     for case in spec.cases:
         record = read_record(cases_dir / case.id)
-        if is_done(record, case, base_sha):
+        if is_done(record, case, shas[case.id]):
             assert record is not None
             records[case.id] = record
     todo = [t for t in tasks if t.case_id not in records]
@@ -92,7 +92,7 @@ def run(args: argparse.Namespace) -> int:
             case = by_id[result.case_id]
             status = "ok" if result.ok else "failed"
             record = make_record(
-                case, command, base_sha, status, result.error, result.seconds,
+                case, command, shas[case.id], status, result.error, result.seconds,
                 list(result.files),
             )  # fmt: skip
             write_case(cases_dir / case.id, result.files, record)
@@ -130,6 +130,17 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
     from frictionlab.io.scenario import parse_scenario
 
     tasks = []
+    contents: dict[Path, bytes] = {}
+
+    def content(path: Path, where: str) -> bytes:
+        if path not in contents:
+            try:
+                contents[path] = path.read_bytes()
+            except OSError as exc:
+                raise InputError(f"{where}: cannot read '{path}': {exc.strerror or exc}") from None
+        return contents[path]
+
+    base_name = spec.base.name
     for case in spec.cases:
         where = f"sweep case {case.index + 1} ({format_overrides(case.overrides)})"
         for key in case.overrides:
@@ -143,7 +154,19 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
                 parse_roughness_scenario(data, spec.base.parent)
         except (InputError, ParameterError, ValidityError) as exc:
             raise InputError(f"{where}: {exc}") from None
-        tasks.append(Task(case.id, command, str(spec.base.resolve()), tuple(sets), plots))
+        # the base and the files it names travel with the task (relative names, as written,
+        # are rebuilt beside the base on the worker); absolute names must exist there too
+        files = {base_name: content(spec.base, where)}
+        hashed = dict(files)
+        for name in named_files(command, data):
+            path = Path(name) if Path(name).is_absolute() else spec.base.parent / name
+            hashed[name] = content(path, where)
+            if not Path(name).is_absolute():
+                files[name] = hashed[name]
+        tasks.append(
+            Task(case.id, command, str(spec.base.resolve()), tuple(sets), plots,
+                 tuple(files.items()), inputs_sha256(hashed))
+        )  # fmt: skip
     return tasks
 
 

@@ -9,6 +9,8 @@ four of its sliding directions), and returns a report section.
 from __future__ import annotations
 
 import contextlib
+import json
+import os
 import time
 from collections.abc import Iterator
 from importlib import resources
@@ -18,7 +20,7 @@ import numpy as np
 
 from frictionlab.demo import DemoContext
 from frictionlab.errors import FrictionlabError
-from frictionlab.io.atomic import write_text_atomic
+from frictionlab.io.atomic import write_json_atomic, write_text_atomic
 from frictionlab.io.bridge_results import run_bridge, write_bridge
 from frictionlab.io.bridge_scenario import parse_bridge_scenario
 from frictionlab.io.config import load_toml
@@ -38,6 +40,23 @@ def bundled_bridge_scenario(name: str) -> Iterator[Path]:
     ref = resources.files("frictionlab") / "data" / "bridge" / f"{name}.toml"
     with resources.as_file(ref) as path:
         yield Path(path)
+
+
+def _relative_source(summary_path: Path, source: Path) -> None:
+    """Record ``source`` in a summary relative to the summary's folder.
+
+    The demo writes into the output set's staging directory, which is renamed when the set
+    is published: an absolute path recorded there would name a directory that no longer
+    exists. ``../fitted_law.toml`` stays true wherever the output set is moved.
+    """
+    summary = json.loads(summary_path.read_text(encoding="utf-8"))
+    relative = os.path.relpath(source, summary_path.parent)
+    if summary.get("scenario") == str(source):
+        summary["scenario"] = relative
+    for item in summary.get("provenance", {}).get("inputs", []):
+        if item.get("path") == str(source):
+            item["path"] = relative
+    write_json_atomic(summary_path, summary)
 
 
 def bridge_section(ctx: DemoContext) -> Section:
@@ -64,6 +83,7 @@ def bridge_section(ctx: DemoContext) -> Section:
     if not history.success:
         raise FrictionlabError(f"demo bridge: the fitted law failed: {history.message}")
     write_results(out / "fitted_law", fitted, history, time.perf_counter() - start)
+    _relative_source(out / "fitted_law" / "summary.json", out / "fitted_law.toml")
     write_text_atomic(
         out / "fitted_law" / "scenario.toml",
         f"# The demo ran ../fitted_law.toml with: --set {override}\n"

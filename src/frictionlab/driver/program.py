@@ -129,6 +129,17 @@ def _sizes(*arrays: np.ndarray | None, tail: int = 0) -> set[int]:
     return {a.shape[0] for a in arrays if a is not None and a.ndim > tail}
 
 
+#: Most steps a traction target's ``max_step`` may ask for (its count is known only when the
+#: segment starts, after the size checks of the input).
+MAX_TARGET_STEPS = 10**7
+
+
+def _lerp(a: np.ndarray, b: np.ndarray, s: float) -> np.ndarray:
+    """``(1 - s) a + s b``: exactly ``b`` at ``s = 1`` (a target is never lost to
+    ``a + s (b - a)``'s cancellation, e.g. 1e-200 Pa from 1 Pa)."""
+    return (1.0 - s) * a + s * b
+
+
 def _vec(value: np.ndarray, n: int) -> np.ndarray:
     return np.broadcast_to(value, (n,)).astype(np.float64)
 
@@ -580,6 +591,14 @@ class _NormalPlan(SegmentPlan):
             self.target = _vec(seg.traction, n)
             if seg.max_step is not None:
                 self.steps = _count(self.target - self.start[:, 2], seg.max_step)
+                if self.steps > MAX_TARGET_STEPS:
+                    change = float(np.max(np.abs(self.target - self.start[:, 2])))
+                    raise ParameterError(
+                        "max_step",
+                        seg.max_step,
+                        f"a step that reaches the traction change {change:.6g} Pa in at most "
+                        f"{MAX_TARGET_STEPS} steps (it asks {self.steps:.3g})",
+                    )
                 self.resolved["steps"] = self.steps
         elif seg.traction_change is not None:
             self.target = self.start[:, 2] + _vec(seg.traction_change, n)
@@ -598,8 +617,7 @@ class _NormalPlan(SegmentPlan):
         zeros = np.zeros((n, 2))
         if self.target is None:
             return Control(dt, zeros, self.resolved["approach"] / self.steps)
-        fn0 = self.start[:, 2]
-        target = fn0 + (k + 1) / self.steps * (self.target - fn0)
+        target = _lerp(self.start[:, 2], self.target, (k + 1) / self.steps)
         return Control(dt, zeros, np.zeros(n), fn_target=target)
 
 
@@ -773,7 +791,7 @@ class _TablePlan(SegmentPlan):
         if self.seg.normal_traction is not None:
             a = self.start[:, 2] if i == 0 else np.full(n, self.seg.normal_traction[i])
             b = np.full(n, self.seg.normal_traction[i + 1])
-            return Control(dt, du_t, np.zeros(n), fn_target=a + (j + 1) / c * (b - a))
+            return Control(dt, du_t, np.zeros(n), fn_target=_lerp(a, b, (j + 1) / c))
         return Control(dt, du_t, np.zeros(n))
 
 

@@ -13,13 +13,14 @@ it (step doubling); otherwise both halves are refined in turn, down to
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from frictionlab.driver.program import Control
 from frictionlab.subloading import ContactState, Status, StepResult, SubloadingParams, update
+from frictionlab.subloading.kernels import SEPARATION_RTOL
 
 __all__ = [
     "Attempt",
@@ -94,11 +95,116 @@ def _solve2(J: np.ndarray, r: np.ndarray, fallback: np.ndarray) -> np.ndarray:
     return np.where(good[:, None], np.column_stack([d0, d1]), fallback)
 
 
+def _unreachable_normal_target(state: ContactState, fn_target: np.ndarray) -> Attempt | None:
+    """A failed attempt if a positive normal-traction target is zero at the scale it is reached
+    from (the separation rule of the law: at most ``SEPARATION_RTOL`` times the terms of the
+    trial normal traction, here the current normal traction and the change), else None."""
+    fn = state.traction[:, 2]
+    scale = np.maximum(np.abs(fn), np.abs(fn_target - fn))
+    lost = (fn_target > 0.0) & (fn_target <= SEPARATION_RTOL * scale)
+    if not lost.any():
+        return None
+    i = int(np.argmax(lost))
+    n = state.n_points
+    return Attempt(
+        state=state,
+        du=np.zeros((n, 3)),
+        dissipation=np.zeros(n),
+        status=np.where(lost, _FAILED, Status.STICK).astype(np.int8),
+        iterations=np.zeros(n, dtype=np.int64),
+        solves=0,
+        ok=False,
+        reason=(
+            f"the prescribed normal traction {fn_target[i]:.6g} Pa (point {i + 1}) is at most "
+            f"{SEPARATION_RTOL:g} times the normal traction {fn[i]:.6g} Pa it is reached from: "
+            "it cannot be told from zero (no contact) in that step; prescribe an approach to "
+            "open the contact, or a larger traction"
+        ),
+    )
+
+
+class _LawStep:
+    """The law's update for one control, with normal-traction targets reached exactly.
+
+    A point that is open (f_n = 0, opening ``gap``) and closes onto a prescribed normal
+    traction ``f_n^*`` is given to the law in the equivalent form that avoids the
+    cancellation of ``alpha_n (du_n - gap)`` when ``f_n^*/alpha_n << gap``: no gap, the
+    approach ``f_n^*/alpha_n`` past the closure, and the tangential slip after the
+    closure, the fraction ``c = (f_n^*/alpha_n)/(gap + f_n^*/alpha_n)`` of the step's
+    (the law loads only that fraction after a re-closing). The result is the same state,
+    reached to the rounding of ``alpha_n (f_n^*/alpha_n)``; the tangential columns of the
+    tangent are scaled by ``c`` (chain rule). ``du`` as reported is the step's own.
+    """
+
+    def __init__(
+        self, params: SubloadingParams, state: ContactState, fn_target: np.ndarray | None
+    ) -> None:
+        self.params, self.state = params, state
+        self.closing: np.ndarray | None = None
+        if fn_target is None:
+            return
+        closing = (state.traction[:, 2] <= 0.0) & (fn_target > 0.0)
+        if not closing.any():
+            return
+        alpha_n = _elastic(params, "alpha_n", state.n_points)
+        self.beyond = np.where(closing, fn_target / alpha_n, 0.0)  # approach past closure [m]
+        reach = state.gap + self.beyond
+        self.fraction = np.where(
+            closing & (reach > 0.0), self.beyond / np.where(reach > 0.0, reach, 1.0), 1.0
+        )
+        self.closing = closing
+        self.closed_form = replace(state, gap=np.where(closing, 0.0, state.gap))
+
+    def __call__(self, du: np.ndarray, dt: np.ndarray | float) -> StepResult:
+        if self.closing is None:
+            return update(self.params, self.state, du, dt, raise_on_failure=False)
+        c, sel = self.fraction, self.closing
+        local = du.copy()
+        local[sel, 2] = self.beyond[sel]
+        local[sel, :2] *= c[sel, None]
+        res = update(self.params, self.closed_form, local, dt, raise_on_failure=False)
+        tangent = res.tangent
+        if tangent.shape[0]:
+            tangent = tangent.copy()
+            tangent[:, :, :2] *= c[:, None, None]
+        failed = sel & (res.status == _FAILED)  # failed points keep their old state
+        new = res.state
+        if failed.any():
+            new = replace(new, gap=np.where(failed, self.state.gap, new.gap))
+        return replace(res, state=new, tangent=tangent)
+
+
+#: Tangential trial load over normal traction beyond which the return map cannot resolve
+#: the return in double precision (its unknown 1 - q falls below the rounding of 1).
+UNRESOLVED_LOAD_RATIO = 1e15
+
+
+def _resolution_hint(
+    params: SubloadingParams, state: ContactState, du: np.ndarray, failed: np.ndarray
+) -> str:
+    """Why a failed point may have failed: a tangential load far beyond its normal traction."""
+    n = state.n_points
+    fn = np.maximum(state.traction[:, 2], 0.0)
+    trial = state.traction[:, :2] + _elastic(params, "alpha_t", n)[:, None] * du[:, :2]
+    load = np.hypot(trial[:, 0], trial[:, 1])
+    extreme = failed & (load > UNRESOLVED_LOAD_RATIO * fn) & (fn > 0.0)
+    if not extreme.any():
+        return ""
+    i = int(np.argmax(extreme))
+    return (
+        f" (at point {i + 1} the trial tangential traction {load[i]:.3g} Pa is more than "
+        f"{UNRESOLVED_LOAD_RATIO:g} times the normal traction {fn[i]:.3g} Pa: beyond what the "
+        "return map resolves in double precision; use a larger normal traction)"
+    )
+
+
 def solve_control(params: SubloadingParams, state: ContactState, control: Control) -> Attempt:
     """Apply one mixed-control increment (no substepping).
 
     * prescribed normal traction: the approach is exact, ``(target - f_n)/alpha_n + gap``
-      (no plastic normal sliding, Eq 32);
+      (no plastic normal sliding, Eq 32); a point closing onto the target from an
+      opening is computed without cancellation against the gap (:class:`_LawStep`); a
+      positive target that is zero at the scale of its step (the separation rule) fails;
     * prescribed tangential traction: damped Newton on the (2, 2) tangential block of the
       consistent tangent, with backtracking per point; fails if the target cannot be
       reached (for example beyond what the contact can carry: gross sliding).
@@ -108,16 +214,26 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
     du[:, :2] = control.du_t
     du[:, 2] = control.du_n
     if control.fn_target is not None:
+        refused = _unreachable_normal_target(state, control.fn_target)
+        if refused is not None:
+            return refused
         alpha_n = _elastic(params, "alpha_n", n)
         du[:, 2] = (control.fn_target - state.traction[:, 2]) / alpha_n + state.gap
+    law = _LawStep(params, state, control.fn_target)
     iters = np.zeros(n, dtype=np.int64)
     if control.ft_target is None:
-        single = update(params, state, du, control.dt, raise_on_failure=False)
-        return _result_attempt(single, du, 1, iters + single.iterations)
+        single = law(du, control.dt)
+        attempt = _result_attempt(single, du, 1, iters + single.iterations)
+        if not attempt.ok:
+            attempt.reason += _resolution_hint(params, state, du, single.status == _FAILED)
+        return attempt
 
     target = control.ft_target
     alpha_t = _elastic(params, "alpha_t", n)
-    fn_new = state.traction[:, 2] + _elastic(params, "alpha_n", n) * (du[:, 2] - state.gap)
+    if control.fn_target is not None:
+        fn_new = np.asarray(control.fn_target, dtype=np.float64)
+    else:
+        fn_new = state.traction[:, 2] + _elastic(params, "alpha_n", n) * (du[:, 2] - state.gap)
     tol = TRACTION_RTOL * np.maximum(np.maximum(fn_new, np.hypot(*target.T)), 1e-300)
     du[:, :2] = (target - state.traction[:, :2]) / alpha_t[:, None]  # elastic guess
     base = du[:, :2].copy()
@@ -127,7 +243,7 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
     solves = 0
     res: StepResult | None = None
     for _ in range(MAX_TRACTION_ITERATIONS):
-        res = update(params, state, du, control.dt, raise_on_failure=False)
+        res = law(du, control.dt)
         solves += 1
         iters += res.iterations
         r = target - res.traction[:, :2]

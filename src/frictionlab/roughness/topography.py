@@ -36,6 +36,9 @@ shifted by half a pixel; a uniform translation that does not change friction).
 (first index x). A plain-text matrix is read by SurfaceTopography's ``asc`` reader, which
 takes each *row of the file* as a line at constant y (the layout Gwyddion and
 ``Topography.to_matrix`` write): save an array with ``numpy.savetxt(name, heights.T)``.
+A text file of 2 or 3 values per line could also be x y [z] points: it needs
+``format = "asc"`` (a matrix) or ``format = "xyz"`` (points); rows of unequal length are
+refused, naming the line.
 The sliding direction beta is measured from x.
 
 **Preparation** (:func:`prepare_topography`, in this order, each optional):
@@ -53,6 +56,7 @@ from __future__ import annotations
 import hashlib
 import math
 import os
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -447,6 +451,15 @@ def read_prepared(
         raise InputError(f"cannot read surface file '{name}': {_describe(exc)}") from None
     if os.path.getsize(name) == 0:
         raise InputError(f"cannot read surface file '{name}': the file is empty")
+    if format in (None, "asc", "xyz", "matrix"):
+        columns = _check_text_rows(name)
+        if format is None and columns in (2, 3):
+            raise ParameterError(
+                "format",
+                None,
+                f"'asc' (a height matrix, one row per y) or 'xyz' (one x y [z] point per line) "
+                f"for '{name}': a text file of {columns} values per line could be either",
+            )
     if unit is not None:
         try:
             _unit_factor(unit)
@@ -500,6 +513,52 @@ def read_prepared(
         "channel": channel,
     }
     return PreparedSurface(prepared.surface, {**source, **prepared.info}, prepared.warnings)
+
+
+#: Separators of the values on a row of a plain-text height matrix.
+_TEXT_SEPARATORS = re.compile(r"[\s,;]+")
+
+
+def _numeric_row(line: str) -> int:
+    """Number of values on a row of numbers (0 if the line is not made of numbers only)."""
+    tokens = [t for t in _TEXT_SEPARATORS.split(line.strip()) if t]
+    try:
+        for token in tokens:
+            float(token)
+    except ValueError:
+        return 0
+    return len(tokens)
+
+
+def _check_text_rows(name: str) -> int:
+    """Refuse a plain-text height matrix whose rows of numbers differ in length.
+
+    Returns the number of values per row (0 for binary files and text without rows of
+    numbers, which are left to the readers). Raises
+    :class:`~frictionlab.errors.InputError` naming the first row of another length.
+    """
+    try:
+        with open(name, "rb") as handle:
+            head = handle.read(4096)
+            if b"\0" in head:
+                return 0
+            raw = head + handle.read()
+        text = raw.decode("utf-8")
+    except (OSError, UnicodeDecodeError):
+        return 0
+    expected = 0
+    for number, line in enumerate(text.splitlines(), start=1):
+        count = _numeric_row(line)
+        if count == 0:
+            continue
+        if expected == 0:
+            expected = count
+        elif count != expected:
+            raise InputError(
+                f"cannot read surface file '{name}': line {number} has {count} values, "
+                f"expected {expected} (every row of a height matrix has the same length)"
+            )
+    return expected
 
 
 def _describe(exc: Exception) -> str:

@@ -12,8 +12,10 @@
     # [[case]]
     # "law.mu_s" = 0.6
 
-Keys are the dotted names of ``--set`` (bare dotted keys work too); ``+`` links grid keys
-that take the same value. Every key must be present in the base scenario.
+Keys are the dotted names of ``--set`` (bare dotted keys work too); ``+`` links keys that
+take the same value (in ``[grid]`` and in ``[[case]]``); keys that vary together with
+different values are listed as ``[[case]]`` tables. Every key must be present in the base
+scenario.
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ from typing import Any
 from frictionlab.errors import InputError
 from frictionlab.sweep.cases import LINK, Case, expand_grid, make_cases
 
-__all__ = ["COMMANDS", "SweepSpec", "detect_command", "parse_sweep"]
+__all__ = ["COMMANDS", "SweepSpec", "detect_command", "named_files", "parse_sweep"]
 
 #: Scenario commands a sweep can run.
 COMMANDS = ("simulate", "roughness")
@@ -91,6 +93,26 @@ def detect_command(base: Mapping[str, Any], given: str | None) -> str:
     )
 
 
+def named_files(command: str, data: Mapping[str, Any]) -> list[str]:
+    """The input files a (validated) scenario names, as written (relative to its folder).
+
+    simulate: the ``file`` of every ``kind = "table"`` programme segment; roughness: the
+    ``path`` of a ``kind = "file"`` surface.
+    """
+    names: list[str] = []
+    if command == "simulate":
+        program = data.get("program")
+        for seg in program if isinstance(program, list) else ():
+            if isinstance(seg, dict) and seg.get("kind") == "table":
+                names.append(str(seg["file"]))
+    else:
+        for side in ("lower", "upper"):
+            table = data.get(side)
+            if isinstance(table, dict) and table.get("kind") == "file":
+                names.append(str(table["path"]))
+    return list(dict.fromkeys(names))
+
+
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
     """Nested tables -> dotted keys (bare ``program.2.duration = ...`` nests in TOML)."""
     out: dict[str, Any] = {}
@@ -114,9 +136,17 @@ def _grid(raw: Any) -> dict[str, list[Any]]:
     grid = _flatten(raw)
     if not grid:
         raise InputError('[grid] is empty: give at least one "section.key" = [values]')
+    owner: dict[str, str] = {}
     for key, values in grid.items():
         if not all(key.split(LINK)):
             raise InputError(f"[grid].'{key}' has an empty key around '{LINK}'")
+        for part in key.split(LINK):
+            if part in owner:
+                raise InputError(
+                    f"[grid] sets '{part}' twice ('{owner[part]}' and '{key}'): give each "
+                    "key one axis"
+                )
+            owner[part] = key
         if not isinstance(values, list) or not values:
             raise InputError(f"[grid].'{key}' must be a non-empty list of values, got {values!r}")
         for v in values:
@@ -134,7 +164,14 @@ def _case_list(raw: Any) -> list[dict[str, Any]]:
         flat = _flatten(item)
         if not flat:
             raise InputError(f'[[case]] #{i} is empty: give at least one "section.key" = value')
+        linked: dict[str, Any] = {}
         for key, value in flat.items():
             _check_value(f"[[case]] #{i}.{key}", value)
-        out.append(flat)
+            if not all(key.split(LINK)):
+                raise InputError(f"[[case]] #{i}.'{key}' has an empty key around '{LINK}'")
+            for part in key.split(LINK):  # "a.x+b.y" = v: the same value for each key
+                if part in linked:
+                    raise InputError(f"[[case]] #{i} sets '{part}' twice")
+                linked[part] = value
+        out.append(linked)
     return out

@@ -226,3 +226,34 @@ def test_failure_leaves_an_existing_directory_untouched(tmp_path, capsys) -> Non
     scenario = tmp_path / "scenario.toml"
     assert main(["roughness", str(scenario), "--out", str(tmp_path / "file")]) == 2
     assert "not a directory" in capsys.readouterr().err
+
+
+def test_the_output_lock_is_held_for_the_whole_run(tmp_path, capsys, monkeypatch) -> None:
+    """A second run on the same --out is refused while the first is still computing."""
+    from frictionlab.commands import roughness as command
+    from frictionlab.errors import InputError
+    from frictionlab.io.output_set import output_set
+
+    out = tmp_path / "out"
+    real = command.friction_polar
+    seen: list[str] = []
+
+    def computing(*args, **kwargs):
+        with (
+            pytest.raises(InputError, match="being written by another frictionlab run"),
+            output_set(out),
+        ):
+            pass  # pragma: no cover - the lock is held by the run
+        seen.append("refused")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(command, "friction_polar", computing)
+    code, _ = run_cli(tmp_path, WEDGE_1D.replace("stations = 16000", "stations = 2000"))
+    assert code == 0 and seen and set(seen) == {"refused"}
+    assert (out / "summary.json").is_file()
+    # and a run that holds the lock keeps this command from starting its computation
+    seen.clear()
+    with output_set(out, overwrite=True):
+        code, _ = run_cli(tmp_path, WEDGE_1D, "--overwrite")
+    assert code == 2 and seen == []
+    assert "being written by another frictionlab run" in capsys.readouterr().err
