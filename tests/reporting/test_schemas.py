@@ -43,12 +43,8 @@ def test_simulate_summary_has_the_provenance_block(tmp_path: Path, check_summary
     assert prov["inputs"] == [{"path": str(scenario), "sha256": digest}]
     assert {"numpy", "scipy", "pandas"} <= set(prov["dependencies"])
     # the common keys, and the older names kept for one release
-    assert summary["files"] == summary["outputs"] == [
-        "history.csv",
-        "points.csv",
-        "healing.csv",
-        "summary.json",
-    ]
+    files = ["history.csv", "points.csv", "healing.csv", "summary.json"]
+    assert summary["files"] == summary["outputs"] == files
     assert summary["frictionlab_version"] == summary["frictionlab"]
 
 
