@@ -342,11 +342,17 @@ class Recorder:
         self.max_held_rows = max(self.max_held_rows, rows + self.kept_rows)
         if self.sink is not None:
             self.sink(self._chunk_view(rows))
-        self.kept.append({k: v[:rows].copy() for k, v in self.buf.items()})
-        self.kept_rows += rows
+        if self.keep is not None and self.stride > 1:  # thin the new rows as the kept ones
+            sel = (self.buf["_index"][:rows] % self.stride == 0) | (self.buf["_end"][:rows] != 0)
+            self.kept.append({k: v[:rows][sel] for k, v in self.buf.items()})
+        else:
+            self.kept.append({k: v[:rows].copy() for k, v in self.buf.items()})
+        self.kept_rows += int(self.kept[-1]["step"].size)
         self.fill = 0
         if self.keep is not None and self.kept_rows > self.keep:
             self._thin()
+        elif self.keep is not None and len(self.kept) > 16:  # few rows each: merge them
+            self.kept = [self._merged()]
 
     def _thin(self) -> None:
         """Halve the kept rows (every 2*stride-th recorded row and segment ends stay)."""
