@@ -315,6 +315,9 @@ def summarise(
     }
     if healing is not None:
         out["healing"] = healing.as_dict()
+        records = out["healing"]["records"]
+        out["healing"]["records"] = [r for r in records if r["point"] <= SUMMARY_POINTS]
+        out["healing"]["records_file"] = "healing.csv"
     if scenario.kind == "spring_slider" and history.n_rows > 1:
         machine = history.segments[0].resolved
         out["stick_slip"] = {
