@@ -33,6 +33,7 @@ def run(args: argparse.Namespace) -> int:
     from frictionlab.io.output_set import check_out, output_set
     from frictionlab.io.results import PLOT_ROWS, HistoryStream, write_results
     from frictionlab.io.scenario import load_scenario
+    from frictionlab.plotting.law import shown_points
 
     out = check_out(args.out, args.overwrite)
     scenario = load_scenario(args.scenario, args.set)  # every input check happens here
@@ -42,8 +43,9 @@ def run(args: argparse.Namespace) -> int:
         with progress_bar(f"simulate {args.scenario.name}", enabled=not args.quiet) as progress:
             if scenario.kind == "program":
                 path = oset.staging / "history.csv"
+                shown = shown_points(scenario.output.recorded_points(scenario.n_points))
                 with HistoryStream(path, cone=scenario.params.is_cone) as stream:
-                    history = scenario.run(progress=progress, sink=stream, keep_rows=PLOT_ROWS)
+                    history = scenario.run(progress, stream, PLOT_ROWS, shown.tolist())
             else:
                 history = scenario.run(progress=progress)
         elapsed = time.perf_counter() - start

@@ -48,6 +48,10 @@ POINT_FIELDS: dict[str, tuple[tuple[int, ...], Any]] = {
     "status": ((), np.int8),
     "iterations": ((), np.int64),
 }
+#: Bytes of one recorded row per point (the fields above).
+ROW_BYTES = 97
+#: Largest chunk of rows [bytes] the recorder buffers before handing it on.
+CHUNK_BYTES = 8 * 2**20
 #: Per-row values shared by the points.
 ROW_FIELDS = ("step", "segment", "substeps", "solves")
 _INTERNAL = ("_index", "_end")  # recorded-row counter; segment end (kept when thinning)
@@ -74,11 +78,15 @@ class Recording:
         ``sink(chunk)`` called with each chunk of recorded rows as it fills (for example a
         CSV writer), so the rows need not stay in memory.
     chunk_rows:
-        Rows per chunk handed to the sink.
+        Most rows per chunk handed to the sink (fewer for many points: a chunk holds at
+        most about :data:`CHUNK_BYTES`).
     keep_rows:
         With a sink: the most rows the returned History keeps in memory (thinned evenly:
         every 2^j-th recorded row plus each segment's ends; ``History.thinned`` tells).
         None keeps every recorded row.
+    keep_points:
+        With a sink: positions among the recorded points that the returned History keeps
+        (for plots of a few curves); None keeps them all.
     """
 
     every: int = 1
@@ -86,6 +94,7 @@ class Recording:
     sink: RowSink | None = None
     chunk_rows: int = 1024
     keep_rows: int | None = None
+    keep_points: Sequence[int] | None = None
 
     def checked_points(self, n: int) -> np.ndarray | None:
         """The recorded points as an int64 array (None: all); ParameterError if invalid."""
@@ -169,10 +178,23 @@ class Recorder:
         sel = self.selected
         self.m = n if sel is None else int(sel.size)
         self.every = int(rec.every)
-        self.chunk = int(rec.chunk_rows)
+        self.chunk = max(1, min(int(rec.chunk_rows), CHUNK_BYTES // (ROW_BYTES * self.m)))
         self.keep = None if rec.keep_rows is None or rec.sink is None else int(rec.keep_rows)
         self.sink = rec.sink
         self.points = (np.arange(n) if sel is None else sel) + 1
+        kp = None if rec.sink is None or rec.keep_points is None else rec.keep_points
+        self.keep_points = None if kp is None else np.asarray(kp, dtype=np.int64)
+        if self.keep_points is not None and (
+            self.keep_points.ndim != 1
+            or np.any(self.keep_points < 0)
+            or np.any(self.keep_points >= self.m)
+        ):
+            raise ParameterError("keep_points", kp, f"positions 0..{self.m - 1}")
+        #: 0-based indices of the points the returned History holds (None: all N).
+        self.kept_points = sel
+        if self.keep_points is not None:
+            base = np.arange(n) if sel is None else sel
+            self.kept_points = base[self.keep_points]
         self.buf: dict[str, np.ndarray] = {
             name: np.empty((self.chunk, self.m, *shape), dtype=dt)
             for name, (shape, dt) in POINT_FIELDS.items()
@@ -342,11 +364,18 @@ class Recorder:
         self.max_held_rows = max(self.max_held_rows, rows + self.kept_rows)
         if self.sink is not None:
             self.sink(self._chunk_view(rows))
+        kp = self.keep_points
         if self.keep is not None and self.stride > 1:  # thin the new rows as the kept ones
             sel = (self.buf["_index"][:rows] % self.stride == 0) | (self.buf["_end"][:rows] != 0)
-            self.kept.append({k: v[:rows][sel] for k, v in self.buf.items()})
         else:
-            self.kept.append({k: v[:rows].copy() for k, v in self.buf.items()})
+            sel = slice(None)
+        kept = {}
+        for k, v in self.buf.items():
+            part = v[:rows][sel]
+            if kp is not None and k in POINT_FIELDS:
+                part = part[:, kp]
+            kept[k] = part.copy() if part.base is not None else part
+        self.kept.append(kept)
         self.kept_rows += int(self.kept[-1]["step"].size)
         self.fill = 0
         if self.keep is not None and self.kept_rows > self.keep:

@@ -344,7 +344,7 @@ def _history_from_rows(rows: dict[str, np.ndarray], rec: Recorder, **kw: Any) ->
         solves=rows["solves"],
         iterations=rows["iterations"],
         step=rows["step"],
-        points=rec.selected,
+        points=rec.kept_points,
         stats=rec.stats,
         thinned=rec.thinned,
         **kw,

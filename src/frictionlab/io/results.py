@@ -499,13 +499,17 @@ def _plot_healing(out: Path, scenario: Scenario, healing: Healing) -> Path:
     return save_figure(ax.figure, out / "healing.png")  # type: ignore[arg-type]
 
 
-def _plot_note(history: History, every: int) -> str:
-    """What the plotted rows are, for the figure title."""
+def _plot_note(history: History, scenario: Scenario) -> str:
+    """What the plotted rows and points are, for the figure title."""
+    notes = []
     if history.thinned:
-        return f"\n(plotted: {history.n_rows} evenly spread rows of {history.steps[-1]} steps)"
-    if every > 1:
-        return f"\n(every {every}th step recorded)"
-    return ""
+        notes.append(f"{history.n_rows} evenly spread rows of {history.steps[-1]} steps")
+    elif scenario.output.every > 1:
+        notes.append(f"every {scenario.output.every}th step")
+    recorded = scenario.output.recorded_points(scenario.n_points)
+    if history.n_points < recorded:
+        notes.append(f"{history.n_points} of {recorded} points")
+    return f"\n(plotted: {'; '.join(notes)})" if notes else ""
 
 
 def _plots(out: Path, scenario: Scenario, full: History) -> list[Path]:
@@ -522,7 +526,7 @@ def _plots(out: Path, scenario: Scenario, full: History) -> list[Path]:
         scenario.labels[p - 1] if p - 1 < len(scenario.labels) else f"point {p}"
         for p in history.point_numbers
     )
-    title = scenario.title + _plot_note(history, scenario.output.every)
+    title = scenario.title + _plot_note(history, scenario)
     if scenario.kind == "spring_slider":
         fig = plot_spring_slider(history, labels)
         fig.suptitle(title)

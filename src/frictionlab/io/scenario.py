@@ -313,10 +313,21 @@ class OutputOptions:
     every: int = 1
     points: tuple[int, ...] | None = None
 
-    def recording(self, sink: RowSink | None = None, keep_rows: int | None = None) -> Recording:
+    def recording(
+        self,
+        sink: RowSink | None = None,
+        keep_rows: int | None = None,
+        keep_points: Sequence[int] | None = None,
+    ) -> Recording:
         """The driver's :class:`~frictionlab.driver.recorder.Recording` (0-based points)."""
         pts = None if self.points is None else tuple(p - 1 for p in self.points)
-        return Recording(every=self.every, points=pts, sink=sink, keep_rows=keep_rows)
+        return Recording(
+            every=self.every, points=pts, sink=sink, keep_rows=keep_rows, keep_points=keep_points
+        )
+
+    def recorded_points(self, n: int) -> int:
+        """How many points are recorded out of ``n``."""
+        return n if self.points is None else len(self.points)
 
 
 def _parse_output(t: TomlTable | None) -> OutputOptions:
@@ -523,20 +534,22 @@ class Scenario:
         progress: ProgressCallback | None = None,
         sink: RowSink | None = None,
         keep_rows: int | None = None,
+        keep_points: Sequence[int] | None = None,
     ) -> History:
         """Simulate the scenario (never raises for a failed computation: see History.success).
 
         A programme records as ``[output]`` says; ``sink`` receives the recorded rows in
-        chunks as they are computed and ``keep_rows`` then bounds the rows kept in memory
-        (see :class:`~frictionlab.driver.recorder.Recording`). The spring-slider records
-        every step in memory (``[output]`` is applied when its history is written).
+        chunks as they are computed; ``keep_rows`` and ``keep_points`` then bound what
+        stays in memory (see :class:`~frictionlab.driver.recorder.Recording`). The
+        spring-slider records every step in memory (``[output]`` is applied when its
+        history is written).
         """
         opts = self.run_options
         if self.program is not None:
             return simulate(
                 self.params, self.program, self.initial, n_points=self.n_points,
                 accuracy=opts.accuracy, max_halvings=opts.max_halvings, progress=progress,
-                recording=self.output.recording(sink, keep_rows),
+                recording=self.output.recording(sink, keep_rows, keep_points),
             )  # fmt: skip
         assert self.machine is not None
         m = self.machine
