@@ -195,12 +195,11 @@ class Recorder:
         if self.keep_points is not None:
             base = np.arange(n) if sel is None else sel
             self.kept_points = base[self.keep_points]
-        self.buf: dict[str, np.ndarray] = {
-            name: np.empty((self.chunk, self.m, *shape), dtype=dt)
-            for name, (shape, dt) in POINT_FIELDS.items()
-        }
-        for name in (*ROW_FIELDS, *_INTERNAL):
-            self.buf[name] = np.empty(self.chunk, dtype=np.int64)
+        #: Every recorded row stays in memory: rows are written once into arrays that
+        #: grow (by doubling, or to ``reserve``); chunks go to the sink as views of them.
+        self.store_all = self.keep is None and self.keep_points is None
+        self.sent = 0  # rows of the store already handed to the sink
+        self.buf = self._alloc(self.chunk)
         self.kind_names: list[str] = ["initial"]
         self.fill = 0
         self.kept: list[dict[str, np.ndarray]] = []
@@ -224,6 +223,31 @@ class Recorder:
         self._seg_index = 0
         self._seg_k = 0
         self._write_row(0, 0, True)
+
+    def _alloc(self, rows: int) -> dict[str, np.ndarray]:
+        buf = {
+            name: np.empty((rows, self.m, *shape), dtype=dt)
+            for name, (shape, dt) in POINT_FIELDS.items()
+        }
+        for name in (*ROW_FIELDS, *_INTERNAL):
+            buf[name] = np.empty(rows, dtype=np.int64)
+        return buf
+
+    def reserve(self, rows: int) -> None:
+        """Make room for ``rows`` recorded rows in all (an estimate: more still fit)."""
+        if self.store_all and rows > self.buf["step"].shape[0]:
+            self._grow(rows)
+
+    def _grow(self, rows: int) -> None:
+        new = self._alloc(rows)
+        for k, v in self.buf.items():
+            new[k][: self.fill] = v[: self.fill]
+        self.buf = new
+
+    def planned_rows(self, counts: Sequence[int]) -> int:
+        """Rows recorded for segments of ``counts`` steps (row 0 included)."""
+        e = self.every
+        return 1 + sum(c // e + 2 for c in counts if c > 0)
 
     # ------------------------------------------------------------------ segments
     def begin_segment(self, index: int, kind: str) -> None:
@@ -340,8 +364,19 @@ class Recorder:
         b["_end"][j] = end or status is None
         self.recorded += 1
         self.fill = j + 1
-        if self.fill == self.chunk:
+        if self.store_all:
+            if self.sink is not None and self.fill - self.sent >= self.chunk:
+                self._send()
+            if self.fill == self.buf["step"].shape[0]:
+                self._grow(2 * self.fill)
+        elif self.fill == self.chunk:
             self.flush()
+
+    def _send(self) -> None:
+        """Hand the stored rows not yet sent to the sink (views, no copy)."""
+        if self.sink is not None and self.fill > self.sent:
+            self.sink(self._chunk_view(self.sent, self.fill))
+        self.sent = self.fill
 
     def _mark_end(self) -> None:
         """Mark the last recorded row as a segment end."""
@@ -350,8 +385,8 @@ class Recorder:
         elif self.kept:
             self.kept[-1]["_end"][-1] = 1
 
-    def _chunk_view(self, rows: int) -> dict[str, np.ndarray]:
-        out = {k: v[:rows] for k, v in self.buf.items() if not k.startswith("_")}
+    def _chunk_view(self, start: int, stop: int) -> dict[str, np.ndarray]:
+        out = {k: v[start:stop] for k, v in self.buf.items() if not k.startswith("_")}
         out["point"] = self.points
         out["kind"] = np.array(self.kind_names, dtype=object)[out["segment"]]
         return out
@@ -363,7 +398,7 @@ class Recorder:
             return
         self.max_held_rows = max(self.max_held_rows, rows + self.kept_rows)
         if self.sink is not None:
-            self.sink(self._chunk_view(rows))
+            self.sink(self._chunk_view(0, rows))
         kp = self.keep_points
         if self.keep is not None and self.stride > 1:  # thin the new rows as the kept ones
             sel = (self.buf["_index"][:rows] % self.stride == 0) | (self.buf["_end"][:rows] != 0)
@@ -408,6 +443,10 @@ class Recorder:
 
     def finish(self) -> dict[str, np.ndarray]:
         """Flush the last rows; the kept rows (time first) and their per-row values."""
+        if self.store_all:
+            self._send()
+            self.max_held_rows = self.buf["step"].shape[0]
+            return {k: v[: self.fill] for k, v in self.buf.items()}
         self.flush()
         merged = self._merged()
         if self.keep is not None and merged["step"].size > self.keep:
