@@ -13,6 +13,7 @@ import pytest
 from frictionlab.cli import main
 from frictionlab.driver import Recording, simulate
 from frictionlab.driver.table import history_columns
+from frictionlab.io import results
 from frictionlab.io.results import SUMMARY_POINTS
 from frictionlab.io.scenario import parse_scenario
 from frictionlab.io.tables import format_csv
@@ -122,3 +123,14 @@ def test_many_points_keep_summary_json_small(tmp_path: Path) -> None:
 def test_recording_points_are_zero_based_in_python() -> None:
     scenario = parse_scenario(tomllib.loads(SCENARIO.format(n=3) + "[output]\npoints = [3]\n"))
     assert scenario.output.recording() == Recording(every=1, points=(2,))
+
+
+def test_csv_written_in_small_blocks_is_the_same_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Formatting a few lines at a time (bounded memory) changes nothing in the files."""
+    whole = _run(tmp_path, 5, name="whole")
+    monkeypatch.setattr(results, "CSV_BLOCK", 3)  # fewer lines than points per row
+    blocks = _run(tmp_path, 5, name="blocks")
+    for name in ("history.csv", "points.csv"):
+        assert (blocks / name).read_text() == (whole / name).read_text(), name

@@ -36,7 +36,7 @@ from frictionlab.driver.table import (
     history_units,
 )
 from frictionlab.errors import FrictionlabError
-from frictionlab.io.atomic import write_json_atomic
+from frictionlab.io.atomic import atomic_path, write_json_atomic
 from frictionlab.io.provenance import stamp
 from frictionlab.io.scenario import OutputOptions, Scenario
 from frictionlab.io.tables import format_csv, write_csv_atomic
@@ -81,6 +81,34 @@ POINT_UNITS: dict[str, str] = {
 }
 
 
+#: Lines of CSV formatted at a time (bounds the text and string lists held in memory).
+CSV_BLOCK = 65536
+_ROW_KEYS = ("step", "segment", "kind", "substeps", "solves")
+
+
+def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict[str, np.ndarray]:
+    """Some rows and points of a chunk of recorded rows."""
+    out = {}
+    for key, value in chunk.items():
+        if key in _ROW_KEYS:
+            out[key] = value[rows]
+        elif key == "point":
+            out[key] = value[points]
+        else:
+            out[key] = value[rows, points]
+    return out
+
+
+def _write_csv_blocks(path: Path, cols: dict[str, np.ndarray], units: dict[str, str]) -> Path:
+    """Like ``write_csv_atomic``, formatting CSV_BLOCK lines at a time (bounded memory)."""
+    n = len(next(iter(cols.values())))
+    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="") as handle:
+        for start in range(0, max(n, 1), CSV_BLOCK):
+            text = format_csv({k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units)
+            handle.write(text if start == 0 else text[text.index("\n") + 1 :])
+    return path
+
+
 class HistoryStream:
     """A recording sink that appends the recorded rows to ``history.csv`` as they come.
 
@@ -100,6 +128,13 @@ class HistoryStream:
         self._file = open(self.path, "w", encoding="utf-8", newline="")  # noqa: SIM115
 
     def __call__(self, chunk: dict[str, np.ndarray]) -> None:
+        rows, m = chunk["time"].shape
+        per = max(1, CSV_BLOCK // m)  # format at most about CSV_BLOCK lines at a time
+        for r0 in range(0, rows, per):
+            for p0 in range(0, m, CSV_BLOCK):
+                self._write(_sub_chunk(chunk, slice(r0, r0 + per), slice(p0, p0 + CSV_BLOCK)))
+
+    def _write(self, chunk: dict[str, np.ndarray]) -> None:
         cols = chunk_columns(chunk, self.extra)
         text = format_csv(cols, self.units)
         if self.rows:
@@ -448,7 +483,7 @@ def _write_points(out: Path, history: History, cone: bool) -> Path:
             name = f"segment_{seg.index}_{key}"
             cols[name] = np.asarray(values)
             units[name] = f_unit if key == "final_F" else "-"
-    return write_csv_atomic(out / "points.csv", cols, units)
+    return _write_csv_blocks(out / "points.csv", cols, units)
 
 
 def _inputs(scenario: Scenario) -> list[Path]:
