@@ -60,8 +60,11 @@ _INTERNAL = ("_index", "_end")  # recorded-row counter; segment end (kept when t
 def _ratio(traction: np.ndarray) -> np.ndarray:
     """|f_t| / f_n, 0 where open."""
     fn = traction[:, 2]
-    ft = np.hypot(traction[:, 0], traction[:, 1])
-    return np.where(fn > 0.0, ft / np.where(fn > 0.0, fn, 1.0), 0.0)
+    out = np.hypot(traction[:, 0], traction[:, 1])
+    closed = fn > 0.0
+    np.divide(out, fn, out=out, where=closed)
+    out[~closed] = 0.0
+    return out
 
 
 @dataclass(frozen=True)
@@ -303,14 +306,14 @@ class Recorder:
         s.friction_ratio = ratio
         up = ratio > s.peak_friction_ratio
         if up.any():
-            s.peak_friction_ratio = np.where(up, ratio, s.peak_friction_ratio)
-            s.peak_step[up] = s.steps
-            s.peak_time[up] = s.time[up]
-            s.peak_path_length[up] = s.path_length[up]
-        up = ratio > seg.peak_friction_ratio
+            np.copyto(s.peak_friction_ratio, ratio, where=up)
+            np.copyto(s.peak_step, s.steps, where=up)
+            np.copyto(s.peak_time, s.time, where=up)
+            np.copyto(s.peak_path_length, s.path_length, where=up)
+        up = np.greater(ratio, seg.peak_friction_ratio, out=up)
         if up.any():
-            seg.peak_friction_ratio = np.where(up, ratio, seg.peak_friction_ratio)
-            seg.peak_time[up] = s.time[up]
+            np.copyto(seg.peak_friction_ratio, ratio, where=up)
+            np.copyto(seg.peak_time, s.time, where=up)
         np.maximum(seg.max_normal_traction, traction[:, 2], out=seg.max_normal_traction)
         self.state = state
         k = self._seg_k
