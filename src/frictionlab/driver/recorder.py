@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab.driver._running import accumulate
 from frictionlab.errors import ParameterError
 
 __all__ = ["Recorder", "Recording", "RowSink", "RunStats", "SegmentStats"]
@@ -296,25 +297,14 @@ class Recorder:
         assert seg is not None
         s.steps += 1
         seg.last_step = s.steps
-        s.time += dt
-        s.slip += du[:, :2]
-        s.approach += du[:, 2]
-        s.plastic_work += work
-        s.path_length += np.hypot(du[:, 0], du[:, 1])
-        traction = state.traction
-        ratio = _ratio(traction)
+        ratio = np.empty(s.time.shape[0])
+        accumulate(
+            s.steps, np.atleast_1d(np.asarray(dt, dtype=np.float64)), du, work,
+            state.traction, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
+            ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
+            seg.peak_friction_ratio, seg.peak_time, seg.max_normal_traction,
+        )  # fmt: skip
         s.friction_ratio = ratio
-        up = ratio > s.peak_friction_ratio
-        if up.any():
-            np.copyto(s.peak_friction_ratio, ratio, where=up)
-            np.copyto(s.peak_step, s.steps, where=up)
-            np.copyto(s.peak_time, s.time, where=up)
-            np.copyto(s.peak_path_length, s.path_length, where=up)
-        up = np.greater(ratio, seg.peak_friction_ratio, out=up)
-        if up.any():
-            np.copyto(seg.peak_friction_ratio, ratio, where=up)
-            np.copyto(seg.peak_time, s.time, where=up)
-        np.maximum(seg.max_normal_traction, traction[:, 2], out=seg.max_normal_traction)
         self.state = state
         k = self._seg_k
         self._seg_k = k + 1
