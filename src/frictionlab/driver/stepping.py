@@ -104,16 +104,17 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
       reached (for example beyond what the contact can carry: gross sliding).
     """
     n = state.n_points
-    du = np.zeros((n, 3))
+    du = np.empty((n, 3))
     du[:, :2] = control.du_t
-    du[:, 2] = control.du_n
     if control.fn_target is not None:
         alpha_n = _elastic(params, "alpha_n", n)
         du[:, 2] = (control.fn_target - state.traction[:, 2]) / alpha_n + state.gap
-    iters = np.zeros(n, dtype=np.int64)
+    else:
+        du[:, 2] = control.du_n
     if control.ft_target is None:
         single = update(params, state, du, control.dt, raise_on_failure=False)
-        return _result_attempt(single, du, 1, iters + single.iterations)
+        return _result_attempt(single, du, 1, single.iterations)
+    iters = np.zeros(n, dtype=np.int64)
 
     target = control.ft_target
     alpha_t = _elastic(params, "alpha_t", n)
