@@ -225,3 +225,34 @@ def test_a_slide_hold_slide_sweep_keeps_its_healing_analysis_when_thinned() -> N
     thin = simulate(set_a(), prog, recording=Recording(sink=lambda c: None, keep_rows=20))
     assert thin.thinned and thin.n_rows < 60
     assert healing_analysis(thin) == healing_analysis(full)
+
+
+@pytest.mark.parametrize("chunk", [1, 2, 3, 4, 5])
+def test_a_failed_run_thinned_in_memory_still_ends_on_its_last_step(chunk: int) -> None:
+    """Whatever chunk boundary the failure falls on, the last completed step stays."""
+    prog = (
+        Slide(velocity=0.1, distance=0.5, steps=50),
+        TractionControl(traction=(0.6, 0.0), steps=10),
+    )
+    full = simulate(set_a(), prog)
+    rec = Recording(every=3, sink=lambda c: None, chunk_rows=chunk, keep_rows=4)
+    thin = simulate(set_a(), prog, recording=rec)
+    assert thin.steps[-1] == full.n_rows - 1
+    for seg in thin.segments:
+        assert thin.steps[seg.last_row] == seg.stats.last_step  # type: ignore[union-attr]
+        assert thin.steps[seg.first_row] == seg.stats.first_step  # type: ignore[union-attr]
+
+
+def test_a_run_stopped_on_a_recorded_step_keeps_it_when_thinning() -> None:
+    """The stop falls on a regular recorded row already handed on and thinned away."""
+    rec = Recorder(_state(0.0), Recording(every=3, sink=lambda c: None, chunk_rows=1, keep_rows=2))
+    du, zero = np.array([[1e-6, 0.0, 0.0]]), np.zeros(1)
+    status, iters = np.zeros(1, np.int8), np.zeros(1, np.int64)
+    rec.begin_segment(1, "slide")
+    for k in range(12):  # steps 1..12 of 20 planned; recorded: 1, 3, 6, 9, 12
+        rec.add(_state(0.1 * k), 0.01, du, zero, status, 1, 1, iters, False)
+    seg = rec.end_segment()  # the run stopped here (a failed step 13)
+    rows = rec.finish()
+    assert seg is not None and seg.last_step == 12
+    assert rows["step"][-1] == 12 and rows["_end"][-1] == 1
+    np.testing.assert_array_equal(rows["traction"][-1], _state(1.1).traction)

@@ -395,6 +395,7 @@ class Recorder:
         kp = self.keep_points
         if self.keep is not None and self.stride > 1:  # thin the new rows as the kept ones
             sel = (self.buf["_index"][:rows] % self.stride == 0) | (self.buf["_end"][:rows] != 0)
+            sel[-1] = True  # the newest row may yet be marked a segment end (a failed step)
         else:
             sel = slice(None)
         kept = {}
@@ -418,6 +419,7 @@ class Recorder:
         while merged["step"].size > self.keep:
             self.stride *= 2
             keep = (merged["_index"] % self.stride == 0) | (merged["_end"] != 0)
+            keep[-1] = True  # the newest row may yet be marked a segment end
             if keep.all():
                 break
             merged = {k: v[keep] for k, v in merged.items()}
