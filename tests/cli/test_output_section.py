@@ -11,6 +11,7 @@ import pandas as pd
 import pytest
 
 from frictionlab.cli import main
+from frictionlab.demo import bundled_scenario
 from frictionlab.driver import Recording, simulate
 from frictionlab.driver.table import history_columns
 from frictionlab.io import results
@@ -134,3 +135,22 @@ def test_csv_written_in_small_blocks_is_the_same_file(
     blocks = _run(tmp_path, 5, name="blocks")
     for name in ("history.csv", "points.csv"):
         assert (blocks / name).read_text() == (whole / name).read_text(), name
+
+
+def test_output_selects_the_rows_of_a_spring_slider(tmp_path: Path) -> None:
+    """The spring-slider records in memory; [output] chooses what history.csv holds."""
+    outs = {}
+    for name, extra in (
+        ("all", []),
+        ("part", ["--set", "output.every=10", "--set", "output.points=[2]"]),
+    ):
+        with bundled_scenario("stick_slip") as path:
+            args = ["simulate", str(path), "--out", str(tmp_path / name), "--quiet", "--no-plots"]
+            args += ["--set", "machine.steps=205"]
+            assert main([*args, *extra]) == 0
+        outs[name] = pd.read_csv(tmp_path / name / "history.csv")
+    full, part = outs["all"], outs["part"]
+    last = full["step [-]"].max()
+    steps = sorted({*range(0, last + 1, 10), last})
+    expected = full[full["step [-]"].isin(steps) & (full["point [-]"] == 2)]
+    pd.testing.assert_frame_equal(part, expected.reset_index(drop=True))
