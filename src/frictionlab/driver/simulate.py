@@ -6,9 +6,12 @@ the local solve fails or where a requested ``accuracy`` is not met (step doublin
 :mod:`frictionlab.driver.stepping`). N points run together in one vectorised programme,
 with per-point parameters and per-point segment values.
 
-Array layout of :class:`History`: **time first**, ``(rows, N, ...)`` with
-``rows = steps + 1`` (row 0 is the initial state); ``History.point(i)`` gives the 1-D
-series of one point.
+Array layout of :class:`History`: **time first**, ``(rows, N, ...)``; by default every
+step is recorded, ``rows = steps + 1`` (row 0 is the initial state); a
+:class:`~frictionlab.driver.recorder.Recording` records every k-th step or chosen points
+and can stream the rows to a sink (``History.steps`` gives each row's step).
+``History.point(i)`` gives the 1-D series of one point. Peaks, path lengths and
+per-segment figures over every step are in ``History.stats`` and ``SegmentRecord.stats``.
 
 Physics only: no file I/O and no printing; progress goes to an optional callback.
 """
