@@ -21,7 +21,12 @@ Figures (per contact point per increment, N points, all sliding unless stated):
 * ``lattice_partial``: a 1024^2 self-affine map in partial contact against a flat
   counter-face, 3 directions, 64 time samples: springs per second (target >= 3e8);
 * ``first_call``: import + first call of the law and of the lattice in a child process,
-  with an empty compile cache (compilation) and with the cache filled.
+  with an empty compile cache (compilation) and with the cache filled;
+* ``driver_overhead``: :func:`frictionlab.driver.simulate` of a slide, N = min(points,
+  1e4) points: the share of its wall time spent outside the law's compiled kernel
+  (target <= 10 % at N = 1e4), recording every step in memory (the default) and
+  streaming the rows to a sink that keeps a bounded plot subset (as ``frictionlab
+  simulate`` does, without the CSV formatting).
 """
 
 from __future__ import annotations
@@ -306,6 +311,56 @@ def _first_call(log: Callable[[str], None]) -> dict:
     return rows
 
 
+TARGET_DRIVER_OVERHEAD = 0.10
+
+
+def _driver_overhead(points: int, steps: int, repeats: int, log: Callable[[str], None]) -> dict:
+    """Share of a driver run's wall time outside the kernel (kernel calls timed in place)."""
+    from frictionlab.driver import Recording, Slide, simulate
+    from frictionlab.subloading import SubloadingParams, kernels
+
+    params = SubloadingParams(surface="coulomb", alpha_n=1e3, alpha_t=1e3, mu_s=0.5, mu_k=0.3,
+                              u=100.0, kappa=1.0, xi=1e-3)  # fmt: skip
+    program = (Slide(velocity=0.1, distance=0.05, steps=steps),)
+    inside = [0.0]
+    originals = (kernels.step_points, kernels.step_points_parallel)
+
+    def timed(kernel: Callable[..., Any]) -> Callable[..., Any]:
+        def call(*args: Any) -> Any:
+            start = time.perf_counter()
+            kernel(*args)
+            inside[0] += time.perf_counter() - start
+
+        return call
+
+    shown = range(min(points, 40))
+    modes = {
+        "in_memory": lambda: None,
+        "streamed": lambda: Recording(sink=lambda chunk: None, keep_rows=4000, keep_points=shown),
+    }
+    runs: dict[str, list[tuple[float, float]]] = {m: [] for m in modes}
+    kernels.step_points, kernels.step_points_parallel = map(timed, originals)  # type: ignore[assignment]
+    try:
+        simulate(params, program[:1], n_points=points)  # warm-up
+        for _ in range(repeats):  # alternate the modes (a shared machine drifts)
+            for mode, recording in modes.items():
+                inside[0] = 0.0
+                start = time.perf_counter()
+                simulate(params, program, n_points=points, recording=recording())
+                runs[mode].append((time.perf_counter() - start, inside[0]))
+    finally:
+        kernels.step_points, kernels.step_points_parallel = originals
+    out: dict[str, Any] = {"points": points, "steps": steps, "runs": repeats,
+                           "target_outside_fraction": TARGET_DRIVER_OVERHEAD}  # fmt: skip
+    for mode, rows in runs.items():
+        total = statistics.median(t for t, _ in rows)
+        outside = statistics.median(1.0 - k / t for t, k in rows)
+        out[mode] = {"median_s_per_step": total / steps, "outside_kernel_fraction": outside}
+        log(f"driver ({mode:9s}) N = {points}: {1e3 * total / steps:8.3f} ms/step, "
+            f"{100 * outside:5.1f} % outside the kernel")  # fmt: skip
+    return out
+
+
 def run(
     points: int = 1_000_000,
     repeats: int = 5,
@@ -340,6 +395,7 @@ def run(
         "law": law,
         "lattice_partial": lattice,
     }
+    payload["driver_overhead"] = _driver_overhead(min(points, 10_000), 50, repeats, log)
     if first_call:
         payload["first_call"] = _first_call(log)
     return payload

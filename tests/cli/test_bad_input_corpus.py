@@ -35,6 +35,8 @@ kind = "hold"
 duration = 10.0
 """
 
+OUTPUT = "[output]\n{}\n[initial]"  # an [output] table put before [initial]
+
 FILE = '\nperiodicity = "assume"\ndetrend = "none"'
 ROUGHNESS = """
 mu0 = 0.3
@@ -117,6 +119,16 @@ def _cases() -> list[object]:
         ("simulate", SIMULATE, "[initial]", "[run]\nmax_halvings = -1\n[initial]", "max_halvings"),
         ("simulate", SIMULATE, "[initial]", '[run]\nallow_large = "y"\n[initial]', "allow_large"),
         ("simulate", SIMULATE, "[initial]", "[run]\nn_points = 1e9\n[initial]", "n_points"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("every = 0"), "[output].every"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("every = 2.5"), "[output].every"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format('every = "x"'), "[output].every"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("points = [2]"), "[output].points"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("points = [0]"), "[output].points"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("points = []"), "[output].points"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("points = [1, 1]"), "[output].points"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("points = [1.5]"), "[output].points"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("points = 1"), "[output].points"),
+        ("simulate", SIMULATE, "[initial]", OUTPUT.format("evry = 2"), "[output].evry"),
         ("simulate", SIMULATE, "steps = 20", "steps = 1000000000000", "steps"),
         ("simulate", SIMULATE, "steps = 20", "max_step = 1e-300", "max_step"),
         ("simulate", SIMULATE, "[initial]", "title = 3\n[initial]", "title"),

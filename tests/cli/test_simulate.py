@@ -188,7 +188,13 @@ def test_outputs_of_a_2d_programme(tmp_path: Path) -> None:
     assert set(REQUIRED_COLUMNS) <= {t.rpartition(" [")[0] for t in titles}
     s = summary(tmp_path)
     assert s["success"] and s["frictionlab"] and s["n_points"] == 6
-    assert set(s["outputs"]) == {"history.csv", "friction.png", "traction_path.png", "summary.json"}
+    assert set(s["outputs"]) == {
+        "history.csv",
+        "points.csv",
+        "friction.png",
+        "traction_path.png",
+        "summary.json",
+    }
     assert not list(tmp_path.glob(".*.tmp*"))
 
 

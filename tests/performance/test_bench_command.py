@@ -27,6 +27,10 @@ def test_bench_writes_every_figure(tmp_path: Path) -> None:
     ):
         assert np.isfinite(law[key]) and law[key] > 0.0
     assert data["lattice_partial"]["springs_per_second"] > 0.0
+    driver = data["driver_overhead"]
+    assert driver["points"] == 400
+    for mode in ("in_memory", "streamed"):
+        assert 0.0 < driver[mode]["outside_kernel_fraction"] < 1.0
     assert main([*args, "--repeats", "3"]) == 2  # fewer than 5 runs is refused
 
 

@@ -12,7 +12,7 @@ from frictionlab.cli import main
 from frictionlab.driver import History
 from frictionlab.errors import InputError
 from frictionlab.io.budget import check_grid_size, check_run_size, largest
-from frictionlab.io.results import summarise
+from frictionlab.io.results import SUMMARY_POINTS, summarise
 from frictionlab.io.scenario import parse_scenario
 from frictionlab.plotting.law import MAX_CURVES, plot_friction, shown_points
 
@@ -66,7 +66,8 @@ def test_summary_makes_a_fixed_number_of_whole_history_passes(
         for name in calls:
             calls[name] = 0
         summary = summarise(scenario, history, 0.0, [])  # type: ignore[arg-type]
-        assert len(summary["points"]) == n
+        assert len(summary["points"]) == min(n, SUMMARY_POINTS)
+        assert summary["n_points"] == n
         counts.append(dict(calls))
     assert counts[0] == counts[1]
     assert counts[1]["friction_ratio"] <= 2 and counts[1]["path_length"] <= 2

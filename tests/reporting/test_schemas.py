@@ -43,7 +43,8 @@ def test_simulate_summary_has_the_provenance_block(tmp_path: Path, check_summary
     assert prov["inputs"] == [{"path": str(scenario), "sha256": digest}]
     assert {"numpy", "scipy", "pandas"} <= set(prov["dependencies"])
     # the common keys, and the older names kept for one release
-    assert summary["files"] == summary["outputs"] == ["history.csv", "healing.csv", "summary.json"]
+    files = ["history.csv", "points.csv", "healing.csv", "summary.json"]
+    assert summary["files"] == summary["outputs"] == files
     assert summary["frictionlab_version"] == summary["frictionlab"]
 
 
@@ -77,7 +78,7 @@ def allowed_by_the_parser(mutate) -> set[str]:  # type: ignore[no-untyped-def]
 def test_schema_keys_are_the_parser_keys() -> None:
     s = schema("scenario")
     assert allowed_by_the_parser(lambda d: d.update(zzz=1)) == set(s["properties"])
-    for table in ("law", "initial", "run"):
+    for table in ("law", "initial", "run", "output"):
         keys = allowed_by_the_parser(lambda d, t=table: d.setdefault(t, {}).update(zzz=1))
         assert keys == set(s["properties"][table]["properties"]), table
     for rule in s["$defs"]["segment"]["allOf"]:

@@ -171,3 +171,28 @@ def test_multiply_convention_is_a_reparametrisation() -> None:
     b = set_a(orthotropy=(1.0, 0.6**-2), orthotropy_convention="multiply")
     np.testing.assert_allclose(b.orthotropy, a.orthotropy, rtol=1e-15)
     assert isinstance(b, SubloadingParams) and b.orthotropy_convention == "divide"
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+@pytest.mark.parametrize("where", ["slip", "time"])
+def test_update_refuses_non_finite_increments_even_beside_huge_ones(bad: float, where: str) -> None:
+    """Finiteness is checked through the sum first; a NaN or infinity is never let through."""
+    params = set_a()
+    state = initial_state(params, 1.0, (0.0, 0.0), n_points=3)
+    du = np.zeros((3, 3))
+    dt = np.array([1e-3, 1e-3, 1e-3])
+    if where == "slip":
+        du[0, 0], du[1, 0], du[2, 1] = 1e308, 1e308, bad
+    else:
+        dt[:] = [1e308, 1e308, bad]
+    with pytest.raises(ParameterError) as info:
+        update(params, state, du, dt, raise_on_failure=False)
+    assert info.value.field == ("slip_increment" if where == "slip" else "time_increment")
+
+
+def test_update_accepts_finite_increments_whose_sum_overflows() -> None:
+    params = set_a()
+    state = initial_state(params, 1.0, (0.0, 0.0), n_points=2)
+    dt = np.array([1e308, 1e308])  # finite, the sum is not: still a valid input
+    res = update(params, state, np.zeros((2, 3)), dt, raise_on_failure=False)
+    assert res.state.n_points == 2

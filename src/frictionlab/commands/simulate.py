@@ -1,7 +1,9 @@
 """``frictionlab simulate SCENARIO.toml --out DIR``: run one scenario file.
 
-Writes ``DIR/history.csv``, ``DIR/summary.json``, ``DIR/friction.png`` and, for 2-D
-programmes, ``DIR/traction_path.png`` (each atomically). Bad input (a wrong key or
+Writes ``DIR/history.csv`` (streamed to disk chunk by chunk while a programme runs, so
+memory stays bounded whatever the number of steps; ``[output] every`` and ``points``
+choose the rows), ``DIR/points.csv``, ``DIR/summary.json``, ``DIR/friction.png`` and,
+for 2-D programmes, ``DIR/traction_path.png``. Bad input (a wrong key or
 type, a missing value, an unknown surface or segment kind, a physically invalid
 parameter, an unreadable file) is reported on one line with exit code 2 before
 anything is written; a failed computation exits 1 and keeps the history computed so far.
@@ -29,17 +31,27 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from frictionlab.io.output_set import check_out, output_set
-    from frictionlab.io.results import write_results
+    from frictionlab.io.results import PLOT_ROWS, HistoryStream, write_results
     from frictionlab.io.scenario import load_scenario
+    from frictionlab.plotting.law import shown_points
 
     out = check_out(args.out, args.overwrite)
     scenario = load_scenario(args.scenario, args.set)  # every input check happens here
     with output_set(out, args.overwrite) as oset:
         start = time.perf_counter()
+        stream = None
         with progress_bar(f"simulate {args.scenario.name}", enabled=not args.quiet) as progress:
-            history = scenario.run(progress=progress)
+            if scenario.kind == "program":
+                path = oset.staging / "history.csv"
+                shown = shown_points(scenario.output.recorded_points(scenario.n_points))
+                with HistoryStream(path, cone=scenario.params.is_cone) as stream:
+                    history = scenario.run(progress, stream, PLOT_ROWS, shown.tolist())
+            else:
+                history = scenario.run(progress=progress)
         elapsed = time.perf_counter() - start
-        paths = write_results(oset.staging, scenario, history, elapsed, plots=not args.no_plots)
+        paths = write_results(
+            oset.staging, scenario, history, elapsed, plots=not args.no_plots, streamed=stream
+        )
         paths = [oset.shown(p) for p in paths]
     if not args.quiet:
         _report(scenario.labels, history, elapsed)
@@ -58,18 +70,21 @@ def run(args: argparse.Namespace) -> int:
 
 def _report(labels: tuple[str, ...], history: object, elapsed: float) -> None:
     from frictionlab.driver import History
+    from frictionlab.io.results import point_figures
 
     assert isinstance(history, History)
-    ratio = history.friction_ratio
-    n = history.n_points
-    print(f"{n} point(s), {history.n_rows - 1} steps in {elapsed:.2f} s "
+    fig = point_figures(history)
+    peak, final = fig["peak_friction_ratio"], fig["final_friction_ratio"]
+    n = peak.size
+    steps = history.stats.steps if history.stats is not None else history.n_rows - 1
+    print(f"{n} point(s), {steps} steps in {elapsed:.2f} s "
           f"({history.work['substeps']} substeps, {history.work['solves']} solves)")  # fmt: skip
     print(f"{'point':>5} {'peak |f_t|/f_n':>15} {'final |f_t|/f_n':>16}  label")
     for i in range(min(n, 12)):
         label = labels[i] if i < len(labels) else ""
-        print(f"{i + 1:>5} {ratio[:, i].max():>15.5f} {ratio[-1, i]:>16.5f}  {label}")
+        print(f"{i + 1:>5} {peak[i]:>15.5f} {final[i]:>16.5f}  {label}")
     if n > 12:
-        print(f"  ... {n - 12} more points in summary.json")
+        print(f"  ... {n - 12} more points in points.csv")
     from frictionlab.driver.healing import healing_analysis
 
     healing = healing_analysis(history)

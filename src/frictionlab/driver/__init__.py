@@ -32,6 +32,7 @@ from frictionlab.driver.program import (
 from frictionlab.driver.simulate import (
     History,
     InitialConditions,
+    Recording,
     SegmentRecord,
     simulate,
     status_labels,
@@ -54,6 +55,7 @@ __all__ = [
     "InitialConditions",
     "NormalStep",
     "Program",
+    "Recording",
     "Reverse",
     "Segment",
     "SegmentRecord",

@@ -86,20 +86,39 @@ def healing_rate(hold_time: np.ndarray, delta_mu: np.ndarray) -> tuple[float | N
 
 
 def healing_analysis(history: History) -> Healing | None:
-    """Restart peaks and healing rate of ``history`` (None when no hold is followed by sliding)."""
+    """Restart peaks and healing rate of ``history`` (None when no hold is followed by sliding).
+
+    Uses the segments' running figures (every step, every point) when the history has
+    them, so the result does not depend on which steps were recorded; otherwise the
+    recorded rows.
+    """
     segments = history.segments
-    ratio = history.friction_ratio
     records = []
     for seg, after in itertools.pairwise(segments):
         if not seg.is_hold or after.kind not in SLIDING_KINDS:
             continue
+        if seg.stats is not None and after.stats is not None:
+            hold, slide = seg.stats, after.stats
+            for i in range(hold.start_time.shape[0]):
+                records.append(
+                    HealingRecord(
+                        point=i + 1,
+                        hold_segment=seg.index,
+                        hold_time=float(hold.final_time[i] - hold.start_time[i]),
+                        friction_before=float(hold.start_friction_ratio[i]),
+                        restart_peak=float(slide.peak_friction_ratio[i]),
+                        peak_time=float(slide.peak_time[i]),
+                    )
+                )
+            continue
+        ratio = history.friction_ratio
         stop = seg.first_row - 1
         rows = slice(after.first_row, after.last_row + 1)
         for i in range(history.n_points):
             k = after.first_row + int(np.argmax(ratio[rows, i]))
             records.append(
                 HealingRecord(
-                    point=i + 1,
+                    point=int(history.point_numbers[i]),
                     hold_segment=seg.index,
                     hold_time=float(history.time[seg.last_row, i] - history.time[stop, i]),
                     friction_before=float(ratio[stop, i]),

@@ -6,9 +6,12 @@ the local solve fails or where a requested ``accuracy`` is not met (step doublin
 :mod:`frictionlab.driver.stepping`). N points run together in one vectorised programme,
 with per-point parameters and per-point segment values.
 
-Array layout of :class:`History`: **time first**, ``(rows, N, ...)`` with
-``rows = steps + 1`` (row 0 is the initial state); ``History.point(i)`` gives the 1-D
-series of one point.
+Array layout of :class:`History`: **time first**, ``(rows, N, ...)``; by default every
+step is recorded, ``rows = steps + 1`` (row 0 is the initial state); a
+:class:`~frictionlab.driver.recorder.Recording` records every k-th step or chosen points
+and can stream the rows to a sink (``History.steps`` gives each row's step).
+``History.point(i)`` gives the 1-D series of one point. Peaks, path lengths and
+per-segment figures over every step are in ``History.stats`` and ``SegmentRecord.stats``.
 
 Physics only: no file I/O and no printing; progress goes to an optional callback.
 """
@@ -28,6 +31,7 @@ from frictionlab.driver.program import (
     plan_program,
     program_points,
 )
+from frictionlab.driver.recorder import Recorder, Recording, RunStats, SegmentStats
 from frictionlab.driver.stepping import StepWork, advance
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import (
@@ -44,6 +48,8 @@ __all__ = [
     "History",
     "InitialConditions",
     "ProgressCallback",
+    "Recording",
+    "RunStats",
     "SegmentRecord",
     "count_points",
     "simulate",
@@ -104,8 +110,10 @@ class SegmentRecord:
     """Where a segment sits in a :class:`History`.
 
     ``index`` is 1-based (as ``[[program]] #index``); rows ``first_row..last_row``
-    (inclusive) are its steps, row ``first_row - 1`` is the state it started from.
-    ``resolved`` holds its values with every default filled (arrays (N,)).
+    (inclusive) are its recorded steps, row ``first_row - 1`` is the state it started
+    from. ``resolved`` holds its values with every default filled (arrays (N,)).
+    ``stats``: its start, peak and final figures over every step (not only the recorded
+    ones) for every point; None for histories built without them.
     """
 
     index: int
@@ -114,6 +122,7 @@ class SegmentRecord:
     last_row: int
     resolved: dict[str, Any]
     is_hold: bool = False
+    stats: SegmentStats | None = None
 
     @property
     def rows(self) -> slice:
@@ -143,8 +152,8 @@ class History:
         (rows, N) accumulated plastic slip u^p [m].
     dissipation:
         (rows, N) accumulated plastic work sum of f . Delta u^p [J/m^2]: >= 0 without a
-        rotation vector; with beta != 0 the term f_n beta . Delta u^p can make it negative
-        (plastic work, not a dissipation; the name is kept for compatibility).
+        rotation vector; with beta != 0 the term f_n beta . Delta u^p can make it negative.
+        Deprecated name: use :attr:`plastic_work` (the same array).
     status:
         (rows, N) :class:`~frictionlab.subloading.Status` code of each step (OPEN when
         the step ends open, else SLIP if any substep slid); row 0 holds ``STATUS_INITIAL`` (-1).
@@ -169,8 +178,19 @@ class History:
         slider velocity and spring force).
     warnings:
         One line per segment that reached, by approach or sliding, a normal traction at
-        which the no-snap-back condition (spec pitfall 7) fails: the local solution may
-        not be unique there.
+        which the no-snap-back condition fails: the local solution may not be unique there.
+    step:
+        (rows,) the programme step of each row (0 for the initial state); None means
+        every step was recorded (row = step).
+    points:
+        0-based indices of the recorded points, or None for all: the arrays' N axis then
+        holds these points only.
+    stats:
+        :class:`~frictionlab.driver.recorder.RunStats`: peaks, path length and final
+        values over every step and every point (None for histories built without them).
+    thinned:
+        True when rows were dropped beyond the recording's ``every`` to bound the memory
+        (a run streamed to a sink with ``keep_rows``): these rows suit plots, not analysis.
     """
 
     time: np.ndarray
@@ -194,6 +214,25 @@ class History:
     extra: dict[str, np.ndarray] = field(default_factory=dict)
     extra_units: dict[str, str] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
+    step: np.ndarray | None = None
+    points: np.ndarray | None = None
+    stats: RunStats | None = None
+    thinned: bool = False
+
+    @property
+    def plastic_work(self) -> np.ndarray:
+        """(rows, N) accumulated plastic work sum of f . Delta u^p [J/m^2] (may be < 0)."""
+        return self.dissipation
+
+    @property
+    def steps(self) -> np.ndarray:
+        """(rows,) the programme step of each row."""
+        return np.arange(self.n_rows) if self.step is None else self.step
+
+    @property
+    def point_numbers(self) -> np.ndarray:
+        """(N,) 1-based numbers of the recorded points."""
+        return (np.arange(self.n_points) if self.points is None else self.points) + 1
 
     @property
     def n_points(self) -> int:
@@ -212,7 +251,11 @@ class History:
 
     @property
     def path_length(self) -> np.ndarray:
-        """(rows, N) tangential slip distance travelled (sum of |Delta slip|) [m]."""
+        """(rows, N) tangential slip distance travelled (sum of |Delta slip|) [m].
+
+        Summed over the recorded rows: with ``every > 1`` a curved path is cut short;
+        ``stats.path_length`` sums every step.
+        """
         steps = np.hypot(*np.moveaxis(np.diff(self.slip, axis=0), -1, 0))
         return np.concatenate([np.zeros((1, self.n_points)), np.cumsum(steps, axis=0)])
 
@@ -252,6 +295,7 @@ class History:
             "R": self.R[:, i],
             "F": self.F[:, i],
             "plastic_slip": self.plastic_slip[:, i],
+            "plastic_work": self.dissipation[:, i],
             "dissipation": self.dissipation[:, i],
             "status": self.status[:, i],
         }
@@ -286,67 +330,28 @@ def count_points(
     return sizes.pop() if sizes else 1
 
 
-class _Recorder:
-    """Accumulates rows; stacks them into arrays at the end."""
-
-    def __init__(self, state: ContactState) -> None:
-        n = state.n_points
-        self.time = [np.zeros(n)]
-        self.slip = [np.zeros((n, 2))]
-        self.approach = [np.zeros(n)]
-        self.traction = [state.traction]
-        self.F = [state.F]
-        self.R = [state.R]
-        self.up = [state.plastic_slip]
-        self.diss = [np.zeros(n)]
-        self.status = [np.full(n, STATUS_INITIAL, dtype=np.int8)]
-        self.segment = [0]
-        self.substeps = [0]
-        self.solves = [0]
-        self.iterations = [np.zeros(n, dtype=np.int64)]
-
-    def add(self, state: ContactState, dt: np.ndarray, du: np.ndarray, diss: np.ndarray,
-            status: np.ndarray, segment: int, substeps: int, solves: int,
-            iterations: np.ndarray) -> None:  # fmt: skip
-        self.time.append(self.time[-1] + dt)
-        self.slip.append(self.slip[-1] + du[:, :2])
-        self.approach.append(self.approach[-1] + du[:, 2])
-        self.traction.append(state.traction)
-        self.F.append(state.F)
-        self.R.append(state.R)
-        self.up.append(state.plastic_slip)
-        self.diss.append(self.diss[-1] + diss)
-        self.status.append(status)
-        self.segment.append(segment)
-        self.substeps.append(substeps)
-        self.solves.append(solves)
-        self.iterations.append(iterations)
-
-    @property
-    def rows(self) -> int:
-        return len(self.time)
-
-    def max_normal_traction(self, first_row: int) -> np.ndarray:
-        """(N,) largest normal traction of each point in the rows from ``first_row`` on."""
-        return np.max(np.array([t[:, 2] for t in self.traction[first_row:]]), axis=0)
-
-    def history(self, **kw: Any) -> History:
-        return History(
-            time=np.array(self.time),
-            slip=np.array(self.slip),
-            approach=np.array(self.approach),
-            traction=np.array(self.traction),
-            F=np.array(self.F),
-            R=np.array(self.R),
-            plastic_slip=np.array(self.up),
-            dissipation=np.array(self.diss),
-            status=np.array(self.status),
-            segment=np.array(self.segment),
-            substeps=np.array(self.substeps),
-            solves=np.array(self.solves),
-            iterations=np.array(self.iterations),
-            **kw,
-        )
+def _history_from_rows(rows: dict[str, np.ndarray], rec: Recorder, **kw: Any) -> History:
+    """A :class:`History` from the recorder's kept rows."""
+    return History(
+        time=rows["time"],
+        slip=rows["slip"],
+        approach=rows["approach"],
+        traction=rows["traction"],
+        F=rows["F"],
+        R=rows["R"],
+        plastic_slip=rows["plastic_slip"],
+        dissipation=rows["plastic_work"],
+        status=rows["status"],
+        segment=rows["segment"],
+        substeps=rows["substeps"],
+        solves=rows["solves"],
+        iterations=rows["iterations"],
+        step=rows["step"],
+        points=rec.kept_points,
+        stats=rec.stats,
+        thinned=rec.thinned,
+        **kw,
+    )
 
 
 def _count_work(work: dict[str, int], w: StepWork, completed: bool = True) -> None:
@@ -376,8 +381,9 @@ def simulate(
     accuracy: float | None = None,
     max_halvings: int = 10,
     progress: ProgressCallback | None = None,
+    recording: Recording | None = None,
 ) -> History:
-    """Run ``program`` for N contact points and record every step.
+    """Run ``program`` for N contact points and record its steps.
 
     Parameters
     ----------
@@ -398,6 +404,10 @@ def simulate(
         Deepest substepping: a step is cut into at most ``2**max_halvings`` substeps.
     progress:
         ``progress(done, total)`` after every step.
+    recording:
+        Which steps and points to record and where the rows go (a streaming ``sink``);
+        default: every step of every point, kept in memory. See
+        :class:`~frictionlab.driver.recorder.Recording`.
 
     Returns
     -------
@@ -414,8 +424,9 @@ def simulate(
     _check_prescribed_normal_tractions(params, program)
     total = sum(p.estimated_steps for p in plans)
     warnings: list[str] = []
-    rec = _Recorder(state)
-    records: list[SegmentRecord] = []
+    rec = Recorder(state, recording)
+    rec.reserve(rec.planned_rows([p.estimated_steps for p in plans]))
+    records: list[tuple[int, str, dict[str, Any], bool, SegmentStats]] = []
     work = dict.fromkeys(
         ("steps", "substeps", "solves", "iterations", "refined_for_failure",
          "refined_for_accuracy", "accuracy_unmet"), 0,
@@ -428,8 +439,9 @@ def simulate(
         if target is not None:  # a normal traction prescribed by a change: check it now
             check_snap_back(params, target, f"program[{index}].traction_change")
         total += steps - estimated
-        first_row = rec.rows
+        rec.begin_segment(index, plan.kind)
         failed = False
+        last = steps - 1
         for k in range(steps):
             control = plan.control(k)
             outcome, w = advance(
@@ -444,11 +456,12 @@ def simulate(
                 break
             state = outcome.state
             rec.add(state, control.dt, outcome.du, outcome.dissipation, outcome.status,
-                    index, w.substeps, w.solves, w.iterations)  # fmt: skip
+                    w.substeps, w.solves, w.iterations, k == last)  # fmt: skip
             if progress is not None:
                 progress(work["steps"], total)
-        if rec.rows > first_row:
-            reached = rec.max_normal_traction(first_row)
+        seg = rec.end_segment()
+        if seg is not None:
+            reached = seg.max_normal_traction
             reasons = snap_back_violations(params, reached)
             bad = [i for i, r in enumerate(reasons) if r]
             if bad:
@@ -457,11 +470,7 @@ def simulate(
                     f"at point {bad[0] + 1} ({len(bad)} point(s) in all), where "
                     f"{reasons[bad[0]]} fails: the local solution may not be unique"
                 )
-            records.append(
-                SegmentRecord(
-                    index, plan.kind, first_row, rec.rows - 1, plan.resolved, plan.is_hold
-                )
-            )
+            records.append((index, plan.kind, plan.resolved, plan.is_hold, seg))
         if failed:
             break
     if success and work["accuracy_unmet"]:
@@ -469,14 +478,30 @@ def simulate(
             f"; the accuracy {accuracy} was not met in {work['accuracy_unmet']} steps "
             f"even with 2**{max_halvings} substeps"
         )
-    return rec.history(
-        segments=tuple(records),
+    rows = rec.finish()
+    segment_records = _segment_records(rows["step"], records)
+    return _history_from_rows(
+        rows,
+        rec,
+        segments=segment_records,
         final_state=state,
         success=success,
         message=message,
         work=work,
         warnings=tuple(warnings),
     )
+
+
+def _segment_records(
+    steps: np.ndarray, records: list[tuple[int, str, dict[str, Any], bool, SegmentStats]]
+) -> tuple[SegmentRecord, ...]:
+    """Segment records with the rows of their first and last steps (always recorded)."""
+    out = []
+    for index, kind, resolved, is_hold, seg in records:
+        first = int(np.searchsorted(steps, seg.first_step))
+        last = int(np.searchsorted(steps, seg.last_step))
+        out.append(SegmentRecord(index, kind, first, last, resolved, is_hold, seg))
+    return tuple(out)
 
 
 def _check_prescribed_normal_tractions(

@@ -210,23 +210,24 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
       reached (for example beyond what the contact can carry: gross sliding).
     """
     n = state.n_points
-    du = np.zeros((n, 3))
+    du = np.empty((n, 3))
     du[:, :2] = control.du_t
-    du[:, 2] = control.du_n
     if control.fn_target is not None:
         refused = _unreachable_normal_target(state, control.fn_target)
         if refused is not None:
             return refused
         alpha_n = _elastic(params, "alpha_n", n)
         du[:, 2] = (control.fn_target - state.traction[:, 2]) / alpha_n + state.gap
+    else:
+        du[:, 2] = control.du_n
     law = _LawStep(params, state, control.fn_target)
-    iters = np.zeros(n, dtype=np.int64)
     if control.ft_target is None:
         single = law(du, control.dt)
-        attempt = _result_attempt(single, du, 1, iters + single.iterations)
+        attempt = _result_attempt(single, du, 1, single.iterations)
         if not attempt.ok:
             attempt.reason += _resolution_hint(params, state, du, single.status == _FAILED)
         return attempt
+    iters = np.zeros(n, dtype=np.int64)
 
     target = control.ft_target
     alpha_t = _elastic(params, "alpha_t", n)

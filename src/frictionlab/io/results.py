@@ -1,15 +1,22 @@
-"""Outputs of a simulated scenario: ``history.csv``, ``summary.json`` and the plots.
+"""Outputs of a simulated scenario: ``history.csv``, ``points.csv``, ``summary.json``, plots.
 
-``history.csv`` is long format, one row per point and recorded step (point-major),
-with units in the column titles (``time [s]``). ``summary.json`` echoes the inputs with defaults
-filled, and gives peaks, final values, per-segment values, work counters, success and
-the version. Every file is written atomically.
+``history.csv`` is long format, one row per recorded step and point (step-major), with
+units in the column titles (``time [s]``); ``frictionlab simulate`` streams it to disk
+chunk by chunk while the programme runs (:class:`HistoryStream`), so the history never
+has to fit in memory. ``points.csv`` holds one row per point: peak, final and per-segment
+figures over every step (not only the recorded ones). ``summary.json`` stays small
+whatever the number of points: the inputs with defaults filled, aggregate figures (min,
+mean, max over points), the per-point entries of the first :data:`SUMMARY_POINTS`
+points, per-segment values, work counters, success, the version and the file list.
+Every other file is written atomically.
 """
 
 from __future__ import annotations
 
 import os
+from dataclasses import replace
 from pathlib import Path
+from types import TracebackType
 from typing import Any
 
 import numpy as np
@@ -22,62 +29,275 @@ from frictionlab.driver.spring_slider import (
     critical_stiffness,
     friction_oscillation,
 )
-from frictionlab.driver.table import HISTORY_UNITS, history_columns
+from frictionlab.driver.table import (
+    HISTORY_UNITS,
+    chunk_columns,
+    history_columns,
+    history_units,
+)
 from frictionlab.errors import FrictionlabError
-from frictionlab.io.atomic import write_json_atomic
+from frictionlab.io.atomic import atomic_path, write_json_atomic
 from frictionlab.io.provenance import stamp
-from frictionlab.io.scenario import Scenario
-from frictionlab.io.tables import write_csv_atomic
+from frictionlab.io.scenario import OutputOptions, Scenario
+from frictionlab.io.tables import format_csv, write_csv_atomic
 
-__all__ = ["HISTORY_UNITS", "history_columns", "summarise", "write_results"]
+__all__ = [
+    "HISTORY_UNITS",
+    "PLOT_ROWS",
+    "SUMMARY_POINTS",
+    "HistoryStream",
+    "history_columns",
+    "point_figures",
+    "summarise",
+    "write_results",
+]
+
+#: Points listed one by one in summary.json (every point is in points.csv).
+SUMMARY_POINTS = 100
+#: Rows a streamed run keeps in memory for the plots and the console report (the
+#: recorded rows are thinned evenly beyond it; history.csv has every recorded row).
+PLOT_ROWS = 4000
+
+#: Units of the points.csv columns (per-segment columns ``segment_<i>_...`` are added).
+POINT_UNITS: dict[str, str] = {
+    "point": "-",
+    "peak_friction_ratio": "-",
+    "peak_step": "-",
+    "peak_time": "s",
+    "peak_slip_distance": "m",
+    "final_time": "s",
+    "final_slip_1": "m",
+    "final_slip_2": "m",
+    "final_approach": "m",
+    "final_traction_1": "Pa",
+    "final_traction_2": "Pa",
+    "final_traction_n": "Pa",
+    "final_friction_ratio": "-",
+    "final_F": "-",
+    "final_R": "-",
+    "final_plastic_slip": "m",
+    "final_plastic_work": "J/m^2",
+    "path_length": "m",
+}
 
 
-def _point_summary(
-    history: History, i: int, label: str, ratios: np.ndarray, paths: np.ndarray
-) -> dict[str, Any]:
-    """Peak and final values of point ``i`` (``ratios``, ``paths``: (rows, N), computed once)."""
-    ratio = ratios[:, i]
-    k = int(np.argmax(ratio))
-    path = paths[:, i]
+#: Lines of CSV formatted at a time (bounds the text and string lists held in memory).
+CSV_BLOCK = 65536
+_ROW_KEYS = ("step", "segment", "kind", "substeps", "solves")
+
+
+def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict[str, np.ndarray]:
+    """Some rows and points of a chunk of recorded rows."""
+    out = {}
+    for key, value in chunk.items():
+        if key in _ROW_KEYS:
+            out[key] = value[rows]
+        elif key == "point":
+            out[key] = value[points]
+        else:
+            out[key] = value[rows, points]
+    return out
+
+
+def _write_csv_blocks(path: Path, cols: dict[str, np.ndarray], units: dict[str, str]) -> Path:
+    """Like ``write_csv_atomic``, formatting CSV_BLOCK lines at a time (bounded memory)."""
+    n = len(next(iter(cols.values())))
+    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="") as handle:
+        for start in range(0, max(n, 1), CSV_BLOCK):
+            text = format_csv({k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units)
+            handle.write(text if start == 0 else text[text.index("\n") + 1 :])
+    return path
+
+
+class HistoryStream:
+    """A recording sink that appends the recorded rows to ``history.csv`` as they come.
+
+    Use as a context manager around the run; ``rows`` counts the data rows written. The
+    file is plain CSV (see :mod:`frictionlab.io.tables`): it is not replaced atomically
+    itself, so write it into an output set's staging directory.
+    """
+
+    def __init__(
+        self, path: str | os.PathLike[str], cone: bool = True, extra: dict[str, str] | None = None
+    ) -> None:
+        self.path = Path(path)
+        self.units = history_units(None, cone)
+        self.extra = tuple(extra or ())
+        self.units.update(extra or {})
+        self.rows = 0
+        self._file = open(self.path, "w", encoding="utf-8", newline="")  # noqa: SIM115
+
+    def __call__(self, chunk: dict[str, np.ndarray]) -> None:
+        rows, m = chunk["time"].shape
+        per = max(1, CSV_BLOCK // m)  # format at most about CSV_BLOCK lines at a time
+        for r0 in range(0, rows, per):
+            for p0 in range(0, m, CSV_BLOCK):
+                self._write(_sub_chunk(chunk, slice(r0, r0 + per), slice(p0, p0 + CSV_BLOCK)))
+
+    def _write(self, chunk: dict[str, np.ndarray]) -> None:
+        cols = chunk_columns(chunk, self.extra)
+        text = format_csv(cols, self.units)
+        if self.rows:
+            text = text[text.index("\n") + 1 :]
+        self._file.write(text)
+        self.rows += len(cols["step"])
+
+    def close(self) -> None:
+        self._file.close()
+
+    def __enter__(self) -> HistoryStream:
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        self.close()
+
+
+def point_figures(history: History) -> dict[str, np.ndarray]:
+    """(N,) per-point figures over every step: peaks, final values, path length.
+
+    From the run's running figures when the history has them (every step and every
+    point, whatever was recorded), otherwise from its rows.
+    """
+    st = history.stats
+    if st is not None:
+        fs = history.final_state
+        n = st.time.shape[0]
+        return {
+            "point": np.arange(1, n + 1),
+            "peak_friction_ratio": st.peak_friction_ratio,
+            "peak_step": st.peak_step,
+            "peak_time": st.peak_time,
+            "peak_slip_distance": st.peak_path_length,
+            "final_time": st.time,
+            "final_slip_1": st.slip[:, 0],
+            "final_slip_2": st.slip[:, 1],
+            "final_approach": st.approach,
+            "final_traction_1": fs.traction[:, 0],
+            "final_traction_2": fs.traction[:, 1],
+            "final_traction_n": fs.traction[:, 2],
+            "final_friction_ratio": st.friction_ratio,
+            "final_F": fs.F,
+            "final_R": fs.R,
+            "final_plastic_slip": fs.plastic_slip,
+            "final_plastic_work": st.plastic_work,
+            "path_length": st.path_length,
+        }
+    ratios, paths = history.friction_ratio, history.path_length
+    k = np.argmax(ratios, axis=0)
+    cols = np.arange(history.n_points)
     return {
-        "point": i + 1,
+        "point": history.point_numbers,
+        "peak_friction_ratio": ratios[k, cols],
+        "peak_step": history.steps[k],
+        "peak_time": history.time[k, cols],
+        "peak_slip_distance": paths[k, cols],
+        "final_time": history.time[-1],
+        "final_slip_1": history.slip[-1, :, 0],
+        "final_slip_2": history.slip[-1, :, 1],
+        "final_approach": history.approach[-1],
+        "final_traction_1": history.traction[-1, :, 0],
+        "final_traction_2": history.traction[-1, :, 1],
+        "final_traction_n": history.traction[-1, :, 2],
+        "final_friction_ratio": ratios[-1],
+        "final_F": history.F[-1],
+        "final_R": history.R[-1],
+        "final_plastic_slip": history.plastic_slip[-1],
+        "final_plastic_work": history.plastic_work[-1],
+        "path_length": paths[-1],
+    }
+
+
+def _point_summary(fig: dict[str, np.ndarray], i: int, label: str) -> dict[str, Any]:
+    """Peak and final values of point ``i`` (0-based row of ``fig``)."""
+    return {
+        "point": int(fig["point"][i]),
         "label": label,
         "peak": {
-            "friction_ratio": float(ratio[k]),
-            "step": k,
-            "time": float(history.time[k, i]),
-            "slip_distance": float(path[k]),
+            "friction_ratio": float(fig["peak_friction_ratio"][i]),
+            "step": int(fig["peak_step"][i]),
+            "time": float(fig["peak_time"][i]),
+            "slip_distance": float(fig["peak_slip_distance"][i]),
         },
         "final": {
-            "time": float(history.time[-1, i]),
-            "slip": history.slip[-1, i].tolist(),
-            "approach": float(history.approach[-1, i]),
-            "traction": history.traction[-1, i].tolist(),
-            "friction_ratio": float(ratio[-1]),
-            "F": float(history.F[-1, i]),
-            "R": float(history.R[-1, i]),
-            "plastic_slip": float(history.plastic_slip[-1, i]),
-            "dissipation": float(history.dissipation[-1, i]),
+            "time": float(fig["final_time"][i]),
+            "slip": [float(fig["final_slip_1"][i]), float(fig["final_slip_2"][i])],
+            "approach": float(fig["final_approach"][i]),
+            "traction": [
+                float(fig["final_traction_1"][i]),
+                float(fig["final_traction_2"][i]),
+                float(fig["final_traction_n"][i]),
+            ],
+            "friction_ratio": float(fig["final_friction_ratio"][i]),
+            "F": float(fig["final_F"][i]),
+            "R": float(fig["final_R"][i]),
+            "plastic_slip": float(fig["final_plastic_slip"][i]),
+            "plastic_work": float(fig["final_plastic_work"][i]),
+            "dissipation": float(fig["final_plastic_work"][i]),
+            "path_length": float(fig["path_length"][i]),
         },
     }
 
 
-def _segment_summary(history: History, seg: Any, ratios: np.ndarray) -> dict[str, Any]:
-    ratio = ratios[seg.rows]
-    resolved = {
-        k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in seg.resolved.items()
+def _compact(value: Any) -> Any:
+    """JSON for a per-point value: the list up to SUMMARY_POINTS entries, else min/mean/max."""
+    if isinstance(value, np.ndarray):
+        if value.shape and value.shape[0] > SUMMARY_POINTS and value.dtype.kind in "fiub":
+            return _aggregate(value)
+        return value.tolist()
+    return value
+
+
+def _aggregate(values: np.ndarray) -> dict[str, Any]:
+    v = np.asarray(values, dtype=np.float64)
+    return {
+        "min": float(v.min()),
+        "mean": float(v.mean()),
+        "max": float(v.max()),
+        "per_point": "points.csv",
     }
+
+
+def _segment_figures(history: History, seg: Any) -> dict[str, np.ndarray]:
+    """(N,) start, peak (start included) and final friction ratio, final F and R."""
+    st = seg.stats
+    if st is not None and st.final_F is not None:
+        return {
+            "start_friction_ratio": st.start_friction_ratio,
+            "peak_friction_ratio": np.maximum(st.start_friction_ratio, st.peak_friction_ratio),
+            "final_friction_ratio": st.final_friction_ratio,
+            "final_F": st.final_F,
+            "final_R": st.final_R,
+        }
+    ratio = history.friction_ratio[seg.rows]
+    return {
+        "start_friction_ratio": ratio[0],
+        "peak_friction_ratio": ratio.max(axis=0),
+        "final_friction_ratio": ratio[-1],
+        "final_F": history.F[seg.last_row],
+        "final_R": history.R[seg.last_row],
+    }
+
+
+def _segment_summary(history: History, seg: Any) -> dict[str, Any]:
+    fig = _segment_figures(history, seg)
+    steps = history.steps
+    first, last = (
+        (seg.stats.first_step, seg.stats.last_step)
+        if seg.stats is not None
+        else (int(steps[seg.first_row]), int(steps[seg.last_row]))
+    )
     return {
         "index": seg.index,
         "kind": seg.kind,
-        "first_step": seg.first_row,
-        "last_step": seg.last_row,
-        "resolved": resolved,
-        "start_friction_ratio": ratio[0].tolist(),
-        "peak_friction_ratio": ratio.max(axis=0).tolist(),
-        "final_friction_ratio": ratio[-1].tolist(),
-        "final_F": history.F[seg.last_row].tolist(),
-        "final_R": history.R[seg.last_row].tolist(),
+        "first_step": int(first),
+        "last_step": int(last),
+        "resolved": {k: _compact(v) for k, v in seg.resolved.items()},
+        **{k: _compact(np.asarray(v)) for k, v in fig.items()},
     }
 
 
@@ -87,14 +307,16 @@ def summarise(
     elapsed: float,
     outputs: list[str],
     healing: Healing | None = None,
+    recorded_rows: int | None = None,
 ) -> dict[str, Any]:
-    """The content of ``summary.json``.
-
-    Linear in the number of points and rows: the friction ratio and the path length
-    are computed once for the whole history, not once per point or segment.
+    """The content of ``summary.json`` (bounded size: per-point values beyond
+    :data:`SUMMARY_POINTS` points are given as min/mean/max, every point is in points.csv).
     """
-    labels = list(scenario.labels) + [""] * history.n_points
-    ratios, paths = history.friction_ratio, history.path_length
+    fig = point_figures(history)
+    n = int(fig["point"].size)
+    labels = list(scenario.labels) + [""] * n
+    listed = min(n, SUMMARY_POINTS)
+    steps = history.stats.steps if history.stats is not None else int(history.steps[-1])
     out: dict[str, Any] = {
         "frictionlab": __version__,
         "scenario": scenario.source,
@@ -102,19 +324,35 @@ def summarise(
         "success": history.success,
         "message": history.message,
         "warnings": list(history.warnings),
-        "n_points": history.n_points,
-        "steps": history.n_rows - 1,
+        "n_points": n,
+        "steps": steps,
+        "recorded": {
+            "every": scenario.output.every,
+            "points": "all" if scenario.output.points is None else list(scenario.output.points),
+            "rows": history.n_rows if recorded_rows is None else recorded_rows,
+        },
         "inputs": scenario.inputs,
-        "points": [
-            _point_summary(history, i, labels[i], ratios, paths) for i in range(history.n_points)
-        ],
-        "segments": [_segment_summary(history, seg, ratios) for seg in history.segments],
+        "aggregate": {
+            key: _aggregate(fig[key])
+            for key in (
+                "peak_friction_ratio",
+                "final_friction_ratio",
+                "path_length",
+                "final_plastic_work",
+            )
+        },
+        "points_listed": listed,
+        "points": [_point_summary(fig, i, labels[i]) for i in range(listed)],
+        "segments": [_segment_summary(history, seg) for seg in history.segments],
         "work": dict(history.work),
         "elapsed_seconds": round(elapsed, 3),
         "outputs": outputs,
     }
     if healing is not None:
         out["healing"] = healing.as_dict()
+        records = out["healing"]["records"]
+        out["healing"]["records"] = [r for r in records if r["point"] <= SUMMARY_POINTS]
+        out["healing"]["records_file"] = "healing.csv"
     if scenario.kind == "spring_slider" and history.n_rows > 1:
         machine = history.segments[0].resolved
         out["stick_slip"] = {
@@ -138,23 +376,85 @@ def _critical(scenario: Scenario, machine: dict[str, Any]) -> list[float] | str:
         return f"not evaluated: {exc}"
 
 
+def take_rows(history: History, rows: np.ndarray, points: np.ndarray | None = None) -> History:
+    """A history of some rows (ascending indices) and points (0-based) of ``history``."""
+    pts = np.arange(history.n_points) if points is None else points
+
+    def sel(a: np.ndarray) -> np.ndarray:
+        return a[rows][:, pts]
+
+    segments = tuple(
+        replace(
+            seg,
+            first_row=int(np.searchsorted(rows, seg.first_row)),
+            last_row=max(int(np.searchsorted(rows, seg.last_row, side="right")) - 1, 0),
+        )
+        for seg in history.segments
+    )
+    base = history.points
+    return History(
+        time=sel(history.time), slip=sel(history.slip), approach=sel(history.approach),
+        traction=sel(history.traction), F=sel(history.F), R=sel(history.R),
+        plastic_slip=sel(history.plastic_slip), dissipation=sel(history.dissipation),
+        status=sel(history.status), segment=history.segment[rows],
+        substeps=history.substeps[rows], solves=history.solves[rows],
+        iterations=sel(history.iterations), segments=segments, final_state=history.final_state,
+        success=history.success, message=history.message, work=history.work,
+        extra={k: sel(v) for k, v in history.extra.items()}, extra_units=history.extra_units,
+        warnings=history.warnings, step=history.steps[rows],
+        points=None if points is None else (pts if base is None else base[pts]),
+        stats=history.stats, thinned=history.thinned or rows.size < history.n_rows,
+    )  # fmt: skip
+
+
+def select_rows(history: History, output: OutputOptions) -> History:
+    """The rows and points ``[output]`` asks for, from a history that recorded everything.
+
+    Used for the spring-slider (which records every step in memory): every k-th step
+    and the last one, the chosen points.
+    """
+    if output.every == 1 and output.points is None:
+        return history
+    rows = np.arange(history.n_rows)
+    keep = rows[(rows % output.every == 0) | (rows == history.n_rows - 1)]
+    pts = None if output.points is None else np.asarray(output.points, dtype=np.int64) - 1
+    out = take_rows(history, keep, pts)
+    return replace(out, thinned=False)
+
+
+def plot_rows(history: History, limit: int = PLOT_ROWS) -> History:
+    """At most about ``limit`` evenly spread rows of ``history`` (segment ends kept)."""
+    if history.n_rows <= limit:
+        return history
+    spread = np.linspace(0, history.n_rows - 1, limit).round().astype(np.int64)
+    ends = [r for seg in history.segments for r in (seg.first_row - 1, seg.last_row)]
+    return take_rows(history, np.unique(np.concatenate([spread, np.asarray(ends, np.int64)])))
+
+
 def write_results(
     out_dir: str | os.PathLike[str],
     scenario: Scenario,
     history: History,
     elapsed: float,
     plots: bool = True,
+    streamed: HistoryStream | None = None,
 ) -> list[Path]:
-    """Write history.csv, the plots and summary.json (last) into ``out_dir``; return the paths."""
+    """Write history.csv, points.csv, the plots and summary.json (last); return the paths.
+
+    ``streamed``: the :class:`HistoryStream` that already wrote history.csv during the
+    run (``history`` then holds the rows kept in memory, for the plots).
+    """
     out = Path(out_dir)
     written: list[Path] = []
-    cols, units = history_columns(history, cone=scenario.params.is_cone)
-    comment = (
-        f"frictionlab {__version__} history of '{scenario.title or scenario.source}'\n"
-        f"{history.n_points} points x {history.n_rows} rows (row 0 = initial state); "
-        f"success = {str(history.success).lower()}"
-    )
-    written.append(write_csv_atomic(out / "history.csv", cols, units, comment))
+    if streamed is not None:
+        written.append(streamed.path)
+        recorded_rows = streamed.rows // max(history.n_points, 1)
+    else:
+        chosen = select_rows(history, scenario.output)
+        cols, units = history_columns(chosen, cone=scenario.params.is_cone)
+        written.append(write_csv_atomic(out / "history.csv", cols, units))
+        recorded_rows = chosen.n_rows
+    written.append(_write_points(out, history, scenario.params.is_cone))
     healing = healing_analysis(history) if scenario.kind == "program" else None
     if healing is not None:
         written.append(_write_healing(out, healing))
@@ -163,9 +463,27 @@ def write_results(
         if healing is not None:
             written.append(_plot_healing(out, scenario, healing))
     names = [p.name for p in written] + ["summary.json"]
-    summary = stamp(summarise(scenario, history, elapsed, names, healing), names, _inputs(scenario))
+    summary = stamp(
+        summarise(scenario, history, elapsed, names, healing, recorded_rows),
+        names,
+        _inputs(scenario),
+    )
     written.append(write_json_atomic(out / "summary.json", summary))
     return written
+
+
+def _write_points(out: Path, history: History, cone: bool) -> Path:
+    """points.csv: one row per point, the figures over every step (and per segment)."""
+    cols = dict(point_figures(history))
+    units = dict(POINT_UNITS)
+    f_unit = "-" if cone else "Pa"
+    units["final_F"] = f_unit
+    for seg in history.segments:
+        for key, values in _segment_figures(history, seg).items():
+            name = f"segment_{seg.index}_{key}"
+            cols[name] = np.asarray(values)
+            units[name] = f_unit if key == "final_F" else "-"
+    return _write_csv_blocks(out / "points.csv", cols, units)
 
 
 def _inputs(scenario: Scenario) -> list[Path]:
@@ -216,7 +534,20 @@ def _plot_healing(out: Path, scenario: Scenario, healing: Healing) -> Path:
     return save_figure(ax.figure, out / "healing.png")  # type: ignore[arg-type]
 
 
-def _plots(out: Path, scenario: Scenario, history: History) -> list[Path]:
+def _plot_note(history: History, scenario: Scenario) -> str:
+    """What the plotted rows and points are, for the figure title."""
+    notes = []
+    if history.thinned:
+        notes.append(f"{history.n_rows} evenly spread rows of {history.steps[-1]} steps")
+    elif scenario.output.every > 1:
+        notes.append(f"every {scenario.output.every}th step")
+    recorded = scenario.output.recorded_points(scenario.n_points)
+    if history.n_points < recorded:
+        notes.append(f"{history.n_points} of {recorded} points")
+    return f"\n(plotted: {'; '.join(notes)})" if notes else ""
+
+
+def _plots(out: Path, scenario: Scenario, full: History) -> list[Path]:
     from frictionlab.plotting.law import (
         plot_friction,
         plot_spring_slider,
@@ -224,18 +555,21 @@ def _plots(out: Path, scenario: Scenario, history: History) -> list[Path]:
         save_figure,
     )
 
+    history = plot_rows(full)
     paths = []
-    labels = scenario.labels
+    labels = tuple(
+        scenario.labels[p - 1] if p - 1 < len(scenario.labels) else f"point {p}"
+        for p in history.point_numbers
+    )
+    title = scenario.title + _plot_note(history, scenario)
     if scenario.kind == "spring_slider":
         fig = plot_spring_slider(history, labels)
-        fig.suptitle(scenario.title)
+        fig.suptitle(title)
         paths.append(save_figure(fig, out / "friction.png"))
     else:
-        paths.append(
-            save_figure(plot_friction(history, labels, scenario.title), out / "friction.png")
-        )
+        paths.append(save_figure(plot_friction(history, labels, title), out / "friction.png"))
     if not history.is_planar:
         ax = plot_traction_path(history, scenario.params, labels)
-        ax.set_title(scenario.title, fontsize=9)
+        ax.set_title(title, fontsize=9)
         paths.append(save_figure(ax.figure, out / "traction_path.png"))  # type: ignore[arg-type]
     return paths

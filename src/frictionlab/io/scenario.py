@@ -7,6 +7,7 @@ The schema (public contract, docs/driver.md has every key with its default and u
     [law]                         # -> SubloadingParams (same names)
     [initial]                     # normal_traction (required), tangential_traction, F
     [run]                         # optional: n_points, accuracy, max_halvings, allow_large
+    [output]                      # optional: every (record every k-th step), points (1-based)
     [[program]]                   # segments, in order; kind = slide | hold | reverse |
                                   # turn | cycle | normal | traction | table
     [machine]                     # instead of [[program]]: the stick-slip spring-slider
@@ -42,6 +43,7 @@ from frictionlab.driver import (
     simulate_spring_slider,
 )
 from frictionlab.driver.program import segment_fields
+from frictionlab.driver.recorder import Recording, RowSink
 from frictionlab.driver.simulate import ProgressCallback, count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.budget import RunEstimate, check_run_size, largest
@@ -60,6 +62,7 @@ from frictionlab.subloading.params import (
 __all__ = [
     "LAW_KEYS",
     "MachineRun",
+    "OutputOptions",
     "RunOptions",
     "Scenario",
     "law_table",
@@ -303,6 +306,60 @@ def _parse_run(t: TomlTable | None) -> RunOptions:
     return opts
 
 
+@dataclass(frozen=True)
+class OutputOptions:
+    """``[output]``: record every k-th step (``every``) and only some ``points`` (1-based)."""
+
+    every: int = 1
+    points: tuple[int, ...] | None = None
+
+    def recording(
+        self,
+        sink: RowSink | None = None,
+        keep_rows: int | None = None,
+        keep_points: Sequence[int] | None = None,
+    ) -> Recording:
+        """The driver's :class:`~frictionlab.driver.recorder.Recording` (0-based points)."""
+        pts = None if self.points is None else tuple(p - 1 for p in self.points)
+        return Recording(
+            every=self.every, points=pts, sink=sink, keep_rows=keep_rows, keep_points=keep_points
+        )
+
+    def recorded_points(self, n: int) -> int:
+        """How many points are recorded out of ``n``."""
+        return n if self.points is None else len(self.points)
+
+
+def _parse_output(t: TomlTable | None) -> OutputOptions:
+    if t is None:
+        return OutputOptions()
+    every = _int(t, "every", 1, 1)
+    points = t.get_list("points", int, None)
+    t.finish()
+    if points is not None:
+        if not points:
+            raise InputError("[output].points = [] is invalid: allowed at least one point number")
+        seen: set[int] = set()
+        for v in points:
+            if v < 1:
+                raise InputError(
+                    f"[output].points has {v}: allowed point numbers >= 1 (the first point is 1)"
+                )
+            if v in seen:
+                raise InputError(f"[output].points has {v} twice: allowed each point once")
+            seen.add(v)
+        points = sorted(points)
+    return OutputOptions(every, None if points is None else tuple(points))
+
+
+def _check_output_points(out: OutputOptions, n: int) -> None:
+    if out.points is not None and out.points[-1] > n:
+        raise InputError(
+            f"[output].points has {out.points[-1]}: allowed point numbers 1..{n} "
+            f"(the scenario has {n} point(s))"
+        )
+
+
 # --------------------------------------------------------------------------- segments
 _SEGMENT_KEYS: dict[str, dict[str, str]] = {
     "slide": {"velocity": "num", "distance": "num", "duration": "num", "direction_deg": "num"},
@@ -465,19 +522,34 @@ class Scenario:
     inputs: dict[str, Any] = field(default_factory=dict)
     labels: tuple[str, ...] = ()
     source: str = ""
+    output: OutputOptions = field(default_factory=OutputOptions)
 
     @property
     def kind(self) -> str:
         """``"program"`` or ``"spring_slider"``."""
         return "program" if self.program is not None else "spring_slider"
 
-    def run(self, progress: ProgressCallback | None = None) -> History:
-        """Simulate the scenario (never raises for a failed computation: see History.success)."""
+    def run(
+        self,
+        progress: ProgressCallback | None = None,
+        sink: RowSink | None = None,
+        keep_rows: int | None = None,
+        keep_points: Sequence[int] | None = None,
+    ) -> History:
+        """Simulate the scenario (never raises for a failed computation: see History.success).
+
+        A programme records as ``[output]`` says; ``sink`` receives the recorded rows in
+        chunks as they are computed; ``keep_rows`` and ``keep_points`` then bound what
+        stays in memory (see :class:`~frictionlab.driver.recorder.Recording`). The
+        spring-slider records every step in memory (``[output]`` is applied when its
+        history is written).
+        """
         opts = self.run_options
         if self.program is not None:
             return simulate(
                 self.params, self.program, self.initial, n_points=self.n_points,
                 accuracy=opts.accuracy, max_halvings=opts.max_halvings, progress=progress,
+                recording=self.output.recording(sink, keep_rows, keep_points),
             )  # fmt: skip
         assert self.machine is not None
         m = self.machine
@@ -569,6 +641,7 @@ def parse_scenario(
     law = root.table("law", required=True)
     initial = root.table("initial", required=True)
     run = root.table("run")
+    output_table = root.table("output")
     has_program = "program" in root
     machine_table = root.table("machine")
     program_tables = root.tables("program") if has_program else []
@@ -583,6 +656,7 @@ def parse_scenario(
     params, law_given = _parse_law(law)
     init, init_echo = _parse_initial(initial)
     opts = _parse_run(run)
+    output = _parse_output(output_table)
     varying = _per_point("", law_given) + _per_point("", init_echo)
     program: Program | None = None
     machine: MachineRun | None = None
@@ -609,6 +683,7 @@ def parse_scenario(
     n = _reraise(
         "scenario", lambda: count_points(params, program or (), init, opts.n_points, sizes)
     )
+    _check_output_points(output, n)
     # points alone (one step) before anything of size N is built, then with the steps
     check_run_size(RunEstimate(2, n, "[run].n_points"), opts.allow_large)
     try:
@@ -634,6 +709,10 @@ def parse_scenario(
             {**init_echo, "F": init_echo["F"] if init_echo["F"] is not None else "static value"}
         ),
         "run": {"n_points": n, "accuracy": opts.accuracy, "max_halvings": opts.max_halvings},
+        "output": {
+            "every": output.every,
+            "points": "all" if output.points is None else list(output.points),
+        },
     }
     if program is not None:
         inputs["program"] = program_echo
@@ -642,7 +721,7 @@ def parse_scenario(
     return Scenario(
         title=title, description=description, params=params, initial=init, run_options=opts,
         n_points=n, program=program, machine=machine, inputs=inputs,
-        labels=_labels(n, varying), source=source,
+        labels=_labels(n, varying), source=source, output=output,
     )  # fmt: skip
 
 

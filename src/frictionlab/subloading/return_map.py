@@ -10,6 +10,7 @@ contract (``success``, ``message``).
 from __future__ import annotations
 
 import enum
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -178,12 +179,16 @@ def update(
     du = np.asarray(slip_increment, dtype=np.float64)
     if du.shape != (n, 3):
         raise ParameterError("slip_increment", du.shape, f"shape ({n}, 3) for {n} points")
-    if not np.all(np.isfinite(du)):
-        raise ParameterError("slip_increment", du, "finite values (no NaN or infinity)")
     dt = np.atleast_1d(np.asarray(time_increment, dtype=np.float64))
     if dt.ndim != 1 or dt.shape[0] not in (1, n):
         raise ParameterError("time_increment", dt.shape, f"a scalar or shape ({n},)")
-    if not np.all(np.isfinite(dt)) or np.any(dt < 0.0):
+    # a finite sum means every value is finite (NaN and infinity propagate); only a sum
+    # that overflows needs the element-wise check
+    with np.errstate(over="ignore", invalid="ignore"):
+        du_sum, dt_sum = du.sum(), dt.sum()
+    if not math.isfinite(du_sum) and not np.isfinite(du).all():
+        raise ParameterError("slip_increment", du, "finite values (no NaN or infinity)")
+    if not (math.isfinite(dt_sum) or np.isfinite(dt).all()) or dt.min() < 0.0:
         raise ParameterError("time_increment", dt, "finite Delta t >= 0 [s]")
     if params.per_point and params.n_points != n:
         raise ParameterError("params", f"{params.n_points} points", f"{n} points, as in the state")

@@ -1,0 +1,55 @@
+"""One compiled pass over N points for the recorder's running figures (numba).
+
+Kept apart from :mod:`frictionlab.driver.recorder` so that edits there do not invalidate
+the compile cache (keyed on the files that use numba).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+__all__ = ["accumulate"]
+
+
+@njit(cache=True)
+def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work, path,
+               ratio, peak, peak_step, peak_time, peak_path,
+               seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
+    """Update the running figures of N points by one step, in place.
+
+    ``dt`` (1 or N,) [s]; ``du`` (N, 3) [m]; ``work`` (N,) [J/m^2]; ``traction`` (N, 3)
+    [Pa] after the step. Adds to ``time``, ``slip`` (N, 2), ``approach``,
+    ``plastic_work`` and ``path`` (|du_t|); writes ``ratio`` = |f_t|/f_n (0 where open);
+    where it exceeds ``peak`` (or ``seg_peak``) records it with the step, time and path
+    (time); raises ``seg_max_fn`` to f_n.
+    """
+    n = traction.shape[0]
+    shared = dt.shape[0] == 1
+    for i in range(n):
+        t = time[i] + (dt[0] if shared else dt[i])
+        time[i] = t
+        d0 = du[i, 0]
+        d1 = du[i, 1]
+        slip[i, 0] += d0
+        slip[i, 1] += d1
+        approach[i] += du[i, 2]
+        plastic_work[i] += work[i]
+        p = path[i] + math.hypot(d0, d1)
+        path[i] = p
+        fn = traction[i, 2]
+        r = math.hypot(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
+        ratio[i] = r
+        if r > peak[i]:
+            peak[i] = r
+            peak_step[i] = step
+            peak_time[i] = t
+            peak_path[i] = p
+        if r > seg_peak[i]:
+            seg_peak[i] = r
+            seg_peak_time[i] = t
+        if fn > seg_max_fn[i]:
+            seg_max_fn[i] = fn
+    return np.float64(0.0)
