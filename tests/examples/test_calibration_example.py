@@ -33,6 +33,12 @@ def test_example_calibration_recovers_the_true_parameters(tmp_path: Path) -> Non
     assert code == 0
     fit = json.loads((tmp_path / "fit.json").read_text())
     for name, entry in fit["parameters"].items():
+        if entry["stderr"] is None:
+            # No standard error: the data do not constrain it at all (its Jacobian column
+            # vanishes, e.g. alpha_t once the elastic slip is far below the sampling), and
+            # the fit must say so rather than report the value as measured.
+            assert name in fit["poorly_identified"], name
+            continue
         assert abs(entry["value"] - TRUE[name]) < 4.0 * entry["stderr"], name
     assert abs(fit["residual_std"] / NOISE - 1.0) < 0.05  # n = 4291: 1.1 % scatter
     # alpha_t: the elastic slip (1 um) is far below the 10 um between samples.

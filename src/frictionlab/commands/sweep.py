@@ -116,8 +116,11 @@ def run(args: argparse.Namespace) -> int:
 
 
 def load_spec(path: Path, plots: bool = True) -> tuple[SweepSpec, str, list[Task]]:
-    """Read a sweep file and its base scenario, validate every case -> (spec, command,
-    tasks); nothing runs and nothing is written."""
+    """Read a sweep file and its base scenario, validate every case.
+
+    Returns the parsed sweep (:class:`SweepSpec`), the command of its base scenario and the
+    tasks; nothing runs and nothing is written.
+    """
     spec = parse_sweep(load_toml(path), path.parent)
     base_data = load_toml(spec.base)
     command = detect_command(base_data, spec.command)

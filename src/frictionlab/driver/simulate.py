@@ -507,7 +507,10 @@ def _segment_records(
 def _check_prescribed_normal_tractions(
     params: SubloadingParams, program: Sequence[Segment]
 ) -> None:
-    """The no-snap-back check (spec pitfall 7) at every normal traction a segment prescribes.
+    """The no-snap-back check at every normal traction a segment prescribes.
+
+    A closed sliding-yield surface must not bend back on itself at the prescribed normal
+    traction, or the local solution of the law is not unique.
 
     Raises :class:`~frictionlab.errors.ParameterError` naming the segment, before any step
     (as ``initial_state`` does for the initial normal traction).
