@@ -11,7 +11,7 @@ import pytest
 from frictionlab.cli import main
 from frictionlab.driver import History
 from frictionlab.errors import InputError
-from frictionlab.io.budget import check_grid_size, check_run_size, largest
+from frictionlab.io.budget import check_grid_size, check_output_space, check_run_size, largest
 from frictionlab.io.results import SUMMARY_POINTS, summarise
 from frictionlab.io.scenario import parse_scenario
 from frictionlab.plotting.law import MAX_CURVES, plot_friction, shown_points
@@ -176,3 +176,50 @@ def test_a_huge_surface_grid_is_refused_before_allocating(
     assert "4 TB of memory" in err[0] and "[upper].allow_large = true" in err[0]
     check_grid_size("[upper].points", [200000, 200000], allow_large=True, memory=1)
     check_grid_size("[upper].points", [64, 64], allow_large=False, memory=2**30)
+
+
+def test_a_streamed_run_is_held_to_its_bounded_memory_not_its_rows() -> None:
+    """10^6 points x 100 steps: kept in memory 10^8 point-rows (~90 GB) would be refused;
+    streamed (what ``frictionlab simulate`` does with a programme) it needs the per-point
+    state only, and runs on a 24 GB machine."""
+    counts = [(100, "[[program]] #1.steps")]
+    held = largest(counts, 10**6, "[run].n_points")
+    streamed = largest(counts, 10**6, "[run].n_points", streamed=True)
+    with pytest.raises(InputError, match="of memory"):
+        check_run_size(held, allow_large=False, memory=24 * 2**30)
+    check_run_size(streamed, allow_large=False, memory=24 * 2**30)
+    assert streamed.memory < 0.05 * held.memory
+    assert streamed.output == held.output  # the same history.csv either way
+
+
+def test_every_divides_the_recorded_rows_and_the_output() -> None:
+    """1000 steps in one segment, every = 10: at most 1 + 100 + 2 rows (each segment's first
+    and last step are always kept), against 1001."""
+    one = largest([(1000, "k")], 5, "n", every=1, streamed=True)
+    tenth = largest([(1000, "k")], 5, "n", every=10, streamed=True)
+    assert one.recorded_rows == 1001
+    assert tenth.recorded_rows == 1 + 100 + 2
+    only_two = largest([(1000, "k")], 5, "n", every=10, recorded_points=2, streamed=True)
+    assert only_two.output < tenth.output < one.output
+
+
+def test_a_run_longer_than_a_day_is_refused_naming_its_key(tmp_path: Path) -> None:
+    """One point, 10^9 steps recorded every 10^6: small in memory and on disk, but at
+    >= 0.2 ms per driver step it would compute for days."""
+    text = BIG.replace("steps = 10", "steps = 1000000000") + "[output]\nevery = 1000000\n"
+    with pytest.raises(InputError) as err:
+        parse_scenario(tomllib.loads(text))
+    message = str(err.value)
+    assert "[[program]] #1.steps" in message and "days of computing" in message
+    assert "[run].allow_large = true" in message and "\n" not in message
+    parse_scenario(tomllib.loads(text.replace("[initial]", "[run]\nallow_large = true\n[initial]")))
+
+
+def test_output_beyond_the_free_disk_space_is_refused(tmp_path: Path) -> None:
+    estimate = largest([(10**6, "[[program]] #1.steps")], 100, "[run].n_points", streamed=True)
+    with pytest.raises(InputError, match=r"free on the disk of .*\[output\]\.every"):
+        check_output_space(estimate, tmp_path / "out", allow_large=False, free=10**9)
+    check_output_space(estimate, tmp_path / "out", allow_large=False, free=10**13)
+    check_output_space(estimate, tmp_path / "out", allow_large=True, free=1)
+    small = largest([(10, "[[program]] #1.steps")], 1, "[run].n_points", streamed=True)
+    check_output_space(small, tmp_path / "out" / "deeper", allow_large=False)  # real disk

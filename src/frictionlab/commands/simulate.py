@@ -30,6 +30,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from frictionlab.io.budget import check_output_space
     from frictionlab.io.output_set import check_out, output_set
     from frictionlab.io.results import PLOT_ROWS, HistoryStream, write_results
     from frictionlab.io.scenario import load_scenario
@@ -37,6 +38,8 @@ def run(args: argparse.Namespace) -> int:
 
     out = check_out(args.out, args.overwrite)
     scenario = load_scenario(args.scenario, args.set)  # every input check happens here
+    if scenario.estimate is not None:  # and the output's size against the free disk space
+        check_output_space(scenario.estimate, out, scenario.run_options.allow_large)
     with output_set(out, args.overwrite) as oset:
         start = time.perf_counter()
         stream = None

@@ -523,6 +523,8 @@ class Scenario:
     labels: tuple[str, ...] = ()
     source: str = ""
     output: OutputOptions = field(default_factory=OutputOptions)
+    #: The work estimate made while parsing (``None`` for a scenario built in Python).
+    estimate: RunEstimate | None = None
 
     @property
     def kind(self) -> str:
@@ -685,7 +687,11 @@ def parse_scenario(
     )
     _check_output_points(output, n)
     # points alone (one step) before anything of size N is built, then with the steps
-    check_run_size(RunEstimate(2, n, "[run].n_points"), opts.allow_large)
+    streamed = program is not None  # frictionlab simulate streams a programme's rows
+    recorded = output.recorded_points(n)
+    check_run_size(
+        RunEstimate(2, n, "[run].n_points", output.every, recorded, streamed), opts.allow_large
+    )
     try:
         init.state(params, n)
     except ParameterError as exc:  # the snap-back check names a [law] field
@@ -700,7 +706,8 @@ def parse_scenario(
     else:
         assert machine is not None
         counts = [(_machine_steps(machine), f"[machine].{_steps_key(machine)}")]
-    check_run_size(largest(counts, n, "[run].n_points"), opts.allow_large)
+    estimate = largest(counts, n, "[run].n_points", output.every, recorded, streamed)
+    check_run_size(estimate, opts.allow_large)
     inputs: dict[str, Any] = {
         "title": title,
         "description": description,
@@ -721,7 +728,7 @@ def parse_scenario(
     return Scenario(
         title=title, description=description, params=params, initial=init, run_options=opts,
         n_points=n, program=program, machine=machine, inputs=inputs,
-        labels=_labels(n, varying), source=source, output=output,
+        labels=_labels(n, varying), source=source, output=output, estimate=estimate,
     )  # fmt: skip
 
 
