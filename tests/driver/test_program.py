@@ -184,3 +184,13 @@ def test_slide_hold_slide_builder() -> None:
     prog = slide_hold_slide(0.1, 1.0, [10.0, 100.0], steps=100)
     assert [s.kind for s in prog] == ["slide", "hold", "slide"]
     assert prog[2].distance == pytest.approx(0.3) and prog[2].steps == 30
+
+
+def test_traction_legs_end_exactly_on_their_targets() -> None:
+    """From f_t = (1, 0) Pa to (1e-17, 0): ``a + s (b - a)`` would end at 0 (1 + (1e-17 - 1)
+    rounds to 0); each leg must end on its target exactly, and the return leg on the start."""
+    [plan] = plan_program((TractionControl(traction=(1e-17, 0.0), steps=3, cycles=2),), 1)
+    steps = plan.begin(np.array([[1.0, 0.0, 5.0]]))
+    ends = [plan.control(k).ft_target for k in (2, 5, 8, 11)]
+    assert steps == 12
+    assert [e[0, 0] for e in ends] == [1e-17, 1.0, 1e-17, 1.0]

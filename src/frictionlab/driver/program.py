@@ -689,7 +689,7 @@ class _TractionPlan(SegmentPlan):
         a, b = self.start[:, :2], self.target
         if leg % 2 == 1:
             a, b = b, a
-        target = a + (j + 1) / self.per_leg * (b - a)
+        target = _lerp(a, b, (j + 1) / self.per_leg)
         dt = self.resolved["duration"] / self.per_leg
         return Control(dt, np.zeros((n, 2)), np.zeros(n), ft_target=target)
 
