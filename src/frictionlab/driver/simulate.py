@@ -32,7 +32,7 @@ from frictionlab.driver.program import (
     program_points,
 )
 from frictionlab.driver.recorder import Recorder, Recording, RunStats, SegmentStats
-from frictionlab.driver.stepping import StepWork, advance
+from frictionlab.driver.stepping import OutputPool, StepWork, advance
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import (
     ContactState,
@@ -432,6 +432,7 @@ def simulate(
          "refined_for_accuracy", "accuracy_unmet"), 0,
     )  # fmt: skip
     success, message = True, f"completed {len(plans)} segments"
+    pool = OutputPool(n)
     for index, plan in enumerate(plans, start=1):
         estimated = plan.estimated_steps
         steps = plan.begin(state.traction)
@@ -445,7 +446,7 @@ def simulate(
         for k in range(steps):
             control = plan.control(k)
             outcome, w = advance(
-                params, state, control, accuracy=accuracy, max_halvings=max_halvings
+                params, state, control, accuracy=accuracy, max_halvings=max_halvings, pool=pool
             )
             _count_work(work, w, completed=outcome.ok)
             if not outcome.ok:
@@ -478,6 +479,8 @@ def simulate(
             f"; the accuracy {accuracy} was not met in {work['accuracy_unmet']} steps "
             f"even with 2**{max_halvings} substeps"
         )
+    if pool.holds(state):  # the final state outlives the reused buffers: a copy of its own
+        state = state.replace()
     rows = rec.finish()
     segment_records = _segment_records(rows["step"], records)
     return _history_from_rows(
