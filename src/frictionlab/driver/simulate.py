@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from itertools import compress
 from typing import Any
 
 import numpy as np
@@ -464,7 +465,7 @@ def simulate(
         if seg is not None:
             reached = seg.max_normal_traction
             reasons = snap_back_violations(params, reached)
-            bad = [i for i, r in enumerate(reasons) if r]
+            bad = list(compress(range(len(reasons)), reasons))  # points with a reason
             if bad:
                 warnings.append(
                     f"segment #{index} ({plan.kind}) reached f_n = {reached[bad[0]]:.6g} Pa "

@@ -137,13 +137,14 @@ class OutputPool:
     """Two sets of the law's output buffers for N points, used in turn.
 
     The first solve of each step writes into the set that does not hold the state it
-    starts from, so a run of single-solve steps allocates no new outputs; the state
+    starts from, so a run of single-solve steps allocates no new outputs. The sets hold no
+    consistent tangent: only a slip-controlled step uses them, and it needs none. The state
     returned over a set stays valid until the step after next (callers copy what they
     keep longer).
     """
 
     def __init__(self, n_points: int) -> None:
-        self.sets = (kernels.empty_outputs(n_points), kernels.empty_outputs(n_points))
+        self.sets = tuple(kernels.empty_outputs(n_points, tangent=False) for _ in range(2))
 
     def free_for(self, state: ContactState) -> dict[str, np.ndarray]:
         """The set that does not hold ``state``."""
@@ -196,7 +197,9 @@ class _LawStep:
         if self.closing is None:
             out, self.out = self.out, None
             if out is not None and update is _LAW_UPDATE:
-                return update(self.params, self.state, du, dt, raise_on_failure=False, out=out)
+                return update(
+                    self.params, self.state, du, dt, raise_on_failure=False, tangent=False, out=out
+                )
             return update(self.params, self.state, du, dt, raise_on_failure=False)
         c, sel = self.fraction, self.closing
         local = du.copy()
