@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from frictionlab.driver import Hold, Recording, Slide, simulate
+from frictionlab.driver import Hold, Recording, Slide, TractionControl, simulate
 from frictionlab.driver.program import plan_program
 from frictionlab.driver.stepping import OutputPool, advance
 from frictionlab.subloading import initial_state
@@ -66,3 +66,16 @@ def test_final_state_is_a_read_only_copy_apart_from_the_buffers() -> None:
     again = simulate(set_a(), (Slide(velocity=0.1, distance=0.04, steps=4),), initial=final)
     assert again.success
     np.testing.assert_array_equal(final.traction, h.traction[-1])  # untouched by the new run
+
+
+def test_traction_control_of_many_points_is_not_checked_as_a_normal_traction() -> None:
+    """A tangential traction target (N, 2) reached after a slide (it was once passed to the
+    normal-traction check and failed to broadcast)."""
+    program = (
+        Slide(velocity=0.1, distance=0.03, steps=3),
+        TractionControl(traction=(0.2, 0.0), steps=4),
+    )
+    h = simulate(set_a(), program, n_points=4)
+    assert h.success, h.message
+    np.testing.assert_allclose(h.traction[-1, :, 0], 0.2, rtol=1e-10)
+    np.testing.assert_array_equal(h.traction[-1, :, 1], 0.0)

@@ -29,6 +29,7 @@ from frictionlab.driver.program import (
     NormalStep,
     Segment,
     Table,
+    _NormalPlan,
     plan_program,
     program_points,
 )
@@ -437,7 +438,7 @@ def simulate(
     for index, plan in enumerate(plans, start=1):
         estimated = plan.estimated_steps
         steps = plan.begin(state.traction)
-        target = getattr(plan, "target", None)
+        target = plan.target if isinstance(plan, _NormalPlan) else None  # not a tangential one
         if target is not None:  # a normal traction prescribed by a change: check it now
             check_snap_back(params, target, f"program[{index}].traction_change")
         total += steps - estimated
