@@ -11,7 +11,7 @@ import math
 import numpy as np
 from numba import njit
 
-__all__ = ["accumulate"]
+__all__ = ["accumulate", "accumulate_row"]
 
 
 @njit(cache=True)
@@ -41,6 +41,67 @@ def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work,
         path[i] = p
         fn = traction[i, 2]
         r = math.hypot(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
+        ratio[i] = r
+        if r > peak[i]:
+            peak[i] = r
+            peak_step[i] = step
+            peak_time[i] = t
+            peak_path[i] = p
+        if r > seg_peak[i]:
+            seg_peak[i] = r
+            seg_peak_time[i] = t
+        if fn > seg_max_fn[i]:
+            seg_max_fn[i] = fn
+    return np.float64(0.0)
+
+
+@njit(cache=True)
+def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, iterations,
+                   time, slip, approach, plastic_work, path,
+                   ratio, peak, peak_step, peak_time, peak_path,
+                   seg_peak, seg_peak_time, seg_max_fn,
+                   row_time, row_slip, row_approach, row_work, row_traction,
+                   row_F, row_R, row_plastic_slip, row_status, row_iterations):  # fmt: skip
+    """:func:`accumulate` and, in the same pass, the recorded row of every point.
+
+    ``F``, ``R``, ``plastic_slip``, ``status``, ``iterations`` (N,) are the step's new
+    values; the ``row_*`` arrays (one row of the history, shapes as the running figures
+    and ``traction``) receive the figures after the step and the new state.
+    """
+    n = traction.shape[0]
+    shared = dt.shape[0] == 1
+    for i in range(n):
+        t = time[i] + (dt[0] if shared else dt[i])
+        time[i] = t
+        row_time[i] = t
+        d0 = du[i, 0]
+        d1 = du[i, 1]
+        s0 = slip[i, 0] + d0
+        s1 = slip[i, 1] + d1
+        slip[i, 0] = s0
+        slip[i, 1] = s1
+        row_slip[i, 0] = s0
+        row_slip[i, 1] = s1
+        a = approach[i] + du[i, 2]
+        approach[i] = a
+        row_approach[i] = a
+        w = plastic_work[i] + work[i]
+        plastic_work[i] = w
+        row_work[i] = w
+        p = path[i] + math.hypot(d0, d1)
+        path[i] = p
+        f0 = traction[i, 0]
+        f1 = traction[i, 1]
+        fn = traction[i, 2]
+        row_traction[i, 0] = f0
+        row_traction[i, 1] = f1
+        row_traction[i, 2] = fn
+        row_F[i] = F[i]
+        row_R[i] = R[i]
+        row_plastic_slip[i] = plastic_slip[i]
+        row_status[i] = status[i]
+        row_iterations[i] = iterations[i]
+        r = math.hypot(f0, f1) / fn if fn > 0.0 else 0.0
         ratio[i] = r
         if r > peak[i]:
             peak[i] = r

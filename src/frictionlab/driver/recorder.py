@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from frictionlab.driver._running import accumulate
+from frictionlab.driver._running import accumulate, accumulate_row
 from frictionlab.errors import ParameterError
 
 __all__ = ["Recorder", "Recording", "RowSink", "RunStats", "SegmentStats"]
@@ -298,17 +298,34 @@ class Recorder:
         s.steps += 1
         seg.last_step = s.steps
         ratio = np.empty(s.time.shape[0])
+        dts = np.atleast_1d(np.asarray(dt, dtype=np.float64))
+        k = self._seg_k
+        self._seg_k = k + 1
+        self.state = state
+        recorded = k == 0 or last or (k + 1) % self.every == 0
+        if recorded and self.selected is None:  # one pass: running figures and the row
+            b, j = self.buf, self.fill
+            accumulate_row(
+                s.steps, dts, du, work, state.traction, state.F, state.R, state.plastic_slip,
+                status, iterations, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
+                ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
+                seg.peak_friction_ratio, seg.peak_time, seg.max_normal_traction,
+                b["time"][j], b["slip"][j], b["approach"][j], b["plastic_work"][j],
+                b["traction"][j], b["F"][j], b["R"][j], b["plastic_slip"][j], b["status"][j],
+                b["iterations"][j],
+            )  # fmt: skip
+            s.friction_ratio = ratio
+            self._row_meta(self._seg_index, substeps, k == 0 or last, False, solves)
+            self._last_recorded = True
+            return
         accumulate(
-            s.steps, np.atleast_1d(np.asarray(dt, dtype=np.float64)), du, work,
+            s.steps, dts, du, work,
             state.traction, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
             ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
             seg.peak_friction_ratio, seg.peak_time, seg.max_normal_traction,
         )  # fmt: skip
         s.friction_ratio = ratio
-        self.state = state
-        k = self._seg_k
-        self._seg_k = k + 1
-        if k == 0 or last or (k + 1) % self.every == 0:
+        if recorded:
             self._write_row(self._seg_index, substeps, k == 0 or last, status, iterations, solves)
             self._last_recorded = True
         else:
@@ -349,12 +366,17 @@ class Recorder:
             else:
                 b["status"][j] = status[sel]
                 b["iterations"][j] = iterations[sel]
-        b["step"][j] = s.steps
+        self._row_meta(segment, substeps, end, status is None, solves)
+
+    def _row_meta(self, segment: int, substeps: int, end: bool, initial: bool, solves: int) -> None:
+        """The per-row values of the row being written; then hand on or grow as needed."""
+        b, j = self.buf, self.fill
+        b["step"][j] = self.stats.steps
         b["segment"][j] = segment
         b["substeps"][j] = substeps
         b["solves"][j] = solves
         b["_index"][j] = self.recorded
-        b["_end"][j] = end or status is None
+        b["_end"][j] = end or initial
         self.recorded += 1
         self.fill = j + 1
         if self.store_all:

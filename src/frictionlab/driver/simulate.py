@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from itertools import compress
 from typing import Any
 
 import numpy as np
@@ -28,11 +29,12 @@ from frictionlab.driver.program import (
     NormalStep,
     Segment,
     Table,
+    _NormalPlan,
     plan_program,
     program_points,
 )
 from frictionlab.driver.recorder import Recorder, Recording, RunStats, SegmentStats
-from frictionlab.driver.stepping import StepWork, advance
+from frictionlab.driver.stepping import OutputPool, StepWork, advance
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import (
     ContactState,
@@ -432,10 +434,11 @@ def simulate(
          "refined_for_accuracy", "accuracy_unmet"), 0,
     )  # fmt: skip
     success, message = True, f"completed {len(plans)} segments"
+    pool = OutputPool(n)
     for index, plan in enumerate(plans, start=1):
         estimated = plan.estimated_steps
         steps = plan.begin(state.traction)
-        target = getattr(plan, "target", None)
+        target = plan.target if isinstance(plan, _NormalPlan) else None  # not a tangential one
         if target is not None:  # a normal traction prescribed by a change: check it now
             check_snap_back(params, target, f"program[{index}].traction_change")
         total += steps - estimated
@@ -445,7 +448,7 @@ def simulate(
         for k in range(steps):
             control = plan.control(k)
             outcome, w = advance(
-                params, state, control, accuracy=accuracy, max_halvings=max_halvings
+                params, state, control, accuracy=accuracy, max_halvings=max_halvings, pool=pool
             )
             _count_work(work, w, completed=outcome.ok)
             if not outcome.ok:
@@ -463,7 +466,7 @@ def simulate(
         if seg is not None:
             reached = seg.max_normal_traction
             reasons = snap_back_violations(params, reached)
-            bad = [i for i, r in enumerate(reasons) if r]
+            bad = list(compress(range(len(reasons)), reasons))  # points with a reason
             if bad:
                 warnings.append(
                     f"segment #{index} ({plan.kind}) reached f_n = {reached[bad[0]]:.6g} Pa "
@@ -478,6 +481,8 @@ def simulate(
             f"; the accuracy {accuracy} was not met in {work['accuracy_unmet']} steps "
             f"even with 2**{max_halvings} substeps"
         )
+    if pool.holds(state):  # the final state outlives the reused buffers: a copy of its own
+        state = state.replace()
     rows = rec.finish()
     segment_records = _segment_records(rows["step"], records)
     return _history_from_rows(

@@ -19,11 +19,19 @@ from typing import Any
 import numpy as np
 
 from frictionlab.driver.program import Control
-from frictionlab.subloading import ContactState, Status, StepResult, SubloadingParams, update
+from frictionlab.subloading import (
+    ContactState,
+    Status,
+    StepResult,
+    SubloadingParams,
+    kernels,
+    update,
+)
 from frictionlab.subloading.kernels import SEPARATION_RTOL
 
 __all__ = [
     "Attempt",
+    "OutputPool",
     "StepWork",
     "advance",
     "combine_attempts",
@@ -33,6 +41,8 @@ __all__ = [
 ]
 
 _FAILED = int(Status.FAILED)
+#: The law's own update, the one known to write into preallocated outputs (``out``).
+_LAW_UPDATE = update
 
 #: Newton iterations of the tangential traction control, per (sub)step.
 MAX_TRACTION_ITERATIONS = 60
@@ -123,6 +133,29 @@ def _unreachable_normal_target(state: ContactState, fn_target: np.ndarray) -> At
     )
 
 
+class OutputPool:
+    """Two sets of the law's output buffers for N points, used in turn.
+
+    The first solve of each step writes into the set that does not hold the state it
+    starts from, so a run of single-solve steps allocates no new outputs. The sets hold no
+    consistent tangent: only a slip-controlled step uses them, and it needs none. The state
+    returned over a set stays valid until the step after next (callers copy what they
+    keep longer).
+    """
+
+    def __init__(self, n_points: int) -> None:
+        self.sets = tuple(kernels.empty_outputs(n_points, tangent=False) for _ in range(2))
+
+    def free_for(self, state: ContactState) -> dict[str, np.ndarray]:
+        """The set that does not hold ``state``."""
+        a, b = self.sets
+        return b if state.traction is a["traction"] else a
+
+    def holds(self, state: ContactState) -> bool:
+        """True when ``state`` lies in one of the sets (to be copied before it is kept)."""
+        return any(state.traction is s["traction"] for s in self.sets)
+
+
 class _LawStep:
     """The law's update for one control, with normal-traction targets reached exactly.
 
@@ -137,10 +170,15 @@ class _LawStep:
     """
 
     def __init__(
-        self, params: SubloadingParams, state: ContactState, fn_target: np.ndarray | None
+        self,
+        params: SubloadingParams,
+        state: ContactState,
+        fn_target: np.ndarray | None,
+        out: dict[str, np.ndarray] | None = None,
     ) -> None:
         self.params, self.state = params, state
         self.closing: np.ndarray | None = None
+        self.out = out  # outputs for the next plain call (used once)
         if fn_target is None:
             return
         closing = (state.traction[:, 2] <= 0.0) & (fn_target > 0.0)
@@ -157,6 +195,11 @@ class _LawStep:
 
     def __call__(self, du: np.ndarray, dt: np.ndarray | float) -> StepResult:
         if self.closing is None:
+            out, self.out = self.out, None
+            if out is not None and update is _LAW_UPDATE:
+                return update(
+                    self.params, self.state, du, dt, raise_on_failure=False, tangent=False, out=out
+                )
             return update(self.params, self.state, du, dt, raise_on_failure=False)
         c, sel = self.fraction, self.closing
         local = du.copy()
@@ -198,8 +241,16 @@ def _resolution_hint(
     )
 
 
-def solve_control(params: SubloadingParams, state: ContactState, control: Control) -> Attempt:
+def solve_control(
+    params: SubloadingParams,
+    state: ContactState,
+    control: Control,
+    out: dict[str, np.ndarray] | None = None,
+) -> Attempt:
     """Apply one mixed-control increment (no substepping).
+
+    ``out``: the law's output buffers (:class:`OutputPool`), apart from ``state``, for a
+    slip-controlled step (the returned state then lies in them); otherwise unused.
 
     * prescribed normal traction: the approach is exact, ``(target - f_n)/alpha_n + gap``
       (no plastic normal sliding, Eq 32); a point closing onto the target from an
@@ -220,7 +271,7 @@ def solve_control(params: SubloadingParams, state: ContactState, control: Contro
         du[:, 2] = (control.fn_target - state.traction[:, 2]) / alpha_n + state.gap
     else:
         du[:, 2] = control.du_n
-    law = _LawStep(params, state, control.fn_target)
+    law = _LawStep(params, state, control.fn_target, out if control.ft_target is None else None)
     if control.ft_target is None:
         single = law(du, control.dt)
         attempt = _result_attempt(single, du, 1, single.iterations)
@@ -392,12 +443,23 @@ def advance(
     *,
     accuracy: float | None = None,
     max_halvings: int = 10,
+    pool: OutputPool | None = None,
 ) -> tuple[Attempt, StepWork]:
-    """Advance a programme by one recorded step with automatic substepping."""
+    """Advance a programme by one recorded step with automatic substepping.
+
+    With a ``pool`` the step's first solve writes into its free set of buffers (the other
+    solves of a substepped step allocate their own).
+    """
+    first = [None if pool is None else pool.free_for(state)]
+
+    def solve(st: ContactState, ctl: Control) -> Attempt:
+        out, first[0] = first[0], None
+        return solve_control(params, st, ctl, out)
+
     return substep(
         state,
         control,
-        solve=lambda st, ctl: solve_control(params, st, ctl),
+        solve=solve,
         halves=lambda st, ctl: ctl.halves(st.traction),
         combine=combine_attempts,
         error=lambda a, b: step_error(params, a, b),

@@ -284,9 +284,8 @@ def _checked_buffers(
     out: dict[str, np.ndarray], n: int, state: ContactState
 ) -> dict[str, np.ndarray]:
     """Check user-supplied output buffers: complete, the right shapes, not aliasing ``state``."""
-    template = kernels.empty_outputs(0, True)
-    template["plastic_slip"] = np.empty(0)
-    for key, empty in template.items():
+    held = [getattr(state, name) for name in ("traction", "F", "R", "plastic_slip", "gap")]
+    for key, empty in _TEMPLATE.items():
         arr = out.get(key)
         if arr is None:
             raise ParameterError("out", f"no '{key}' buffer", "kernels.empty_outputs(N)")
@@ -300,11 +299,15 @@ def _checked_buffers(
             raise ParameterError(
                 "out", f"'{key}' {arr.shape} {arr.dtype}", "kernels.empty_outputs(N) buffers"
             )
-        for name in ("traction", "F", "R", "plastic_slip", "gap"):
-            if np.shares_memory(arr, getattr(state, name)):
+        for name, x in zip(("traction", "F", "R", "plastic_slip", "gap"), held, strict=True):
+            if np.may_share_memory(arr, x) and np.shares_memory(arr, x):  # bounds first: fast
                 raise ParameterError(
                     "out",
                     f"'{key}' shares memory with state.{name}",
                     "buffers apart from the state",
                 )
     return out
+
+
+#: Empty output buffers: the keys, trailing shapes and dtypes ``out`` must match.
+_TEMPLATE = {**kernels.empty_outputs(0, True), "plastic_slip": np.empty(0)}
