@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import tomllib
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -14,7 +15,13 @@ from frictionlab.errors import InputError
 from frictionlab.io.budget import check_grid_size, check_output_space, check_run_size, largest
 from frictionlab.io.results import SUMMARY_POINTS, summarise
 from frictionlab.io.scenario import parse_scenario
-from frictionlab.plotting.law import MAX_CURVES, plot_friction, shown_points
+from frictionlab.plotting.law import (
+    MAX_CURVES,
+    MAX_LEGEND_CURVES,
+    plot_friction,
+    save_figure,
+    shown_points,
+)
 
 SCENARIO = """
 [law]
@@ -95,7 +102,7 @@ def test_plots_draw_an_evenly_spaced_subset(n: int) -> None:
 def test_a_plot_of_many_points_says_it_shows_a_subset() -> None:
     _, history = _run(MAX_CURVES + 10)
     fig = plot_friction(history)
-    ax_s, ax_t = fig.axes
+    ax_s, ax_t = fig.axes[:2]
     assert len(ax_s.lines) == 2 * MAX_CURVES  # a curve and a hold marker per point drawn
     labels = [t.get_text() for t in ax_t.get_legend().get_texts()]
     assert f"{MAX_CURVES} of {MAX_CURVES + 10} points shown (evenly spaced)" in labels
@@ -223,3 +230,24 @@ def test_output_beyond_the_free_disk_space_is_refused(tmp_path: Path) -> None:
     check_output_space(estimate, tmp_path / "out", allow_large=True, free=1)
     small = largest([(10, "[[program]] #1.steps")], 1, "[run].n_points", streamed=True)
     check_output_space(small, tmp_path / "out" / "deeper", allow_large=False)  # real disk
+
+
+def test_many_labelled_curves_get_a_colour_bar_not_a_legend_entry_each(tmp_path: Path) -> None:
+    """40 legend entries overflowed the axes (and collapsed the layout); above
+    MAX_LEGEND_CURVES the colours are explained by a colour bar of the point number."""
+    n = MAX_CURVES + 10
+    _, history = _run(n)
+    labels = [f"point {i + 1}" for i in range(n)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # e.g. "constrained_layout not applied"
+        fig = plot_friction(history, labels)
+        save_figure(fig, tmp_path / "f.png")
+    ax_t = fig.axes[1]
+    entries = [t.get_text() for t in ax_t.get_legend().get_texts()]
+    assert len(entries) <= MAX_LEGEND_CURVES and not any(e.startswith("point ") for e in entries)
+    assert [ax.get_ylabel() for ax in fig.axes[2:]] == ["point number"]
+    assert fig.axes[2].get_ylim() == (1.0, float(n))  # the points' own numbers
+    _, few = _run(3)
+    fig = plot_friction(few, ["a", "b", "c"])
+    assert len(fig.axes) == 2  # few curves: a legend entry each, no colour bar
+    assert {"a", "b", "c"} <= {t.get_text() for t in fig.axes[1].get_legend().get_texts()}

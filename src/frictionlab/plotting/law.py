@@ -66,12 +66,16 @@ def _labels(labels: Sequence[str], n: int) -> list[str | None]:
     return [(labels[i] if i < len(labels) and labels[i] else None) for i in range(n)]
 
 
-def _colors(n: int) -> list[Any]:
+def _colors(n: int, numbers: np.ndarray | None = None) -> list[Any]:
+    """One colour per point: tab10 for up to 10, else viridis of the point number
+    (``numbers``, 1-based, default 1..n), which :func:`_point_colorbar` explains."""
     from matplotlib import colormaps
 
     if n <= 10:
         return [colormaps["tab10"](i) for i in range(n)]
-    return list(colormaps["viridis"](np.linspace(0.0, 1.0, n)))  # one vectorised call
+    num = np.arange(1.0, n + 1.0) if numbers is None else np.asarray(numbers, dtype=np.float64)
+    span = float(num.max() - num.min()) or 1.0
+    return list(colormaps["viridis"]((num - num.min()) / span))  # one vectorised call
 
 
 #: Above this many points the plots draw an evenly spaced subset (first and last
@@ -84,6 +88,36 @@ def shown_points(n: int) -> np.ndarray:
     if n <= MAX_CURVES:
         return np.arange(n)
     return np.unique(np.round(np.linspace(0.0, n - 1, MAX_CURVES)).astype(int))
+
+
+#: Most per-curve legend entries; above it the curves' colours are explained by a colour bar
+#: of the point number instead (40 entries overflow the axes).
+MAX_LEGEND_CURVES = 10
+
+
+def _legend_names(names: list[str | None], shown: np.ndarray) -> list[str | None]:
+    """Per-point legend names, or none at all when more than :data:`MAX_LEGEND_CURVES` show."""
+    if shown.size > MAX_LEGEND_CURVES:
+        return [None] * len(names)
+    return names
+
+
+def _point_colorbar(fig: Figure, axes: Any, numbers: np.ndarray, shown: np.ndarray) -> None:
+    """A colour bar "point number" for the viridis colours of many curves (none for few).
+
+    ``numbers``: the 1-based numbers of the history's points (a streamed run keeps only
+    some of them), as coloured by :func:`_colors`.
+    """
+    if shown.size <= MAX_LEGEND_CURVES:
+        return
+    from matplotlib import colormaps
+    from matplotlib.cm import ScalarMappable
+    from matplotlib.colors import Normalize
+
+    low, high = float(np.min(numbers)), float(np.max(numbers))
+    norm = Normalize(low, high if high > low else low + 1.0)
+    mappable = ScalarMappable(norm=norm, cmap=colormaps["viridis"])
+    fig.colorbar(mappable, ax=axes, label="point number", fraction=0.05, pad=0.02)
 
 
 def _note_subset(ax: Axes, n: int, shown: np.ndarray) -> bool:
@@ -123,10 +157,12 @@ def plot_friction(
     )
     x = history.slip[..., 0] if planar else history.path_length
     names = _labels(labels, n)
-    colors = _colors(n)
+    colors = _colors(n, history.point_numbers)
     log_time = _log_time(history.time)
     shown_idx = shown_points(n)
+    names = _legend_names(names, shown_idx)
     subset = _note_subset(ax_t, n, shown_idx)
+    _point_colorbar(fig, [ax_s, ax_t], history.point_numbers, shown_idx)
     for i in shown_idx:
         ax_s.plot(x[:, i], ratio[:, i], color=colors[i], lw=1.2, label=names[i])
         shown = history.time[:, i] > 0 if log_time else slice(None)
@@ -198,7 +234,7 @@ def plot_traction_path(
     r1 = np.where(fn > 0, history.traction[..., 0] / safe, 0.0)
     r2 = np.where(fn > 0, history.traction[..., 1] / safe, 0.0)
     names = _labels(labels, n)
-    colors = _colors(n)
+    colors = _colors(n, history.point_numbers)
     if params is not None and fn[0, 0] > 0:
         for value, style, name in (
             (float(np.ravel(params.static)[0]), "--", "static yield curve (F_s)"),
@@ -208,7 +244,10 @@ def plot_traction_path(
             if curve.size:
                 ax.plot(curve[0], curve[1], style, color="0.35", lw=1.0, label=name)
     shown_idx = shown_points(n)
+    names = _legend_names(names, shown_idx)
     _note_subset(ax, n, shown_idx)
+    if ax.figure is not None:
+        _point_colorbar(ax.figure, ax, history.point_numbers, shown_idx)  # type: ignore[arg-type]
     for i in shown_idx:
         ax.plot(r1[:, i], r2[:, i], color=colors[i], lw=1.2, label=names[i])
         ax.plot(r1[-1, i], r2[-1, i], "o", color=colors[i], ms=4)
@@ -235,10 +274,12 @@ def plot_spring_slider(
     speed = history.extra["velocity"]
     V = np.asarray(history.segments[0].resolved["velocity"]) if history.segments else np.ones(n)
     names = _labels(labels, n)
-    colors = _colors(n)
+    colors = _colors(n, history.point_numbers)
     ratio = history.friction_ratio
     shown_idx = shown_points(n)
+    names = _legend_names(names, shown_idx)
     subset = _note_subset(ax_f, n, shown_idx)
+    _point_colorbar(fig, [ax_f, ax_v], history.point_numbers, shown_idx)
     for i in shown_idx:
         ax_f.plot(load[:, i], ratio[:, i], color=colors[i], lw=1.0, label=names[i])
         rel = np.abs(speed[:, i]) / (V[i] if V[i] > 0 else 1.0)
