@@ -14,6 +14,23 @@ from numba import njit
 __all__ = ["accumulate", "accumulate_row"]
 
 
+@njit(cache=True, inline="always")
+def _record_extremes(i, step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
+                     seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
+    """Point ``i``: a new overall or segment peak of the friction ratio ``r`` (with its step,
+    time ``t`` and path ``p``) and the segment's largest normal traction ``fn``."""
+    if r > peak[i]:
+        peak[i] = r
+        peak_step[i] = step
+        peak_time[i] = t
+        peak_path[i] = p
+    if r > seg_peak[i]:
+        seg_peak[i] = r
+        seg_peak_time[i] = t
+    if fn > seg_max_fn[i]:
+        seg_max_fn[i] = fn
+
+
 @njit(cache=True)
 def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work, path,
                ratio, peak, peak_step, peak_time, peak_path,
@@ -42,16 +59,8 @@ def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work,
         fn = traction[i, 2]
         r = math.hypot(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
         ratio[i] = r
-        if r > peak[i]:
-            peak[i] = r
-            peak_step[i] = step
-            peak_time[i] = t
-            peak_path[i] = p
-        if r > seg_peak[i]:
-            seg_peak[i] = r
-            seg_peak_time[i] = t
-        if fn > seg_max_fn[i]:
-            seg_max_fn[i] = fn
+        _record_extremes(i, step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
+                         seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
     return np.float64(0.0)
 
 
@@ -103,14 +112,6 @@ def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, ite
         row_iterations[i] = iterations[i]
         r = math.hypot(f0, f1) / fn if fn > 0.0 else 0.0
         ratio[i] = r
-        if r > peak[i]:
-            peak[i] = r
-            peak_step[i] = step
-            peak_time[i] = t
-            peak_path[i] = p
-        if r > seg_peak[i]:
-            seg_peak[i] = r
-            seg_peak_time[i] = t
-        if fn > seg_max_fn[i]:
-            seg_max_fn[i] = fn
+        _record_extremes(i, step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
+                         seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
     return np.float64(0.0)
