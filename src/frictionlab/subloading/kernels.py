@@ -380,68 +380,55 @@ def _start(
 
 @njit(cache=True)
 def _point(
-    i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
+    dt, ca, sa, p, t1_old, t2_old, fn, F_old, R_old, gap_old, slip1, slip2, dun,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
-    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
-    out_status, out_iter,
 ):  # fmt: skip
-    """Advance point ``i`` (parameter row ``row``, time increment ``dt``) by one increment.
-
-    ``(ca, sa)`` are the cosine and sine of the row's orthotropy angle (evaluated once by
-    the loops when all points share one row).
+    """Advance one point by one increment (time increment ``dt`` [s]).
 
     The readable per-point definition of the update (steps 0-7 of the module docstring);
-    :func:`step_points` and :func:`step_points_parallel` only loop over it. The tangent
-    (step 7) is skipped when ``want_tangent`` is False (``out_tangent`` is then not touched).
+    :func:`step_points` and :func:`step_points_parallel` only loop over it. Scalars in,
+    scalars out: the point's old traction ``(t1_old, t2_old, fn)`` [Pa] in the contact
+    frame, its ``F_old`` [Pa], ``R_old``, ``gap_old`` [m], its slip increment ``(slip1,
+    slip2, dun)`` [m] and ``p``, its row of the parameter table as a tuple (columns
+    ``P_*``). ``(ca, sa)`` are the cosine and sine of the row's orthotropy angle (evaluated
+    once by the loops when all points share one row). No array is passed in, so that the
+    compiled loop does no reference counting per point (atomic operations that cost a
+    third of the kernel's time and serialise the threads).
+
+    Returns the tuple of :func:`_result`: status, iterations, the new traction (contact
+    frame), F, R, gap, dlam, plastic slip increment (two tangential components), plastic
+    work increment, then the seven possibly non-zero entries of the consistent tangent
+    (``k00, k01, k10, k11, k02, k12, k22``; zero when ``want_tangent`` is False).
     """
-    alpha_n = P[row, P_ALPHA_N]
-    alpha_t = P[row, P_ALPHA_T]
-    Fs = P[row, P_FS]
-    Fk = P[row, P_FK]
-    u = P[row, P_U]
-    kappa = P[row, P_KAPPA]
-    xi = P[row, P_XI]
-    m = P[row, P_M]
-    n = P[row, P_N]
-    A1 = P[row, P_A1]
-    A2 = P[row, P_A2]
+    alpha_n = p[P_ALPHA_N]
+    alpha_t = p[P_ALPHA_T]
+    Fs = p[P_FS]
+    Fk = p[P_FK]
+    u = p[P_U]
+    kappa = p[P_KAPPA]
+    xi = p[P_XI]
+    m = p[P_M]
+    n = p[P_N]
+    A1 = p[P_A1]
+    A2 = p[P_A2]
     Aref = max(A1, A2)
     # 0. into principal axes (contact frame -> (e*_1, e*_2))
-    b1 = ca * P[row, P_BETA1] + sa * P[row, P_BETA2]
-    b2 = -sa * P[row, P_BETA1] + ca * P[row, P_BETA2]
-    f1 = ca * traction[i, 0] + sa * traction[i, 1]
-    f2 = -sa * traction[i, 0] + ca * traction[i, 1]
-    fn = traction[i, 2]
-    du1 = ca * slip_inc[i, 0] + sa * slip_inc[i, 1]
-    du2 = -sa * slip_inc[i, 0] + ca * slip_inc[i, 1]
-    dun = slip_inc[i, 2]
-
-    if want_tangent:
-        for a in range(3):
-            for b in range(3):
-                out_tangent[i, a, b] = 0.0
-    out_dlam[i] = 0.0
-    out_diss[i] = 0.0
-    out_vp[i, 0] = 0.0
-    out_vp[i, 1] = 0.0
-    out_vp[i, 2] = 0.0
-    out_iter[i] = 0
+    b1 = ca * p[P_BETA1] + sa * p[P_BETA2]
+    b2 = -sa * p[P_BETA1] + ca * p[P_BETA2]
+    f1 = ca * t1_old + sa * t2_old
+    f2 = -sa * t1_old + ca * t2_old
+    du1 = ca * slip1 + sa * slip2
+    du2 = -sa * slip1 + ca * slip2
 
     # 2. recovery-only size
-    F_rec = recovered_size(F_old[i], Fs, Fk, xi, m, n, dt, integ, rform)
+    F_rec = recovered_size(F_old, Fs, Fk, xi, m, n, dt, integ, rform)
     # 1. elastic predictor and separation: a trial normal traction that is zero to
     #    the rounding of its own computation opens the contact
-    closing_in = alpha_n * (dun - gap_old[i])
+    closing_in = alpha_n * (dun - gap_old)
     fn_tr = fn + closing_in
     if fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in)):
-        out_traction[i, 0] = 0.0
-        out_traction[i, 1] = 0.0
-        out_traction[i, 2] = 0.0
-        out_F[i] = F_old[i] if open_frozen else F_rec
-        out_R[i] = 0.0
-        out_gap[i] = max(-fn_tr / alpha_n, 0.0)
-        out_status[i] = OPEN
-        return
+        return _result(OPEN, 0, 0.0, 0.0, 0.0, F_old if open_frozen else F_rec, 0.0,
+                       max(-fn_tr / alpha_n, 0.0))  # fmt: skip
     # The straight trial path in (fhat, f_n), s in [0, 1]: fhat(s) = h + s e,
     # f_n(s) = fn0 + s dfn. Its derivatives with respect to the slip increment (for the
     # tangent): d e / d du_t = et I, d h / d du_n = hn, d e / d du_n = en,
@@ -459,12 +446,12 @@ def _point(
         en2 = -alpha_n * b2
         f0n = 0.0
         dfnn = alpha_n
-        R_prev = R_old[i]
+        R_prev = R_old
     else:
         # Re-closing (theory.md, "Re-closing"): the contact forms as a virgin contact,
         # f_t = 0, at the normal traction of the end of the step; only the tangential
         # slip after the closure, the fraction 1 - s_c with s_c = gap/du_n, loads it.
-        s_c = gap_old[i] / dun if dun > 0.0 else 0.0
+        s_c = gap_old / dun if dun > 0.0 else 0.0
         s_c = min(max(s_c, 0.0), 1.0)
         et = alpha_t * (1.0 - s_c)
         f1t = et * du1
@@ -474,7 +461,7 @@ def _point(
         fn0 = fn_tr
         hn1 = -alpha_n * b1
         hn2 = -alpha_n * b2
-        ds_c = gap_old[i] / (dun * dun) if dun > 0.0 and 0.0 < s_c < 1.0 else 0.0
+        ds_c = gap_old / (dun * dun) if dun > 0.0 and 0.0 < s_c < 1.0 else 0.0
         en1 = alpha_t * du1 * ds_c
         en2 = alpha_t * du2 * ds_c
         f0n = alpha_n
@@ -498,13 +485,13 @@ def _point(
     gRn = 0.0
     w0 = _norm(h1 / A1, h2 / A2)
     phi0, phi0_w, phi0_fn = potential(surface, tear_k, w0, fn0)
-    dF0 = _path_size_slope(F_old[i], 0.0, Fs, xi, n, dt, integ, rform)
+    dF0 = _path_size_slope(F_old, 0.0, Fs, xi, n, dt, integ, rform)
     r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, e1, e2, dfn, A1, A2,
-                            F_old[i], dF0)  # fmt: skip
+                            F_old, dF0)  # fmt: skip
     dF1 = _path_size_slope(F_rec, 1.0, Fs, xi, n, dt, integ, rform)
     r_1, d_1 = _ratio_slope(phi_tr, phi_tr_w, phi_tr_fn, w_tr, fh1t, fh2t, e1, e2, dfn, A1,
                             A2, F_rec, dF1)  # fmt: skip
-    s_star = _path_minimum(h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old[i],
+    s_star = _path_minimum(h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old,
                            Fs, Fk, xi, m, n, dt, integ, rform, r_0, d_0, r_1,
                            d_1)  # fmt: skip
     if s_star == 0.0:
@@ -521,7 +508,7 @@ def _point(
     q2 = 0.0
     if 0.0 < s_star < 1.0:
         rho, _, F_s, phis_w, phis_fn, ws, q1, q2 = _path_ratio(
-            s_star, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old[i], Fs, Fk,
+            s_star, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old, Fs, Fk,
             xi, m, n, dt, integ, rform,
         )  # fmt: skip
     if rho < R_start:
@@ -550,27 +537,17 @@ def _point(
         if surface != COULOMB and R_new > 1.0 + RTOL_ACCEPT:
             # normal traction pushed the state outside a closed surface: the rate form has
             # no tangential mechanism that could bring it back
-            _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                      out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
-            out_status[i] = FAILED
-            return
+            return _failed(0, t1_old, t2_old, fn, F_old, R_old, gap_old, alpha_t, alpha_n,
+                           want_tangent)  # fmt: skip
         if R_new > 1.0:
             R_new = 1.0
-        out_traction[i, 0] = ca * f1t - sa * f2t
-        out_traction[i, 1] = sa * f1t + ca * f2t
-        out_traction[i, 2] = fn_tr
-        out_F[i] = F_rec
-        out_R[i] = R_new
-        out_gap[i] = 0.0
         # f_t = et du_t: d f_t / d du_n = alpha_t du_t gap / du_n^2 when closing
         if want_tangent:
-            out_tangent[i, 0, 0] = et
-            out_tangent[i, 1, 1] = et
-            out_tangent[i, 0, 2] = ca * ext1 - sa * ext2
-            out_tangent[i, 1, 2] = sa * ext1 + ca * ext2
-            out_tangent[i, 2, 2] = alpha_n
-        out_status[i] = STICK
-        return
+            return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr, F_rec,
+                           R_new, 0.0, k00=et, k11=et, k02=ca * ext1 - sa * ext2,
+                           k12=sa * ext1 + ca * ext2, k22=alpha_n)  # fmt: skip
+        return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr, F_rec,
+                       R_new, 0.0)  # fmt: skip
 
     # 5. plastic corrector on the bracket [0, 1] in q: r(0) = r0 > 0 (the loading test),
     #    r(1) < 0 (checked below). cos/sin of pi R_start/2 once per point.
@@ -585,7 +562,7 @@ def _point(
     r1 = -math.inf
     if need_end:
         end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                        R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
+                        R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt,
                         integ, rform)  # fmt: skip
         r1 = end[0]
         if not r1 < 0.0:
@@ -595,29 +572,20 @@ def _point(
             # tangential mechanism left), so R = f_n g(0)/F if that is <= 1.
             R_end = end[13] / end[7]
             if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
-                _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                          out_traction, out_F, out_R, out_gap, out_tangent,
-                          want_tangent)  # fmt: skip
-                out_status[i] = FAILED
-                return
-            dlam = end[4]
+                return _failed(0, t1_old, t2_old, fn, F_old, R_old, gap_old, alpha_t,
+                               alpha_n, want_tangent)  # fmt: skip
             norm = _norm(fh1t, fh2t)
-            tb1 = fh1t / norm
-            tb2 = fh2t / norm
-            _write_slip(i, dlam, fn_tr * b1, fn_tr * b2, tb1, tb2, fn_tr, end[7],
-                        min(R_end, 1.0), ca, sa, out_traction, out_F, out_R, out_gap,
-                        out_dlam, out_vp, out_diss, out_status)  # fmt: skip
             # f_t = f_n beta: independent of du_t
-            if want_tangent:
-                out_tangent[i, 0, 2] = alpha_n * P[row, P_BETA1]
-                out_tangent[i, 1, 2] = alpha_n * P[row, P_BETA2]
-                out_tangent[i, 2, 2] = alpha_n
-            return
+            k02 = alpha_n * p[P_BETA1] if want_tangent else 0.0
+            k12 = alpha_n * p[P_BETA2] if want_tangent else 0.0
+            return _slip(0, end[4], fn_tr * b1, fn_tr * b2, fh1t / norm, fh2t / norm, fn_tr,
+                         end[7], min(R_end, 1.0), ca, sa, 0.0, 0.0, 0.0, 0.0, k02, k12,
+                         alpha_n if want_tangent else 0.0)  # fmt: skip
     q0 = _start(r0, r1, phi_tr, phi_tr_w, w_tr, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t,
                 surface, tear_k, R_start, y0, s0, u, ulaw, F_rec, Fk, kappa, m)  # fmt: skip
     if q0 < 0.0:  # trial outside the domain of g: locate the root's half first
         mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
-                        tear_k, R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt,
+                        tear_k, R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt,
                         integ, rform)[0]  # fmt: skip
         q0 = 0.75 if mid > 0.0 else 0.25
     # Unknown t in [0, 1/2]: q = t, or 1 - q = t when q lies in the upper half (switched
@@ -636,7 +604,7 @@ def _point(
     q = 1.0 - t if flip else t
     omq = t if flip else 1.0 - t
     res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                    R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
+                    R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt, integ,
                     rform)  # fmt: skip
     while it < MAX_ITERATIONS:
         it += 1
@@ -692,25 +660,20 @@ def _point(
         q = 1.0 - t if flip else t
         omq = t if flip else 1.0 - t
         res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                        R_start, y0, s0, u, ulaw, F_old[i], Fs, Fk, kappa, xi, m, n, dt, integ,
+                        R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt, integ,
                         rform)  # fmt: skip
-    out_iter[i] = it
     if not converged:
-        _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-                  out_traction, out_F, out_R, out_gap, out_tangent, want_tangent)  # fmt: skip
-        out_status[i] = FAILED
-        return
+        return _failed(it, t1_old, t2_old, fn, F_old, R_old, gap_old, alpha_t, alpha_n,
+                       want_tangent)  # fmt: skip
     (r, r_gamma, phi_1, phi_2, dlam, R, _, F, _, phi_fn, gamma, W, hard, phi, _,
      _, _, _) = res  # fmt: skip
     d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
     # 6. update (principal axes)
     tb1 = (fh1t / d1) / W  # flow direction t-bar at t_{n+1}, Eqs (87), (99)
     tb2 = (fh2t / d2) / W
-    _write_slip(i, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca, sa,
-                out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss,
-                out_status)  # fmt: skip
     if not want_tangent:
-        return
+        return _slip(it, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca,
+                     sa, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
     # 7. consistent tangent: r(gamma; fhat^tr, f_n) = 0
     #    r_fhtr_j = Phi_j a_j - hard * d(dlam)/d(fhat^tr_j)
     ddl1 = gamma * (fh1t / (d1 * d1)) / (W * alpha_t)
@@ -748,13 +711,10 @@ def _point(
     p12 = ca * T12 - sa * T22
     p21 = sa * T11 + ca * T21
     p22 = sa * T12 + ca * T22
-    out_tangent[i, 0, 0] = p11 * ca - p12 * sa
-    out_tangent[i, 0, 1] = p11 * sa + p12 * ca
-    out_tangent[i, 1, 0] = p21 * ca - p22 * sa
-    out_tangent[i, 1, 1] = p21 * sa + p22 * ca
-    out_tangent[i, 0, 2] = ca * T1n - sa * T2n
-    out_tangent[i, 1, 2] = sa * T1n + ca * T2n
-    out_tangent[i, 2, 2] = alpha_n
+    return _slip(it, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca, sa,
+                 p11 * ca - p12 * sa, p11 * sa + p12 * ca, p21 * ca - p22 * sa,
+                 p21 * sa + p22 * ca, ca * T1n - sa * T2n, sa * T1n + ca * T2n,
+                 alpha_n)  # fmt: skip
 
 
 @njit(cache=True)
@@ -784,10 +744,12 @@ def step_points(
         row = 0 if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
         ca, sa = (ca0, sa0) if shared_p else _axes(P, row)
-        _point(i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
-               surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
-               out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
-               out_status, out_iter)  # fmt: skip
+        res = _point(dt, ca, sa, _row(P, row), traction[i, 0], traction[i, 1],
+                     traction[i, 2], F_old[i], R_old[i], gap_old[i], slip_inc[i, 0],
+                     slip_inc[i, 1], slip_inc[i, 2], surface, tear_k, ulaw, integ, rform,
+                     open_frozen, want_tangent)  # fmt: skip
+        _store(i, res, want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
+               out_diss, out_tangent, out_status, out_iter)  # fmt: skip
 
 
 @njit(cache=True, parallel=True)
@@ -811,42 +773,75 @@ def step_points_parallel(
         row = np.int64(0) if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
         ca, sa = (ca0, sa0) if shared_p else _axes(P, row)
-        _point(i, row, dt, ca, sa, traction, F_old, R_old, gap_old, slip_inc, P,
-               surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
-               out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
-               out_status, out_iter)  # fmt: skip
+        res = _point(dt, ca, sa, _row(P, row), traction[i, 0], traction[i, 1],
+                     traction[i, 2], F_old[i], R_old[i], gap_old[i], slip_inc[i, 0],
+                     slip_inc[i, 1], slip_inc[i, 2], surface, tear_k, ulaw, integ, rform,
+                     open_frozen, want_tangent)  # fmt: skip
+        _store(i, res, want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
+               out_diss, out_tangent, out_status, out_iter)  # fmt: skip
 
 
 @njit(cache=True)
-def _write_slip(i, dlam, g1, g2, tb1, tb2, fn, F, R, ca, sa, out_traction, out_F, out_R,
-                out_gap, out_dlam, out_vp, out_diss, out_status):  # fmt: skip
-    """Store a plastic result given in principal axes: traction (g1, g2, fn), flow t-bar."""
-    out_dlam[i] = dlam
-    out_diss[i] = dlam * (g1 * tb1 + g2 * tb2)
-    out_vp[i, 0] = dlam * (ca * tb1 - sa * tb2)
-    out_vp[i, 1] = dlam * (sa * tb1 + ca * tb2)
-    out_traction[i, 0] = ca * g1 - sa * g2
-    out_traction[i, 1] = sa * g1 + ca * g2
-    out_traction[i, 2] = fn
-    out_F[i] = F
-    out_R[i] = R
-    out_gap[i] = 0.0
-    out_status[i] = SLIP
+def _result(status, iterations, t1, t2, tn, F, R, gap, dlam=0.0, vp1=0.0, vp2=0.0, diss=0.0,
+            k00=0.0, k01=0.0, k10=0.0, k11=0.0, k02=0.0, k12=0.0, k22=0.0):  # fmt: skip
+    """The result tuple of :func:`_point` (the order :func:`_store` writes)."""
+    return (status, iterations, t1, t2, tn, F, R, gap, dlam, vp1, vp2, diss,
+            k00, k01, k10, k11, k02, k12, k22)  # fmt: skip
 
 
 @njit(cache=True)
-def _keep_old(i, traction, F_old, R_old, gap_old, alpha_t, alpha_n,
-              out_traction, out_F, out_R, out_gap, out_tangent, want_tangent):  # fmt: skip
+def _slip(iterations, dlam, g1, g2, tb1, tb2, fn, F, R, ca, sa,
+          k00, k01, k10, k11, k02, k12, k22):  # fmt: skip
+    """A plastic result given in principal axes: traction (g1, g2, fn), flow t-bar."""
+    return _result(SLIP, iterations, ca * g1 - sa * g2, sa * g1 + ca * g2, fn, F, R, 0.0,
+                   dlam, dlam * (ca * tb1 - sa * tb2), dlam * (sa * tb1 + ca * tb2),
+                   dlam * (g1 * tb1 + g2 * tb2), k00, k01, k10, k11, k02, k12, k22)  # fmt: skip
+
+
+@njit(cache=True)
+def _failed(iterations, t1, t2, tn, F_old, R_old, gap_old, alpha_t, alpha_n, want_tangent):  # fmt: skip
     """A failed point keeps its old state and gets the elastic tangent (never NaN)."""
-    for a in range(3):
-        out_traction[i, a] = traction[i, a]
-    out_F[i] = F_old[i]
-    out_R[i] = R_old[i]
-    out_gap[i] = gap_old[i]
     if want_tangent:
-        out_tangent[i, 0, 0] = alpha_t
-        out_tangent[i, 1, 1] = alpha_t
-        out_tangent[i, 2, 2] = alpha_n
+        return _result(FAILED, iterations, t1, t2, tn, F_old, R_old, gap_old,
+                       k00=alpha_t, k11=alpha_t, k22=alpha_n)  # fmt: skip
+    return _result(FAILED, iterations, t1, t2, tn, F_old, R_old, gap_old)
+
+
+@njit(cache=True)
+def _row(P, row):  # fmt: skip
+    """Row ``row`` of the parameter table as a tuple (a value: no reference counting)."""
+    return (P[row, 0], P[row, 1], P[row, 2], P[row, 3], P[row, 4], P[row, 5], P[row, 6],
+            P[row, 7], P[row, 8], P[row, 9], P[row, 10], P[row, 11], P[row, 12],
+            P[row, 13])  # fmt: skip
+
+
+@njit(cache=True)
+def _store(i, res, want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
+           out_diss, out_tangent, out_status, out_iter):  # fmt: skip
+    """Write the result tuple of :func:`_point` to row ``i`` of the outputs."""
+    out_status[i] = res[0]
+    out_iter[i] = res[1]
+    out_traction[i, 0] = res[2]
+    out_traction[i, 1] = res[3]
+    out_traction[i, 2] = res[4]
+    out_F[i] = res[5]
+    out_R[i] = res[6]
+    out_gap[i] = res[7]
+    out_dlam[i] = res[8]
+    out_vp[i, 0] = res[9]
+    out_vp[i, 1] = res[10]
+    out_vp[i, 2] = 0.0
+    out_diss[i] = res[11]
+    if want_tangent:
+        out_tangent[i, 0, 0] = res[12]
+        out_tangent[i, 0, 1] = res[13]
+        out_tangent[i, 1, 0] = res[14]
+        out_tangent[i, 1, 1] = res[15]
+        out_tangent[i, 0, 2] = res[16]
+        out_tangent[i, 1, 2] = res[17]
+        out_tangent[i, 2, 0] = 0.0
+        out_tangent[i, 2, 1] = 0.0
+        out_tangent[i, 2, 2] = res[18]
 
 
 def empty_outputs(n_points: int, tangent: bool = True) -> dict[str, np.ndarray]:
