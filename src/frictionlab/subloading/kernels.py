@@ -799,7 +799,8 @@ def _slip(iterations, dlam, g1, g2, tb1, tb2, fn, F, R, ca, sa,
 
 
 @njit(cache=True)
-def _failed(iterations, t1, t2, tn, F_old, R_old, gap_old, alpha_t, alpha_n, want_tangent):  # fmt: skip
+def _failed(iterations, t1, t2, tn, F_old, R_old, gap_old, alpha_t, alpha_n,
+            want_tangent):  # fmt: skip
     """A failed point keeps its old state and gets the elastic tangent (never NaN)."""
     if want_tangent:
         return _result(FAILED, iterations, t1, t2, tn, F_old, R_old, gap_old,
