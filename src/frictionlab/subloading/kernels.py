@@ -111,27 +111,31 @@ def _state_at(
         phi = 0.0 if surface == COULOMB else fn * 1.0
         return (phi - R * F, 0.0, 0.0, 0.0, dlam, R, dR, F, dF, 0.0, 0.0, 0.0, 0.0, phi,
                 0.0, 0.0, 0.0, 0.0)  # fmt: skip
+    # Divisions are the kernel's most expensive arithmetic (after the math library): one
+    # reciprocal per distinct denominator, and fhat_i / A_i = A_i t_i, fhat_i / A_i^2 = t_i.
     gamma = Aref * Aref * q / omq
-    d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
-    t1 = fh1t / d1  # = fh1 / A1^2
-    t2 = fh2t / d2
+    i1 = 1.0 / (A1 * A1 + gamma)
+    i2 = 1.0 / (A2 * A2 + gamma)
+    t1 = fh1t * i1  # = fhat_1 / A1^2
+    t2 = fh2t * i2
     W = _norm(t1, t2)
     dlam = gamma * W / alpha_t
-    w = _norm(fh1 / A1, fh2 / A2)
+    w = _norm(A1 * t1, A2 * t2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fn)
     R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
     F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
     r = phi - R * F
-    # derivatives with respect to gamma
-    dfh1 = -fh1 / d1
-    dfh2 = -fh2 / d2
+    # derivatives with respect to gamma: dfhat_i = -fhat_i / d_i = -A_i^2 t_i / d_i
+    dfh1 = -A1 * A1 * t1 * i1
+    dfh2 = -A2 * A2 * t2 * i2
     if w > 0.0:
-        phi_1 = phi_w * fh1 / (A1 * A1 * w)
-        phi_2 = phi_w * fh2 / (A2 * A2 * w)
+        phi_per_w = phi_w / w
+        phi_1 = phi_per_w * t1
+        phi_2 = phi_per_w * t2
     else:
         phi_1 = 0.0
         phi_2 = 0.0
-    dW = -(fh1t * fh1t / (d1 * d1 * d1) + fh2t * fh2t / (d2 * d2 * d2)) / W if W > 0.0 else 0.0
+    dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
     ddlam = (W + gamma * dW) / alpha_t
     hard = dR * F + R * dF
     phi_gamma = phi_1 * dfh1 + phi_2 * dfh2
@@ -281,14 +285,15 @@ def _model_at(
     """
     omq = 1.0 - q
     gamma = Aref * Aref * q / omq
-    d1, d2, _, _, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
-    t1 = fh1t / d1
-    t2 = fh2t / d2
+    i1 = 1.0 / (A1 * A1 + gamma)  # one reciprocal per denominator, as in _state_at
+    i2 = 1.0 / (A2 * A2 + gamma)
+    t1 = fh1t * i1
+    t2 = fh2t * i2
     W = _norm(t1, t2)
     dlam = gamma * W / alpha_t
-    w = _norm(fh1 / A1, fh2 / A2)
+    w = _norm(A1 * t1, A2 * t2)
     phi, phi_w, _ = potential(surface, tear_k, w, fn)
-    R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR / 6.0))
+    R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR * (1.0 / 6.0)))
     Rp = dR + dlam * (ddR + 0.5 * dddR * dlam)
     if R > 1.0 or Rp < 0.0:  # beyond the reach of the series: R saturates
         R = min(R, 1.0)
@@ -297,8 +302,8 @@ def _model_at(
     dF = dF + ddF * dlam
     dphi = 0.0  # dPhi/dgamma
     if w > 0.0:
-        dphi = -phi_w * (fh1 * fh1 / (A1 * A1 * d1) + fh2 * fh2 / (A2 * A2 * d2)) / w
-    dW = -(t1 * t1 / d1 + t2 * t2 / d2) / W if W > 0.0 else 0.0
+        dphi = -phi_w * (A1 * A1 * t1 * t1 * i1 + A2 * A2 * t2 * t2 * i2) / w
+    dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
     ddlam = (W + gamma * dW) / alpha_t
     dm = dphi - (Rp * F + R * dF) * ddlam
     return phi - R * F, dm * Aref * Aref / (omq * omq)

@@ -80,7 +80,9 @@ def potential(code: int, tear_k: float, w: float, fn: float) -> tuple[float, flo
     Closed: Phi = f_n g(chi), Phi_w = g'(chi), Phi_fn = g - chi g'.
     """
     if code == COULOMB:
-        return w / fn, 1.0 / fn, -w / (fn * fn)
+        inv = 1.0 / fn  # one division (the kernels' costliest arithmetic)
+        phi = w * inv
+        return phi, inv, -phi * inv
     chi = w / fn
     g, dg = g_value(code, tear_k, chi)
     if math.isinf(g):
