@@ -9,6 +9,10 @@ Figures (per contact point per increment, N points, all sliding unless stated):
 
 * ``coulomb_penalty``: a plain Coulomb penalty radial return, compiled with numba
   ``parallel=True`` like the law's kernel — the baseline of the ``<= 10x`` target;
+* ``floor``: :func:`transcendental_floor`, only the update's memory traffic and the
+  math-library calls the law makes per sliding point (a test counts them in the law's
+  own source): no scalar implementation of the law can beat it, so ``floor_over_coulomb``
+  and ``python_loop_over_floor`` bound what the two law targets can reach on a machine;
 * ``law_*``: :func:`frictionlab.subloading.update` for the full law (cone, softening,
   recovery, rotation, orthotropy), with fresh outputs and the tangent (the default),
   with preallocated outputs and no tangent, and the serial kernel (the parallel gain);
@@ -82,6 +86,51 @@ def coulomb_return(traction, du, alpha_t, alpha_n, mu, out_traction, out_dlam): 
         out_dlam[i] = dlam
 
 
+@njit(cache=True, parallel=True)
+def transcendental_floor(traction, F_old, R_old, gap, du, dlam, u, kappa, xi, Fs, Fk, dt,
+                         evaluations, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
+                         out_diss, out_tangent, out_status, out_iter):  # fmt: skip
+    """A lower bound of any scalar implementation of the law's update (not the law).
+
+    Per point, exactly the memory traffic of ``update()`` (the same inputs read, the same
+    outputs written, tangent included) and the transcendental functions that the built
+    return map evaluates for a sliding point with ``evaluations`` residual evaluations
+    (two as built: one Newton step from the model start and the converged check): the recovery
+    ``exp``, ``cos``/``sin`` of pi R0/2, and per evaluation the ``expm1`` and ``atan2``
+    of the closed-form ratio R and the ``expm1`` of the size F; the second evaluation
+    depends on the first, as Newton's does. Everything else the law computes is left
+    out, so no implementation calling the same scalar math library can be faster.
+    """
+    half_pi = 0.5 * math.pi
+    for k in prange(traction.shape[0]):
+        i = np.int64(k)
+        F_rec = Fs - (Fs - F_old[i]) * math.exp(-xi * dt / Fs)
+        y0 = math.cos(half_pi * R_old[i])
+        s0 = math.sin(half_pi * R_old[i])
+        step = dlam[i]
+        R = R_old[i]
+        F = F_rec
+        for _ in range(evaluations):
+            em = math.expm1(-half_pi * u * step)
+            y = y0 * (1.0 + em)
+            s2 = s0 * s0 - y0 * y0 * (em * (2.0 + em))
+            R = math.atan2(math.sqrt(max(s2, 0.0)), y) / half_pi
+            F = Fk + (F_rec - Fk) * (1.0 + math.expm1(-kappa * step / Fk))
+            step *= 1.0 + 1e-3 * (R - R_old[i])  # the next evaluation depends on this one
+        for a in range(3):
+            out_traction[i, a] = traction[i, a] + 1e-3 * du[i, a] * F
+            out_vp[i, a] = du[i, a] * R
+            for b in range(3):
+                out_tangent[i, a, b] = F * (a == b)
+        out_F[i] = F
+        out_R[i] = R
+        out_gap[i] = gap[i]
+        out_dlam[i] = step
+        out_diss[i] = step * F
+        out_status[i] = 1
+        out_iter[i] = evaluations
+
+
 def _median(func: Callable[[], object], repeats: int) -> dict[str, float]:
     """Warm-up call, then ``repeats`` timed calls: median and minimum wall time [s].
 
@@ -137,6 +186,16 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
     coulomb = _median(lambda: coulomb_return(traction, du, 1000.0, 1000.0, 0.3, out_t, out_l),
                       repeats)  # fmt: skip
     log(f"coulomb penalty return       {coulomb['median_s'] / points * 1e6:8.4f} us/point")
+    floor_out = kernels.empty_outputs(points)
+    row = full._kernel_table[0]
+    floor_args = (traction, state.F, state.R, state.gap, du, check.plastic_multiplier,
+                  row[kernels.P_U], row[kernels.P_KAPPA], row[kernels.P_XI], row[kernels.P_FS],
+                  row[kernels.P_FK], 0.01, 2, floor_out["traction"],
+                  floor_out["F"], floor_out["R"], floor_out["gap"], floor_out["dlam"],
+                  floor_out["vp"], floor_out["diss"], floor_out["tangent"],
+                  floor_out["status"], floor_out["iterations"])  # fmt: skip
+    floor = _median(lambda: transcendental_floor(*floor_args), repeats)
+    log(f"floor: I/O + libm calls only {floor['median_s'] / points * 1e6:8.4f} us/point")
     default = _median(lambda: update(full, state, du, 0.01), repeats)
     log(f"full law, update()           {default['median_s'] / points * 1e6:8.4f} us/point")
     buffers = kernels.empty_outputs(points, tangent=False)
@@ -185,6 +244,17 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
     def per_point(t: dict[str, float]) -> float:
         return t["median_s"] / points * 1e6
 
+    log(
+        f"law / Coulomb = {per_point(default) / per_point(coulomb):.1f} (target <= "
+        f"{TARGET_LAW_OVER_COULOMB:g}; the floor alone: "
+        f"{per_point(floor) / per_point(coulomb):.1f})"
+    )
+    log(
+        f"interpreted / law = {python_per_point * 1e6 / per_point(default):.0f} (target >= "
+        f"{TARGET_SPEEDUP_OVER_PYTHON:g}; over the floor: "
+        f"{python_per_point * 1e6 / per_point(floor):.0f})"
+    )
+
     return {
         "points": points,
         "fraction_sliding": sliding,
@@ -202,6 +272,10 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         "update_loop_us_per_point": loop_per_point * 1e6,
         "speedup_over_update_loop": loop_per_point * 1e6 / per_point(default),
         "law_over_coulomb": per_point(default) / per_point(coulomb),
+        "floor_us_per_point": per_point(floor),
+        "floor_over_coulomb": per_point(floor) / per_point(coulomb),
+        "python_loop_over_floor": python_per_point * 1e6 / per_point(floor),
+        "update_loop_over_floor": loop_per_point * 1e6 / per_point(floor),
         "law_lean_over_coulomb": per_point(lean) / per_point(coulomb),
         "parallel_gain": per_point(serial) / per_point(parallel),
         "speedup_over_python": python_per_point * 1e6 / per_point(default),
@@ -212,6 +286,7 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         "target_speedup_over_python": TARGET_SPEEDUP_OVER_PYTHON,
         "timings": {
             "coulomb": coulomb,
+            "floor": floor,
             "update": default,
             "lean": lean,
             "serial": serial,

@@ -21,6 +21,8 @@ def test_bench_writes_every_figure(tmp_path: Path) -> None:
     assert law["fraction_sliding"] == 1.0 and law["timings"]["update"]["runs"] >= 5
     for key in (
         "law_over_coulomb",
+        "floor_over_coulomb",
+        "python_loop_over_floor",
         "speedup_over_python",
         "speedup_over_update_loop",
         "parallel_gain",
