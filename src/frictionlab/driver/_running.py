@@ -15,20 +15,23 @@ __all__ = ["accumulate", "accumulate_row"]
 
 
 @njit(cache=True, inline="always")
-def _record_extremes(i, step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
-                     seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
-    """Point ``i``: a new overall or segment peak of the friction ratio ``r`` (with its step,
-    time ``t`` and path ``p``) and the segment's largest normal traction ``fn``."""
-    if r > peak[i]:
-        peak[i] = r
-        peak_step[i] = step
-        peak_time[i] = t
-        peak_path[i] = p
-    if r > seg_peak[i]:
-        seg_peak[i] = r
-        seg_peak_time[i] = t
-    if fn > seg_max_fn[i]:
-        seg_max_fn[i] = fn
+def _extremes(step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
+              seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
+    """One point's figures after a step with friction ratio ``r`` at time ``t`` and path
+    ``p``: a new overall or segment peak (with its step, time and path) and the segment's
+    largest normal traction ``fn``. Scalars in and out: an array passed to a helper is
+    reference-counted on every call, which cost more than the rest of the loop."""
+    if r > peak:
+        peak = r
+        peak_step = step
+        peak_time = t
+        peak_path = p
+    if r > seg_peak:
+        seg_peak = r
+        seg_peak_time = t
+    if fn > seg_max_fn:
+        seg_max_fn = fn
+    return peak, peak_step, peak_time, peak_path, seg_peak, seg_peak_time, seg_max_fn
 
 
 @njit(cache=True)
@@ -59,8 +62,9 @@ def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work,
         fn = traction[i, 2]
         r = math.hypot(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
         ratio[i] = r
-        _record_extremes(i, step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
-                         seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
+        (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
+         seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
+                                    peak_path[i], seg_peak[i], seg_peak_time[i], seg_max_fn[i])
     return np.float64(0.0)
 
 
@@ -112,6 +116,7 @@ def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, ite
         row_iterations[i] = iterations[i]
         r = math.hypot(f0, f1) / fn if fn > 0.0 else 0.0
         ratio[i] = r
-        _record_extremes(i, step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
-                         seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
+        (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
+         seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
+                                    peak_path[i], seg_peak[i], seg_peak_time[i], seg_max_fn[i])
     return np.float64(0.0)
