@@ -2,16 +2,36 @@
 
 Kept apart from :mod:`frictionlab.driver.recorder` so that edits there do not invalidate
 the compile cache (keyed on the files that use numba).
+
+Each pass exists serial (:func:`accumulate`, :func:`accumulate_row`) and shared among
+numba's threads in blocks of points (``*_parallel``, for large N): every point is
+independent, so both give the same figures bit for bit.
 """
 
 from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
-__all__ = ["accumulate", "accumulate_row"]
+__all__ = [
+    "accumulate",
+    "accumulate_parallel",
+    "accumulate_row",
+    "accumulate_row_parallel",
+    "blocks",
+]
+
+#: Blocks of points per thread in the threaded passes (evens out a slow thread).
+BLOCKS_PER_THREAD = 4
+
+
+def blocks() -> int:
+    """Blocks of points for the threaded passes: a few per thread of numba (evens out a
+    slow thread). Asked outside the compiled code, which then stays cacheable."""
+    return BLOCKS_PER_THREAD * numba.get_num_threads()
 
 
 @njit(cache=True, inline="always")
@@ -19,8 +39,8 @@ def _extremes(step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
               seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
     """One point's figures after a step with friction ratio ``r`` at time ``t`` and path
     ``p``: a new overall or segment peak (with its step, time and path) and the segment's
-    largest normal traction ``fn``. Scalars in and out: an array passed to a helper is
-    reference-counted on every call, which cost more than the rest of the loop."""
+    largest normal traction ``fn``. Scalars in and out: arrays passed to a helper inside
+    the loop are reference-counted on every point, which cost more than the loop."""
     if r > peak:
         peak = r
         peak_step = step
@@ -35,20 +55,12 @@ def _extremes(step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
 
 
 @njit(cache=True)
-def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work, path,
-               ratio, peak, peak_step, peak_time, peak_path,
-               seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
-    """Update the running figures of N points by one step, in place.
-
-    ``dt`` (1 or N,) [s]; ``du`` (N, 3) [m]; ``work`` (N,) [J/m^2]; ``traction`` (N, 3)
-    [Pa] after the step. Adds to ``time``, ``slip`` (N, 2), ``approach``,
-    ``plastic_work`` and ``path`` (|du_t|); writes ``ratio`` = |f_t|/f_n (0 where open);
-    where it exceeds ``peak`` (or ``seg_peak``) records it with the step, time and path
-    (time); raises ``seg_max_fn`` to f_n.
-    """
-    n = traction.shape[0]
+def _accumulate_range(lo, hi, step, dt, du, work, traction, time, slip, approach, plastic_work,
+                      path, ratio, peak, peak_step, peak_time, peak_path,
+                      seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
+    """:func:`accumulate` for points ``lo <= i < hi``."""
     shared = dt.shape[0] == 1
-    for i in range(n):
+    for i in range(lo, hi):
         t = time[i] + (dt[0] if shared else dt[i])
         time[i] = t
         d0 = du[i, 0]
@@ -64,26 +76,20 @@ def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work,
         ratio[i] = r
         (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
          seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
-                                    peak_path[i], seg_peak[i], seg_peak_time[i], seg_max_fn[i])
-    return np.float64(0.0)
+                                    peak_path[i], seg_peak[i], seg_peak_time[i],
+                                    seg_max_fn[i])  # fmt: skip
 
 
 @njit(cache=True)
-def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, iterations,
-                   time, slip, approach, plastic_work, path,
-                   ratio, peak, peak_step, peak_time, peak_path,
-                   seg_peak, seg_peak_time, seg_max_fn,
-                   row_time, row_slip, row_approach, row_work, row_traction,
-                   row_F, row_R, row_plastic_slip, row_status, row_iterations):  # fmt: skip
-    """:func:`accumulate` and, in the same pass, the recorded row of every point.
-
-    ``F``, ``R``, ``plastic_slip``, ``status``, ``iterations`` (N,) are the step's new
-    values; the ``row_*`` arrays (one row of the history, shapes as the running figures
-    and ``traction``) receive the figures after the step and the new state.
-    """
-    n = traction.shape[0]
+def _accumulate_row_range(lo, hi, step, dt, du, work, traction, F, R, plastic_slip, status,
+                          iterations, time, slip, approach, plastic_work, path,
+                          ratio, peak, peak_step, peak_time, peak_path,
+                          seg_peak, seg_peak_time, seg_max_fn,
+                          row_time, row_slip, row_approach, row_work, row_traction,
+                          row_F, row_R, row_plastic_slip, row_status, row_iterations):  # fmt: skip
+    """:func:`accumulate_row` for points ``lo <= i < hi``."""
     shared = dt.shape[0] == 1
-    for i in range(n):
+    for i in range(lo, hi):
         t = time[i] + (dt[0] if shared else dt[i])
         time[i] = t
         row_time[i] = t
@@ -118,5 +124,87 @@ def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, ite
         ratio[i] = r
         (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
          seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
-                                    peak_path[i], seg_peak[i], seg_peak_time[i], seg_max_fn[i])
+                                    peak_path[i], seg_peak[i], seg_peak_time[i],
+                                    seg_max_fn[i])  # fmt: skip
+
+
+@njit(cache=True)
+def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work, path,
+               ratio, peak, peak_step, peak_time, peak_path,
+               seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
+    """Update the running figures of N points by one step, in place.
+
+    ``dt`` (1 or N,) [s]; ``du`` (N, 3) [m]; ``work`` (N,) [J/m^2]; ``traction`` (N, 3)
+    [Pa] after the step. Adds to ``time``, ``slip`` (N, 2), ``approach``,
+    ``plastic_work`` and ``path`` (|du_t|); writes ``ratio`` = |f_t|/f_n (0 where open);
+    where it exceeds ``peak`` (or ``seg_peak``) records it with the step, time and path
+    (time); raises ``seg_max_fn`` to f_n.
+    """
+    _accumulate_range(0, traction.shape[0], step, dt, du, work, traction, time, slip, approach,
+                      plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
+                      seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
+    return np.float64(0.0)
+
+
+@njit(cache=True, parallel=True)
+def accumulate_parallel(blocks, step, dt, du, work, traction, time, slip, approach,
+                        plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
+                        seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
+    """:func:`accumulate` with ``blocks`` (see :func:`blocks`) of points shared among
+    numba's threads."""
+    n = traction.shape[0]
+    blocks = max(1, min(n, blocks))
+    for b in prange(blocks):
+        lo = np.int64(b) * n // blocks
+        hi = (np.int64(b) + 1) * n // blocks
+        _accumulate_range(lo, hi, step, dt, du, work, traction, time, slip, approach,
+                          plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
+                          seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
+    return np.float64(0.0)
+
+
+@njit(cache=True)
+def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, iterations,
+                   time, slip, approach, plastic_work, path,
+                   ratio, peak, peak_step, peak_time, peak_path,
+                   seg_peak, seg_peak_time, seg_max_fn,
+                   row_time, row_slip, row_approach, row_work, row_traction,
+                   row_F, row_R, row_plastic_slip, row_status, row_iterations):  # fmt: skip
+    """:func:`accumulate` and, in the same pass, the recorded row of every point.
+
+    ``F``, ``R``, ``plastic_slip``, ``status``, ``iterations`` (N,) are the step's new
+    values; the ``row_*`` arrays (one row of the history, shapes as the running figures
+    and ``traction``) receive the figures after the step and the new state.
+    """
+    _accumulate_row_range(0, traction.shape[0], step, dt, du, work, traction, F, R,
+                          plastic_slip, status, iterations, time, slip, approach, plastic_work,
+                          path, ratio, peak, peak_step, peak_time, peak_path,
+                          seg_peak, seg_peak_time, seg_max_fn,
+                          row_time, row_slip, row_approach, row_work, row_traction,
+                          row_F, row_R, row_plastic_slip, row_status, row_iterations)  # fmt: skip
+    return np.float64(0.0)
+
+
+@njit(cache=True, parallel=True)
+def accumulate_row_parallel(blocks, step, dt, du, work, traction, F, R, plastic_slip, status,
+                            iterations, time, slip, approach, plastic_work, path,
+                            ratio, peak, peak_step, peak_time, peak_path,
+                            seg_peak, seg_peak_time, seg_max_fn,
+                            row_time, row_slip, row_approach, row_work, row_traction,
+                            row_F, row_R, row_plastic_slip, row_status,
+                            row_iterations):  # fmt: skip
+    """:func:`accumulate_row` with ``blocks`` (see :func:`blocks`) of points shared among
+    numba's threads."""
+    n = traction.shape[0]
+    blocks = max(1, min(n, blocks))
+    for b in prange(blocks):
+        lo = np.int64(b) * n // blocks
+        hi = (np.int64(b) + 1) * n // blocks
+        _accumulate_row_range(lo, hi, step, dt, du, work, traction, F, R, plastic_slip, status,
+                              iterations, time, slip, approach, plastic_work, path,
+                              ratio, peak, peak_step, peak_time, peak_path,
+                              seg_peak, seg_peak_time, seg_max_fn,
+                              row_time, row_slip, row_approach, row_work, row_traction,
+                              row_F, row_R, row_plastic_slip, row_status,
+                              row_iterations)  # fmt: skip
     return np.float64(0.0)

@@ -24,12 +24,20 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Any
 
 import numpy as np
 
-from frictionlab.driver._running import accumulate, accumulate_row
+from frictionlab.driver._running import (
+    accumulate,
+    accumulate_parallel,
+    accumulate_row,
+    accumulate_row_parallel,
+    blocks,
+)
 from frictionlab.errors import ParameterError
+from frictionlab.subloading.return_map import PARALLEL_MIN_POINTS
 
 __all__ = ["Recorder", "Recording", "RowSink", "RunStats", "SegmentStats"]
 
@@ -56,6 +64,7 @@ CHUNK_BYTES = 8 * 2**20
 #: Per-row values shared by the points.
 ROW_FIELDS = ("step", "segment", "substeps", "solves")
 _INTERNAL = ("_index", "_end")  # recorded-row counter; segment end (kept when thinning)
+_ALIGN = 64  # bytes: start of each field in the recorder's block of rows (a cache line)
 
 
 def _ratio(traction: np.ndarray) -> np.ndarray:
@@ -221,6 +230,15 @@ class Recorder:
             peak_time=zeros.copy(), peak_path_length=zeros.copy(),
         )  # fmt: skip
         self.state = state
+        # Large N: the running figures on numba's threads, as the law's kernel (the same
+        # figures either way); the rows too when they go to a reused chunk: rows written
+        # into fresh memory (the store of every row) fault its pages in, which was measured
+        # 2-3x slower from two threads than from one.
+        threaded = n >= PARALLEL_MIN_POINTS
+        self._accumulate = partial(accumulate_parallel, blocks()) if threaded else accumulate
+        self._accumulate_row = accumulate_row
+        if threaded and not self.store_all:
+            self._accumulate_row = partial(accumulate_row_parallel, blocks())
         self._last = (np.full(n, -1, dtype=np.int8), np.zeros(n, dtype=np.int64), 0, 0, 0)
         self._last_recorded = True
         self._seg: SegmentStats | None = None
@@ -229,13 +247,21 @@ class Recorder:
         self._write_row(0, 0, True)
 
     def _alloc(self, rows: int) -> dict[str, np.ndarray]:
-        buf = {
-            name: np.empty((rows, self.m, *shape), dtype=dt)
-            for name, (shape, dt) in POINT_FIELDS.items()
+        """Empty rows of every field, carved from one block of memory: one large block is
+        backed by huge pages where the system offers them, so that writing the rows into
+        fresh memory costs few page faults (separate arrays of a few MiB mostly did not)."""
+        shapes = [(name, (rows, self.m, *shape), np.dtype(dt))
+                  for name, (shape, dt) in POINT_FIELDS.items()]  # fmt: skip
+        shapes += [(name, (rows,), np.dtype(np.int64)) for name in (*ROW_FIELDS, *_INTERNAL)]
+        offsets, size = [], 0
+        for _, shape, dt in shapes:
+            offsets.append(size)
+            size += -(-int(np.prod(shape)) * dt.itemsize // _ALIGN) * _ALIGN
+        block = np.empty(size, dtype=np.uint8)
+        return {
+            name: block[start : start + int(np.prod(shape)) * dt.itemsize].view(dt).reshape(shape)
+            for (name, shape, dt), start in zip(shapes, offsets, strict=True)
         }
-        for name in (*ROW_FIELDS, *_INTERNAL):
-            buf[name] = np.empty(rows, dtype=np.int64)
-        return buf
 
     def reserve(self, rows: int) -> None:
         """Make room for ``rows`` recorded rows in all (an estimate: more still fit)."""
@@ -305,7 +331,7 @@ class Recorder:
         recorded = k == 0 or last or (k + 1) % self.every == 0
         if recorded and self.selected is None:  # one pass: running figures and the row
             b, j = self.buf, self.fill
-            accumulate_row(
+            self._accumulate_row(
                 s.steps, dts, du, work, state.traction, state.F, state.R, state.plastic_slip,
                 status, iterations, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
                 ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
@@ -318,7 +344,7 @@ class Recorder:
             self._row_meta(self._seg_index, substeps, k == 0 or last, False, solves)
             self._last_recorded = True
             return
-        accumulate(
+        self._accumulate(
             s.steps, dts, du, work,
             state.traction, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
             ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,

@@ -28,6 +28,7 @@ from frictionlab.subloading import (
     update,
 )
 from frictionlab.subloading.kernels import SEPARATION_RTOL
+from frictionlab.subloading.return_map import _update_into
 
 __all__ = [
     "Attempt",
@@ -62,6 +63,11 @@ class Attempt:
     solves: int  #: calls of the law's update
     ok: bool
     reason: str = ""
+
+    def __post_init__(self) -> None:
+        # read-only: it may be the plan's own increment, shared by its steps (and one
+        # layout for the recorder's compiled pass)
+        self.du.setflags(write=False)
 
 
 @dataclass
@@ -196,10 +202,9 @@ class _LawStep:
     def __call__(self, du: np.ndarray, dt: np.ndarray | float) -> StepResult:
         if self.closing is None:
             out, self.out = self.out, None
-            if out is not None and update is _LAW_UPDATE:
-                return update(
-                    self.params, self.state, du, dt, raise_on_failure=False, tangent=False, out=out
-                )
+            if out is not None and update is _LAW_UPDATE:  # made here from a checked programme
+                dts = np.atleast_1d(np.asarray(dt, dtype=np.float64))
+                return _update_into(self.params, self.state, du, dts, out)
             return update(self.params, self.state, du, dt, raise_on_failure=False)
         c, sel = self.fraction, self.closing
         local = du.copy()
@@ -261,6 +266,14 @@ def solve_control(
       reached (for example beyond what the contact can carry: gross sliding).
     """
     n = state.n_points
+    if control.fn_target is None and control.ft_target is None:  # the plan's own increment
+        law = _LawStep(params, state, None, out)
+        kernel_du, du = control._slip_increment(n)
+        single = law(kernel_du, control.dt)
+        attempt = _result_attempt(single, du, 1, single.iterations)
+        if not attempt.ok:
+            attempt.reason += _resolution_hint(params, state, du, single.status == _FAILED)
+        return attempt
     du = np.empty((n, 3))
     du[:, :2] = control.du_t
     if control.fn_target is not None:
