@@ -22,10 +22,21 @@ __all__ = [
     "accumulate_row",
     "accumulate_row_parallel",
     "blocks",
+    "slip_lengths",
+    "touch_parallel",
 ]
 
 #: Blocks of points per thread in the threaded passes (evens out a slow thread).
 BLOCKS_PER_THREAD = 4
+
+
+@njit(cache=True)
+def slip_lengths(du, out):
+    """``out[i] = |du_t|`` = hypot(du[i, 0], du[i, 1]) [m] of the (N, 3) increments ``du``:
+    apart from the running figures, so that a plan's repeated increment is measured once."""
+    for i in range(du.shape[0]):
+        out[i] = math.hypot(du[i, 0], du[i, 1])
+    return out
 
 
 def blocks() -> int:
@@ -55,8 +66,8 @@ def _extremes(step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
 
 
 @njit(cache=True)
-def _accumulate_range(lo, hi, step, dt, du, work, traction, time, slip, approach, plastic_work,
-                      path, ratio, peak, peak_step, peak_time, peak_path,
+def _accumulate_range(lo, hi, step, dt, du, dpath, work, traction, time, slip, approach,
+                      plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
                       seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
     """:func:`accumulate` for points ``lo <= i < hi``."""
     shared = dt.shape[0] == 1
@@ -69,7 +80,7 @@ def _accumulate_range(lo, hi, step, dt, du, work, traction, time, slip, approach
         slip[i, 1] += d1
         approach[i] += du[i, 2]
         plastic_work[i] += work[i]
-        p = path[i] + math.hypot(d0, d1)
+        p = path[i] + dpath[i]
         path[i] = p
         fn = traction[i, 2]
         r = math.hypot(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
@@ -81,7 +92,7 @@ def _accumulate_range(lo, hi, step, dt, du, work, traction, time, slip, approach
 
 
 @njit(cache=True)
-def _accumulate_row_range(lo, hi, step, dt, du, work, traction, F, R, plastic_slip, status,
+def _accumulate_row_range(lo, hi, step, dt, du, dpath, work, traction, F, R, plastic_slip, status,
                           iterations, time, slip, approach, plastic_work, path,
                           ratio, peak, peak_step, peak_time, peak_path,
                           seg_peak, seg_peak_time, seg_max_fn,
@@ -107,7 +118,7 @@ def _accumulate_row_range(lo, hi, step, dt, du, work, traction, F, R, plastic_sl
         w = plastic_work[i] + work[i]
         plastic_work[i] = w
         row_work[i] = w
-        p = path[i] + math.hypot(d0, d1)
+        p = path[i] + dpath[i]
         path[i] = p
         f0 = traction[i, 0]
         f1 = traction[i, 1]
@@ -129,25 +140,26 @@ def _accumulate_row_range(lo, hi, step, dt, du, work, traction, F, R, plastic_sl
 
 
 @njit(cache=True)
-def accumulate(step, dt, du, work, traction, time, slip, approach, plastic_work, path,
+def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plastic_work, path,
                ratio, peak, peak_step, peak_time, peak_path,
                seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
     """Update the running figures of N points by one step, in place.
 
-    ``dt`` (1 or N,) [s]; ``du`` (N, 3) [m]; ``work`` (N,) [J/m^2]; ``traction`` (N, 3)
-    [Pa] after the step. Adds to ``time``, ``slip`` (N, 2), ``approach``,
-    ``plastic_work`` and ``path`` (|du_t|); writes ``ratio`` = |f_t|/f_n (0 where open);
+    ``dt`` (1 or N,) [s]; ``du`` (N, 3) [m]; ``dpath`` (N,) its |du_t| [m]
+    (:func:`slip_lengths`); ``work`` (N,) [J/m^2]; ``traction`` (N, 3) [Pa] after the step.
+    Adds to ``time``, ``slip`` (N, 2), ``approach``, ``plastic_work`` and ``path``
+    (``dpath``); writes ``ratio`` = |f_t|/f_n (0 where open);
     where it exceeds ``peak`` (or ``seg_peak``) records it with the step, time and path
     (time); raises ``seg_max_fn`` to f_n.
     """
-    _accumulate_range(0, traction.shape[0], step, dt, du, work, traction, time, slip, approach,
-                      plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
+    _accumulate_range(0, traction.shape[0], step, dt, du, dpath, work, traction, time, slip,
+                      approach, plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
                       seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
     return np.float64(0.0)
 
 
 @njit(cache=True, parallel=True)
-def accumulate_parallel(blocks, step, dt, du, work, traction, time, slip, approach,
+def accumulate_parallel(blocks, step, dt, du, dpath, work, traction, time, slip, approach,
                         plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
                         seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
     """:func:`accumulate` with ``blocks`` (see :func:`blocks`) of points shared among
@@ -157,14 +169,14 @@ def accumulate_parallel(blocks, step, dt, du, work, traction, time, slip, approa
     for b in prange(blocks):
         lo = np.int64(b) * n // blocks
         hi = (np.int64(b) + 1) * n // blocks
-        _accumulate_range(lo, hi, step, dt, du, work, traction, time, slip, approach,
+        _accumulate_range(lo, hi, step, dt, du, dpath, work, traction, time, slip, approach,
                           plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
                           seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
     return np.float64(0.0)
 
 
 @njit(cache=True)
-def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, iterations,
+def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, status, iterations,
                    time, slip, approach, plastic_work, path,
                    ratio, peak, peak_step, peak_time, peak_path,
                    seg_peak, seg_peak_time, seg_max_fn,
@@ -176,7 +188,7 @@ def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, ite
     values; the ``row_*`` arrays (one row of the history, shapes as the running figures
     and ``traction``) receive the figures after the step and the new state.
     """
-    _accumulate_row_range(0, traction.shape[0], step, dt, du, work, traction, F, R,
+    _accumulate_row_range(0, traction.shape[0], step, dt, du, dpath, work, traction, F, R,
                           plastic_slip, status, iterations, time, slip, approach, plastic_work,
                           path, ratio, peak, peak_step, peak_time, peak_path,
                           seg_peak, seg_peak_time, seg_max_fn,
@@ -186,7 +198,7 @@ def accumulate_row(step, dt, du, work, traction, F, R, plastic_slip, status, ite
 
 
 @njit(cache=True, parallel=True)
-def accumulate_row_parallel(blocks, step, dt, du, work, traction, F, R, plastic_slip, status,
+def accumulate_row_parallel(blocks, step, dt, du, dpath, work, traction, F, R, plastic_slip, status,
                             iterations, time, slip, approach, plastic_work, path,
                             ratio, peak, peak_step, peak_time, peak_path,
                             seg_peak, seg_peak_time, seg_max_fn,
@@ -200,11 +212,25 @@ def accumulate_row_parallel(blocks, step, dt, du, work, traction, F, R, plastic_
     for b in prange(blocks):
         lo = np.int64(b) * n // blocks
         hi = (np.int64(b) + 1) * n // blocks
-        _accumulate_row_range(lo, hi, step, dt, du, work, traction, F, R, plastic_slip, status,
-                              iterations, time, slip, approach, plastic_work, path,
+        _accumulate_row_range(lo, hi, step, dt, du, dpath, work, traction, F, R, plastic_slip,
+                              status, iterations, time, slip, approach, plastic_work, path,
                               ratio, peak, peak_step, peak_time, peak_path,
                               seg_peak, seg_peak_time, seg_max_fn,
                               row_time, row_slip, row_approach, row_work, row_traction,
                               row_F, row_R, row_plastic_slip, row_status,
                               row_iterations)  # fmt: skip
+    return np.float64(0.0)
+
+
+@njit(cache=True, parallel=True)
+def touch_parallel(block, blocks):
+    """Write zeros over the uint8 ``block`` in ``blocks`` pieces on numba's threads: its pages
+    are faulted in (and zeroed by the system) by every thread at once, apart, before rows
+    are written into it."""
+    n = block.shape[0]
+    blocks = max(1, min(n, blocks))
+    for b in prange(blocks):
+        lo = np.int64(b) * n // blocks
+        hi = (np.int64(b) + 1) * n // blocks
+        block[lo:hi] = 0
     return np.float64(0.0)

@@ -22,11 +22,13 @@ numbers; ``time``, ``approach``, ``F``, ``R``, ``plastic_slip``, ``plastic_work`
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from functools import partial
 from typing import Any
 
+import numba
 import numpy as np
 
 from frictionlab.driver._running import (
@@ -35,6 +37,8 @@ from frictionlab.driver._running import (
     accumulate_row,
     accumulate_row_parallel,
     blocks,
+    slip_lengths,
+    touch_parallel,
 )
 from frictionlab.errors import ParameterError
 from frictionlab.subloading.return_map import PARALLEL_MIN_POINTS
@@ -65,6 +69,7 @@ CHUNK_BYTES = 8 * 2**20
 ROW_FIELDS = ("step", "segment", "substeps", "solves")
 _INTERNAL = ("_index", "_end")  # recorded-row counter; segment end (kept when thinning)
 _ALIGN = 64  # bytes: start of each field in the recorder's block of rows (a cache line)
+TOUCH_BYTES = 4 * 2**20  # blocks of rows from this size are faulted in on numba's threads
 
 
 def _ratio(traction: np.ndarray) -> np.ndarray:
@@ -211,6 +216,10 @@ class Recorder:
         #: Every recorded row stays in memory: rows are written once into arrays that
         #: grow (by doubling, or to ``reserve``); chunks go to the sink as views of them.
         self.store_all = self.keep is None and self.keep_points is None
+        #: Large N: the compiled passes run on numba's threads; new blocks of rows have
+        #: their pages faulted in by every thread first (rows written by two threads into
+        #: untouched memory were measured 2-3x slower than by one).
+        self.threaded = n >= PARALLEL_MIN_POINTS
         self.sent = 0  # rows of the store already handed to the sink
         self.buf = self._alloc(self.chunk)
         self.kind_names: list[str] = ["initial"]
@@ -230,17 +239,16 @@ class Recorder:
             peak_time=zeros.copy(), peak_path_length=zeros.copy(),
         )  # fmt: skip
         self.state = state
-        # Large N: the running figures on numba's threads, as the law's kernel (the same
-        # figures either way); the rows too when they go to a reused chunk: rows written
-        # into fresh memory (the store of every row) fault its pages in, which was measured
-        # 2-3x slower from two threads than from one.
-        threaded = n >= PARALLEL_MIN_POINTS
-        self._accumulate = partial(accumulate_parallel, blocks()) if threaded else accumulate
+        # Large N: the running figures and rows on numba's threads, as the law's kernel (the
+        # same figures either way).
+        self._accumulate = accumulate
         self._accumulate_row = accumulate_row
-        if threaded and not self.store_all:
+        if self.threaded:
+            self._accumulate = partial(accumulate_parallel, blocks())
             self._accumulate_row = partial(accumulate_row_parallel, blocks())
         self._last = (np.full(n, -1, dtype=np.int8), np.zeros(n, dtype=np.int64), 0, 0, 0)
         self._last_recorded = True
+        self._lengths: tuple[np.ndarray | None, np.ndarray] = (None, np.empty(0))
         self._seg: SegmentStats | None = None
         self._seg_index = 0
         self._seg_k = 0
@@ -256,10 +264,12 @@ class Recorder:
         offsets, size = [], 0
         for _, shape, dt in shapes:
             offsets.append(size)
-            size += -(-int(np.prod(shape)) * dt.itemsize // _ALIGN) * _ALIGN
+            size += -(-math.prod(shape) * dt.itemsize // _ALIGN) * _ALIGN
         block = np.empty(size, dtype=np.uint8)
+        if self.threaded and size >= TOUCH_BYTES:  # fault its pages in on every thread
+            touch_parallel(block, numba.get_num_threads())  # one piece each (measured best)
         return {
-            name: block[start : start + int(np.prod(shape)) * dt.itemsize].view(dt).reshape(shape)
+            name: block[start : start + math.prod(shape) * dt.itemsize].view(dt).reshape(shape)
             for (name, shape, dt), start in zip(shapes, offsets, strict=True)
         }
 
@@ -329,10 +339,11 @@ class Recorder:
         self._seg_k = k + 1
         self.state = state
         recorded = k == 0 or last or (k + 1) % self.every == 0
+        dpath = self._slip_lengths(du)
         if recorded and self.selected is None:  # one pass: running figures and the row
             b, j = self.buf, self.fill
             self._accumulate_row(
-                s.steps, dts, du, work, state.traction, state.F, state.R, state.plastic_slip,
+                s.steps, dts, du, dpath, work, state.traction, state.F, state.R, state.plastic_slip,
                 status, iterations, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
                 ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
                 seg.peak_friction_ratio, seg.peak_time, seg.max_normal_traction,
@@ -345,7 +356,7 @@ class Recorder:
             self._last_recorded = True
             return
         self._accumulate(
-            s.steps, dts, du, work,
+            s.steps, dts, du, dpath, work,
             state.traction, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
             ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
             seg.peak_friction_ratio, seg.peak_time, seg.max_normal_traction,
@@ -357,6 +368,15 @@ class Recorder:
         else:
             self._last = (status, iterations, 0, substeps, solves)
             self._last_recorded = False
+
+    def _slip_lengths(self, du: np.ndarray) -> np.ndarray:
+        """|du_t| per point; kept for the next step when ``du`` is read-only (the driver's
+        increments: a plan repeats its own, so it is measured once per segment)."""
+        held, lengths = self._lengths
+        if du is not held:
+            lengths = slip_lengths(du, np.empty(du.shape[0]))
+            self._lengths = (du if not du.flags.writeable else None, lengths)
+        return lengths
 
     def _write_row(self, segment: int, substeps: int, end: bool, status: Any = None,
                    iterations: Any = None, solves: int = 0) -> None:  # fmt: skip

@@ -20,7 +20,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from itertools import compress
 from typing import Any
 
 import numpy as np
@@ -42,8 +41,8 @@ from frictionlab.subloading import (
     SubloadingParams,
     check_snap_back,
     initial_state,
-    snap_back_violations,
 )
+from frictionlab.subloading.state import _snap_back_failures
 
 __all__ = [
     "STATUS_INITIAL",
@@ -465,8 +464,8 @@ def simulate(
         seg = rec.end_segment()
         if seg is not None:
             reached = seg.max_normal_traction
-            reasons = snap_back_violations(params, reached)
-            bad = list(compress(range(len(reasons)), reasons))  # points with a reason
+            reasons = _snap_back_failures(params, reached)
+            bad = list(reasons)  # points with a reason, in order
             if bad:
                 warnings.append(
                     f"segment #{index} ({plan.kind}) reached f_n = {reached[bad[0]]:.6g} Pa "
