@@ -3,31 +3,26 @@
 Kept apart from :mod:`frictionlab.driver.recorder` so that edits there do not invalidate
 the compile cache (keyed on the files that use numba).
 
-Each pass exists serial (:func:`accumulate`, :func:`accumulate_row`) and shared among
-numba's threads in blocks of points (``*_parallel``, for large N): every point is
-independent, so both give the same figures bit for bit.
+The passes stay serial: on numba's threads they were faster on an idle machine but, on
+a machine shared with other work, every extra threaded region waited for a descheduled
+thread (measured 2-3x slower steps at N = 1e4).
 """
 
 from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
-__all__ = [
-    "accumulate",
-    "accumulate_parallel",
-    "accumulate_row",
-    "accumulate_row_parallel",
-    "blocks",
-    "slip_lengths",
-    "touch_parallel",
-]
+__all__ = ["accumulate", "accumulate_row", "slip_lengths"]
 
-#: Blocks of points per thread in the threaded passes (evens out a slow thread).
-BLOCKS_PER_THREAD = 4
+
+@njit(cache=True, inline="always")
+def _length(x, y):
+    """hypot(x, y), with the exact shortcut |x| of C's hypot(x, +-0) (Annex F) for the
+    planar case (libm's hypot was most of the passes' time)."""
+    return abs(x) if y == 0.0 else math.hypot(x, y)
 
 
 @njit(cache=True)
@@ -37,12 +32,6 @@ def slip_lengths(du, out):
     for i in range(du.shape[0]):
         out[i] = math.hypot(du[i, 0], du[i, 1])
     return out
-
-
-def blocks() -> int:
-    """Blocks of points for the threaded passes: a few per thread of numba (evens out a
-    slow thread). Asked outside the compiled code, which then stays cacheable."""
-    return BLOCKS_PER_THREAD * numba.get_num_threads()
 
 
 @njit(cache=True, inline="always")
@@ -66,48 +55,60 @@ def _extremes(step, t, p, r, fn, peak, peak_step, peak_time, peak_path,
 
 
 @njit(cache=True)
-def _accumulate_range(lo, hi, step, dt, du, dpath, work, traction, time, slip, approach,
-                      plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
-                      seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
-    """:func:`accumulate` for points ``lo <= i < hi``."""
+def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plastic_work, path,
+               ratio, peak, peak_step, peak_time, peak_path,
+               seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
+    """Update the running figures of N points by one step, in place.
+
+    ``dt`` (1 or N,) [s]; ``du`` (N, 3) [m]; ``dpath`` (N,) its |du_t| [m]
+    (:func:`slip_lengths`); ``work`` (N,) [J/m^2]; ``traction`` (N, 3) [Pa] after the step.
+    Adds to ``time``, ``slip`` (N, 2), ``approach``, ``plastic_work`` and ``path``
+    (``dpath``); writes ``ratio`` = |f_t|/f_n (0 where open); where it exceeds ``peak``
+    (or ``seg_peak``) records it with the step, time and path (time); raises
+    ``seg_max_fn`` to f_n.
+    """
+    n = traction.shape[0]
     shared = dt.shape[0] == 1
-    for i in range(lo, hi):
+    for i in range(n):
         t = time[i] + (dt[0] if shared else dt[i])
         time[i] = t
-        d0 = du[i, 0]
-        d1 = du[i, 1]
-        slip[i, 0] += d0
-        slip[i, 1] += d1
+        slip[i, 0] += du[i, 0]
+        slip[i, 1] += du[i, 1]
         approach[i] += du[i, 2]
         plastic_work[i] += work[i]
         p = path[i] + dpath[i]
         path[i] = p
         fn = traction[i, 2]
-        r = math.hypot(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
+        r = _length(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
         ratio[i] = r
         (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
          seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
                                     peak_path[i], seg_peak[i], seg_peak_time[i],
                                     seg_max_fn[i])  # fmt: skip
+    return np.float64(0.0)
 
 
 @njit(cache=True)
-def _accumulate_row_range(lo, hi, step, dt, du, dpath, work, traction, F, R, plastic_slip, status,
-                          iterations, time, slip, approach, plastic_work, path,
-                          ratio, peak, peak_step, peak_time, peak_path,
-                          seg_peak, seg_peak_time, seg_max_fn,
-                          row_time, row_slip, row_approach, row_work, row_traction,
-                          row_F, row_R, row_plastic_slip, row_status, row_iterations):  # fmt: skip
-    """:func:`accumulate_row` for points ``lo <= i < hi``."""
+def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, status, iterations,
+                   time, slip, approach, plastic_work, path,
+                   ratio, peak, peak_step, peak_time, peak_path,
+                   seg_peak, seg_peak_time, seg_max_fn,
+                   row_time, row_slip, row_approach, row_work, row_traction,
+                   row_F, row_R, row_plastic_slip, row_status, row_iterations):  # fmt: skip
+    """:func:`accumulate` and, in the same pass, the recorded row of every point.
+
+    ``F``, ``R``, ``plastic_slip``, ``status``, ``iterations`` (N,) are the step's new
+    values; the ``row_*`` arrays (one row of the history, shapes as the running figures
+    and ``traction``) receive the figures after the step and the new state.
+    """
+    n = traction.shape[0]
     shared = dt.shape[0] == 1
-    for i in range(lo, hi):
+    for i in range(n):
         t = time[i] + (dt[0] if shared else dt[i])
         time[i] = t
         row_time[i] = t
-        d0 = du[i, 0]
-        d1 = du[i, 1]
-        s0 = slip[i, 0] + d0
-        s1 = slip[i, 1] + d1
+        s0 = slip[i, 0] + du[i, 0]
+        s1 = slip[i, 1] + du[i, 1]
         slip[i, 0] = s0
         slip[i, 1] = s1
         row_slip[i, 0] = s0
@@ -131,106 +132,10 @@ def _accumulate_row_range(lo, hi, step, dt, du, dpath, work, traction, F, R, pla
         row_plastic_slip[i] = plastic_slip[i]
         row_status[i] = status[i]
         row_iterations[i] = iterations[i]
-        r = math.hypot(f0, f1) / fn if fn > 0.0 else 0.0
+        r = _length(f0, f1) / fn if fn > 0.0 else 0.0
         ratio[i] = r
         (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
          seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
                                     peak_path[i], seg_peak[i], seg_peak_time[i],
                                     seg_max_fn[i])  # fmt: skip
-
-
-@njit(cache=True)
-def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plastic_work, path,
-               ratio, peak, peak_step, peak_time, peak_path,
-               seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
-    """Update the running figures of N points by one step, in place.
-
-    ``dt`` (1 or N,) [s]; ``du`` (N, 3) [m]; ``dpath`` (N,) its |du_t| [m]
-    (:func:`slip_lengths`); ``work`` (N,) [J/m^2]; ``traction`` (N, 3) [Pa] after the step.
-    Adds to ``time``, ``slip`` (N, 2), ``approach``, ``plastic_work`` and ``path``
-    (``dpath``); writes ``ratio`` = |f_t|/f_n (0 where open);
-    where it exceeds ``peak`` (or ``seg_peak``) records it with the step, time and path
-    (time); raises ``seg_max_fn`` to f_n.
-    """
-    _accumulate_range(0, traction.shape[0], step, dt, du, dpath, work, traction, time, slip,
-                      approach, plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
-                      seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
-    return np.float64(0.0)
-
-
-@njit(cache=True, parallel=True)
-def accumulate_parallel(blocks, step, dt, du, dpath, work, traction, time, slip, approach,
-                        plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
-                        seg_peak, seg_peak_time, seg_max_fn):  # fmt: skip
-    """:func:`accumulate` with ``blocks`` (see :func:`blocks`) of points shared among
-    numba's threads."""
-    n = traction.shape[0]
-    blocks = max(1, min(n, blocks))
-    for b in prange(blocks):
-        lo = np.int64(b) * n // blocks
-        hi = (np.int64(b) + 1) * n // blocks
-        _accumulate_range(lo, hi, step, dt, du, dpath, work, traction, time, slip, approach,
-                          plastic_work, path, ratio, peak, peak_step, peak_time, peak_path,
-                          seg_peak, seg_peak_time, seg_max_fn)  # fmt: skip
-    return np.float64(0.0)
-
-
-@njit(cache=True)
-def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, status, iterations,
-                   time, slip, approach, plastic_work, path,
-                   ratio, peak, peak_step, peak_time, peak_path,
-                   seg_peak, seg_peak_time, seg_max_fn,
-                   row_time, row_slip, row_approach, row_work, row_traction,
-                   row_F, row_R, row_plastic_slip, row_status, row_iterations):  # fmt: skip
-    """:func:`accumulate` and, in the same pass, the recorded row of every point.
-
-    ``F``, ``R``, ``plastic_slip``, ``status``, ``iterations`` (N,) are the step's new
-    values; the ``row_*`` arrays (one row of the history, shapes as the running figures
-    and ``traction``) receive the figures after the step and the new state.
-    """
-    _accumulate_row_range(0, traction.shape[0], step, dt, du, dpath, work, traction, F, R,
-                          plastic_slip, status, iterations, time, slip, approach, plastic_work,
-                          path, ratio, peak, peak_step, peak_time, peak_path,
-                          seg_peak, seg_peak_time, seg_max_fn,
-                          row_time, row_slip, row_approach, row_work, row_traction,
-                          row_F, row_R, row_plastic_slip, row_status, row_iterations)  # fmt: skip
-    return np.float64(0.0)
-
-
-@njit(cache=True, parallel=True)
-def accumulate_row_parallel(blocks, step, dt, du, dpath, work, traction, F, R, plastic_slip, status,
-                            iterations, time, slip, approach, plastic_work, path,
-                            ratio, peak, peak_step, peak_time, peak_path,
-                            seg_peak, seg_peak_time, seg_max_fn,
-                            row_time, row_slip, row_approach, row_work, row_traction,
-                            row_F, row_R, row_plastic_slip, row_status,
-                            row_iterations):  # fmt: skip
-    """:func:`accumulate_row` with ``blocks`` (see :func:`blocks`) of points shared among
-    numba's threads."""
-    n = traction.shape[0]
-    blocks = max(1, min(n, blocks))
-    for b in prange(blocks):
-        lo = np.int64(b) * n // blocks
-        hi = (np.int64(b) + 1) * n // blocks
-        _accumulate_row_range(lo, hi, step, dt, du, dpath, work, traction, F, R, plastic_slip,
-                              status, iterations, time, slip, approach, plastic_work, path,
-                              ratio, peak, peak_step, peak_time, peak_path,
-                              seg_peak, seg_peak_time, seg_max_fn,
-                              row_time, row_slip, row_approach, row_work, row_traction,
-                              row_F, row_R, row_plastic_slip, row_status,
-                              row_iterations)  # fmt: skip
-    return np.float64(0.0)
-
-
-@njit(cache=True, parallel=True)
-def touch_parallel(block, blocks):
-    """Write zeros over the uint8 ``block`` in ``blocks`` pieces on numba's threads: its pages
-    are faulted in (and zeroed by the system) by every thread at once, apart, before rows
-    are written into it."""
-    n = block.shape[0]
-    blocks = max(1, min(n, blocks))
-    for b in prange(blocks):
-        lo = np.int64(b) * n // blocks
-        hi = (np.int64(b) + 1) * n // blocks
-        block[lo:hi] = 0
     return np.float64(0.0)

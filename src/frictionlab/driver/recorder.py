@@ -25,23 +25,12 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from functools import partial
 from typing import Any
 
-import numba
 import numpy as np
 
-from frictionlab.driver._running import (
-    accumulate,
-    accumulate_parallel,
-    accumulate_row,
-    accumulate_row_parallel,
-    blocks,
-    slip_lengths,
-    touch_parallel,
-)
+from frictionlab.driver._running import accumulate, accumulate_row, slip_lengths
 from frictionlab.errors import ParameterError
-from frictionlab.subloading.return_map import PARALLEL_MIN_POINTS
 
 __all__ = ["Recorder", "Recording", "RowSink", "RunStats", "SegmentStats"]
 
@@ -69,7 +58,6 @@ CHUNK_BYTES = 8 * 2**20
 ROW_FIELDS = ("step", "segment", "substeps", "solves")
 _INTERNAL = ("_index", "_end")  # recorded-row counter; segment end (kept when thinning)
 _ALIGN = 64  # bytes: start of each field in the recorder's block of rows (a cache line)
-TOUCH_BYTES = 4 * 2**20  # blocks of rows from this size are faulted in on numba's threads
 
 
 def _ratio(traction: np.ndarray) -> np.ndarray:
@@ -216,10 +204,6 @@ class Recorder:
         #: Every recorded row stays in memory: rows are written once into arrays that
         #: grow (by doubling, or to ``reserve``); chunks go to the sink as views of them.
         self.store_all = self.keep is None and self.keep_points is None
-        #: Large N: the compiled passes run on numba's threads; new blocks of rows have
-        #: their pages faulted in by every thread first (rows written by two threads into
-        #: untouched memory were measured 2-3x slower than by one).
-        self.threaded = n >= PARALLEL_MIN_POINTS
         self.sent = 0  # rows of the store already handed to the sink
         self.buf = self._alloc(self.chunk)
         self.kind_names: list[str] = ["initial"]
@@ -239,13 +223,6 @@ class Recorder:
             peak_time=zeros.copy(), peak_path_length=zeros.copy(),
         )  # fmt: skip
         self.state = state
-        # Large N: the running figures and rows on numba's threads, as the law's kernel (the
-        # same figures either way).
-        self._accumulate = accumulate
-        self._accumulate_row = accumulate_row
-        if self.threaded:
-            self._accumulate = partial(accumulate_parallel, blocks())
-            self._accumulate_row = partial(accumulate_row_parallel, blocks())
         self._last = (np.full(n, -1, dtype=np.int8), np.zeros(n, dtype=np.int64), 0, 0, 0)
         self._last_recorded = True
         self._lengths: tuple[np.ndarray | None, np.ndarray] = (None, np.empty(0))
@@ -266,8 +243,6 @@ class Recorder:
             offsets.append(size)
             size += -(-math.prod(shape) * dt.itemsize // _ALIGN) * _ALIGN
         block = np.empty(size, dtype=np.uint8)
-        if self.threaded and size >= TOUCH_BYTES:  # fault its pages in on every thread
-            touch_parallel(block, numba.get_num_threads())  # one piece each (measured best)
         return {
             name: block[start : start + math.prod(shape) * dt.itemsize].view(dt).reshape(shape)
             for (name, shape, dt), start in zip(shapes, offsets, strict=True)
@@ -342,7 +317,7 @@ class Recorder:
         dpath = self._slip_lengths(du)
         if recorded and self.selected is None:  # one pass: running figures and the row
             b, j = self.buf, self.fill
-            self._accumulate_row(
+            accumulate_row(
                 s.steps, dts, du, dpath, work, state.traction, state.F, state.R, state.plastic_slip,
                 status, iterations, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
                 ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
@@ -355,7 +330,7 @@ class Recorder:
             self._row_meta(self._seg_index, substeps, k == 0 or last, False, solves)
             self._last_recorded = True
             return
-        self._accumulate(
+        accumulate(
             s.steps, dts, du, dpath, work,
             state.traction, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
             ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
