@@ -42,6 +42,7 @@ __all__ = [
 ]
 
 _FAILED = int(Status.FAILED)
+assert max(int(s) for s in Status) == _FAILED  # a status at or above it means a failure
 #: The law's own update, the one known to write into preallocated outputs (``out``).
 _LAW_UPDATE = update
 
@@ -87,7 +88,7 @@ def _elastic(params: SubloadingParams, name: str, n: int) -> np.ndarray:
 
 
 def _result_attempt(res: StepResult, du: np.ndarray, solves: int, iters: np.ndarray) -> Attempt:
-    ok = not np.any(res.status == _FAILED)
+    ok = res.status.shape[0] == 0 or int(res.status.max()) < _FAILED  # FAILED: the largest code
     return Attempt(
         state=res.state,
         du=du,
@@ -404,12 +405,15 @@ def substep(
     accepted when ``error <= accuracy``, otherwise each half is refined in turn, at most
     ``max_halvings`` times.
     """
-    work = StepWork(iterations=np.zeros(n_points, dtype=np.int64))
+    work = StepWork()  # iterations: a copy of the first attempt's, then summed
 
     def attempt(state: Any, ctl: Any) -> Any:
         att = solve(state, ctl)
         work.solves += att.solves
-        work.iterations += att.iterations
+        if work.iterations.shape[0] != n_points:
+            work.iterations = np.array(att.iterations, dtype=np.int64)
+        else:
+            work.iterations += att.iterations
         return att
 
     def run(state: Any, ctl: Any, depth: int, full: Any) -> Any:
@@ -446,7 +450,10 @@ def substep(
         reuse = h2 if first.state is h1.state else None
         return combine(first, run(first.state, c2, depth + 1, reuse))
 
-    return run(start, control, 0, None), work
+    outcome = run(start, control, 0, None)
+    if work.iterations.shape[0] != n_points:  # no attempt (not reached: one always runs)
+        work.iterations = np.zeros(n_points, dtype=np.int64)
+    return outcome, work
 
 
 def advance(
