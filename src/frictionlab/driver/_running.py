@@ -81,10 +81,11 @@ def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plasti
         fn = traction[i, 2]
         r = _length(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
         ratio[i] = r
-        (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
-         seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
-                                    peak_path[i], seg_peak[i], seg_peak_time[i],
-                                    seg_max_fn[i])  # fmt: skip
+        if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change
+            (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
+             seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
+                                        peak_path[i], seg_peak[i], seg_peak_time[i],
+                                        seg_max_fn[i])  # fmt: skip
     return np.float64(0.0)
 
 
@@ -134,8 +135,9 @@ def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, stat
         row_iterations[i] = iterations[i]
         r = _length(f0, f1) / fn if fn > 0.0 else 0.0
         ratio[i] = r
-        (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
-         seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
-                                    peak_path[i], seg_peak[i], seg_peak_time[i],
-                                    seg_max_fn[i])  # fmt: skip
+        if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change
+            (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
+             seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
+                                        peak_path[i], seg_peak[i], seg_peak_time[i],
+                                        seg_max_fn[i])  # fmt: skip
     return np.float64(0.0)
