@@ -176,7 +176,11 @@ class RunStats:
 class Recorder:
     """Records rows (as a :class:`Recording` asks) and keeps :class:`RunStats` for N points."""
 
-    def __init__(self, state: Any, recording: Recording | None = None) -> None:
+    def __init__(
+        self, state: Any, recording: Recording | None = None, planned: Sequence[int] = ()
+    ) -> None:
+        """``planned``: the estimated steps of each segment, to size the store of every row
+        at once (:meth:`reserve`) instead of a first chunk that is then copied."""
         rec = recording or Recording()
         n = state.n_points
         self.recording = rec
@@ -205,7 +209,8 @@ class Recorder:
         #: grow (by doubling, or to ``reserve``); chunks go to the sink as views of them.
         self.store_all = self.keep is None and self.keep_points is None
         self.sent = 0  # rows of the store already handed to the sink
-        self.buf = self._alloc(self.chunk)
+        first = self.planned_rows(planned) if self.store_all and planned else self.chunk
+        self.buf = self._alloc(max(first, 1))
         self.kind_names: list[str] = ["initial"]
         self.fill = 0
         self.kept: list[dict[str, np.ndarray]] = []

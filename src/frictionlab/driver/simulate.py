@@ -425,8 +425,7 @@ def simulate(
     _check_prescribed_normal_tractions(params, program)
     total = sum(p.estimated_steps for p in plans)
     warnings: list[str] = []
-    rec = Recorder(state, recording)
-    rec.reserve(rec.planned_rows([p.estimated_steps for p in plans]))
+    rec = Recorder(state, recording, [p.estimated_steps for p in plans])
     records: list[tuple[int, str, dict[str, Any], bool, SegmentStats]] = []
     work = dict.fromkeys(
         ("steps", "substeps", "solves", "iterations", "refined_for_failure",
