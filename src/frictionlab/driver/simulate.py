@@ -57,6 +57,7 @@ __all__ = [
     "status_labels",
 ]
 
+_STATE_ARRAYS = ("traction", "F", "R", "plastic_slip", "gap")  # a state's arrays but its frame
 #: Status code of row 0 (the initial state) in :attr:`History.status`.
 STATUS_INITIAL = -1
 _LABELS = {STATUS_INITIAL: "initial", **{int(s): s.name.lower() for s in Status}}
@@ -480,7 +481,9 @@ def simulate(
             f"even with 2**{max_halvings} substeps"
         )
     if pool.holds(state):  # the final state outlives the reused buffers: a copy of its own
-        state = state.replace()
+        state = ContactState._trusted(  # the kernel's outputs (finite); read-only copies
+            **{name: np.array(getattr(state, name)) for name in _STATE_ARRAYS}, frame=state.frame
+        )
     rows = rec.finish()
     segment_records = _segment_records(rows["step"], records)
     return _history_from_rows(
