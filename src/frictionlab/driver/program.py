@@ -183,6 +183,22 @@ class Control:
         )
         return first, second
 
+    def _slip_increment(self, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """(N, 3) slip increment ``(du_t, du_n)`` [m] of a step that prescribes no traction,
+        built once per control (a plan repeats its control): the array for the law's kernel
+        (never written: the kernel's compiled form for writeable inputs serves it) and a
+        read-only view of it for everything else."""
+        cached = self.__dict__.get("_du")
+        if cached is None or cached[0].shape[0] != n:
+            du = np.empty((n, 3))
+            du[:, :2] = self.du_t
+            du[:, 2] = self.du_n
+            view = du.view()
+            view.setflags(write=False)
+            cached = (du, view)
+            object.__setattr__(self, "_du", cached)
+        return cached
+
 
 # --------------------------------------------------------------------------- plans
 @dataclass

@@ -22,13 +22,14 @@ numbers; ``time``, ``approach``, ``F``, ``R``, ``plastic_slip``, ``plastic_work`
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
-from frictionlab.driver._running import accumulate, accumulate_row
+from frictionlab.driver._running import accumulate, accumulate_row, slip_lengths
 from frictionlab.errors import ParameterError
 
 __all__ = ["Recorder", "Recording", "RowSink", "RunStats", "SegmentStats"]
@@ -56,6 +57,7 @@ CHUNK_BYTES = 8 * 2**20
 #: Per-row values shared by the points.
 ROW_FIELDS = ("step", "segment", "substeps", "solves")
 _INTERNAL = ("_index", "_end")  # recorded-row counter; segment end (kept when thinning)
+_ALIGN = 64  # bytes: start of each field in the recorder's block of rows (a cache line)
 
 
 def _ratio(traction: np.ndarray) -> np.ndarray:
@@ -174,7 +176,11 @@ class RunStats:
 class Recorder:
     """Records rows (as a :class:`Recording` asks) and keeps :class:`RunStats` for N points."""
 
-    def __init__(self, state: Any, recording: Recording | None = None) -> None:
+    def __init__(
+        self, state: Any, recording: Recording | None = None, planned: Sequence[int] = ()
+    ) -> None:
+        """``planned``: the estimated steps of each segment, to size the store of every row
+        at once (:meth:`reserve`) instead of a first chunk that is then copied."""
         rec = recording or Recording()
         n = state.n_points
         self.recording = rec
@@ -203,7 +209,8 @@ class Recorder:
         #: grow (by doubling, or to ``reserve``); chunks go to the sink as views of them.
         self.store_all = self.keep is None and self.keep_points is None
         self.sent = 0  # rows of the store already handed to the sink
-        self.buf = self._alloc(self.chunk)
+        first = self.planned_rows(planned) if self.store_all and planned else self.chunk
+        self.buf = self._alloc(max(first, 1))
         self.kind_names: list[str] = ["initial"]
         self.fill = 0
         self.kept: list[dict[str, np.ndarray]] = []
@@ -223,19 +230,28 @@ class Recorder:
         self.state = state
         self._last = (np.full(n, -1, dtype=np.int8), np.zeros(n, dtype=np.int64), 0, 0, 0)
         self._last_recorded = True
+        self._lengths: tuple[np.ndarray | None, np.ndarray] = (None, np.empty(0))
         self._seg: SegmentStats | None = None
         self._seg_index = 0
         self._seg_k = 0
         self._write_row(0, 0, True)
 
     def _alloc(self, rows: int) -> dict[str, np.ndarray]:
-        buf = {
-            name: np.empty((rows, self.m, *shape), dtype=dt)
-            for name, (shape, dt) in POINT_FIELDS.items()
+        """Empty rows of every field, carved from one block of memory: one large block is
+        backed by huge pages where the system offers them, so that writing the rows into
+        fresh memory costs few page faults (separate arrays of a few MiB mostly did not)."""
+        shapes = [(name, (rows, self.m, *shape), np.dtype(dt))
+                  for name, (shape, dt) in POINT_FIELDS.items()]  # fmt: skip
+        shapes += [(name, (rows,), np.dtype(np.int64)) for name in (*ROW_FIELDS, *_INTERNAL)]
+        offsets, size = [], 0
+        for _, shape, dt in shapes:
+            offsets.append(size)
+            size += -(-math.prod(shape) * dt.itemsize // _ALIGN) * _ALIGN
+        block = np.empty(size, dtype=np.uint8)
+        return {
+            name: block[start : start + math.prod(shape) * dt.itemsize].view(dt).reshape(shape)
+            for (name, shape, dt), start in zip(shapes, offsets, strict=True)
         }
-        for name in (*ROW_FIELDS, *_INTERNAL):
-            buf[name] = np.empty(rows, dtype=np.int64)
-        return buf
 
     def reserve(self, rows: int) -> None:
         """Make room for ``rows`` recorded rows in all (an estimate: more still fit)."""
@@ -303,10 +319,11 @@ class Recorder:
         self._seg_k = k + 1
         self.state = state
         recorded = k == 0 or last or (k + 1) % self.every == 0
+        dpath = self._slip_lengths(du)
         if recorded and self.selected is None:  # one pass: running figures and the row
             b, j = self.buf, self.fill
             accumulate_row(
-                s.steps, dts, du, work, state.traction, state.F, state.R, state.plastic_slip,
+                s.steps, dts, du, dpath, work, state.traction, state.F, state.R, state.plastic_slip,
                 status, iterations, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
                 ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
                 seg.peak_friction_ratio, seg.peak_time, seg.max_normal_traction,
@@ -319,7 +336,7 @@ class Recorder:
             self._last_recorded = True
             return
         accumulate(
-            s.steps, dts, du, work,
+            s.steps, dts, du, dpath, work,
             state.traction, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
             ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
             seg.peak_friction_ratio, seg.peak_time, seg.max_normal_traction,
@@ -331,6 +348,15 @@ class Recorder:
         else:
             self._last = (status, iterations, 0, substeps, solves)
             self._last_recorded = False
+
+    def _slip_lengths(self, du: np.ndarray) -> np.ndarray:
+        """|du_t| per point; kept for the next step when ``du`` is read-only (the driver's
+        increments: a plan repeats its own, so it is measured once per segment)."""
+        held, lengths = self._lengths
+        if du is not held:
+            lengths = slip_lengths(du, np.empty(du.shape[0]))
+            self._lengths = (du if not du.flags.writeable else None, lengths)
+        return lengths
 
     def _write_row(self, segment: int, substeps: int, end: bool, status: Any = None,
                    iterations: Any = None, solves: int = 0) -> None:  # fmt: skip

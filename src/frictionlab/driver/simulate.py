@@ -20,7 +20,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from itertools import compress
 from typing import Any
 
 import numpy as np
@@ -42,8 +41,8 @@ from frictionlab.subloading import (
     SubloadingParams,
     check_snap_back,
     initial_state,
-    snap_back_violations,
 )
+from frictionlab.subloading.state import _snap_back_failures
 
 __all__ = [
     "STATUS_INITIAL",
@@ -58,6 +57,7 @@ __all__ = [
     "status_labels",
 ]
 
+_STATE_ARRAYS = ("traction", "F", "R", "plastic_slip", "gap")  # a state's arrays but its frame
 #: Status code of row 0 (the initial state) in :attr:`History.status`.
 STATUS_INITIAL = -1
 _LABELS = {STATUS_INITIAL: "initial", **{int(s): s.name.lower() for s in Status}}
@@ -426,8 +426,7 @@ def simulate(
     _check_prescribed_normal_tractions(params, program)
     total = sum(p.estimated_steps for p in plans)
     warnings: list[str] = []
-    rec = Recorder(state, recording)
-    rec.reserve(rec.planned_rows([p.estimated_steps for p in plans]))
+    rec = Recorder(state, recording, [p.estimated_steps for p in plans])
     records: list[tuple[int, str, dict[str, Any], bool, SegmentStats]] = []
     work = dict.fromkeys(
         ("steps", "substeps", "solves", "iterations", "refined_for_failure",
@@ -465,8 +464,8 @@ def simulate(
         seg = rec.end_segment()
         if seg is not None:
             reached = seg.max_normal_traction
-            reasons = snap_back_violations(params, reached)
-            bad = list(compress(range(len(reasons)), reasons))  # points with a reason
+            reasons = _snap_back_failures(params, reached)
+            bad = list(reasons)  # points with a reason, in order
             if bad:
                 warnings.append(
                     f"segment #{index} ({plan.kind}) reached f_n = {reached[bad[0]]:.6g} Pa "
@@ -482,7 +481,9 @@ def simulate(
             f"even with 2**{max_halvings} substeps"
         )
     if pool.holds(state):  # the final state outlives the reused buffers: a copy of its own
-        state = state.replace()
+        state = ContactState._trusted(  # the kernel's outputs (finite); read-only copies
+            **{name: np.array(getattr(state, name)) for name in _STATE_ARRAYS}, frame=state.frame
+        )
     rows = rec.finish()
     segment_records = _segment_records(rows["step"], records)
     return _history_from_rows(

@@ -28,6 +28,7 @@ from frictionlab.subloading import (
     update,
 )
 from frictionlab.subloading.kernels import SEPARATION_RTOL
+from frictionlab.subloading.return_map import _update_into
 
 __all__ = [
     "Attempt",
@@ -41,6 +42,7 @@ __all__ = [
 ]
 
 _FAILED = int(Status.FAILED)
+assert max(int(s) for s in Status) == _FAILED  # a status at or above it means a failure
 #: The law's own update, the one known to write into preallocated outputs (``out``).
 _LAW_UPDATE = update
 
@@ -63,6 +65,11 @@ class Attempt:
     ok: bool
     reason: str = ""
 
+    def __post_init__(self) -> None:
+        # read-only: it may be the plan's own increment, shared by its steps (and one
+        # layout for the recorder's compiled pass)
+        self.du.setflags(write=False)
+
 
 @dataclass
 class StepWork:
@@ -81,7 +88,7 @@ def _elastic(params: SubloadingParams, name: str, n: int) -> np.ndarray:
 
 
 def _result_attempt(res: StepResult, du: np.ndarray, solves: int, iters: np.ndarray) -> Attempt:
-    ok = not np.any(res.status == _FAILED)
+    ok = res.status.shape[0] == 0 or int(res.status.max()) < _FAILED  # FAILED: the largest code
     return Attempt(
         state=res.state,
         du=du,
@@ -196,10 +203,9 @@ class _LawStep:
     def __call__(self, du: np.ndarray, dt: np.ndarray | float) -> StepResult:
         if self.closing is None:
             out, self.out = self.out, None
-            if out is not None and update is _LAW_UPDATE:
-                return update(
-                    self.params, self.state, du, dt, raise_on_failure=False, tangent=False, out=out
-                )
+            if out is not None and update is _LAW_UPDATE:  # made here from a checked programme
+                dts = np.atleast_1d(np.asarray(dt, dtype=np.float64))
+                return _update_into(self.params, self.state, du, dts, out)
             return update(self.params, self.state, du, dt, raise_on_failure=False)
         c, sel = self.fraction, self.closing
         local = du.copy()
@@ -261,6 +267,14 @@ def solve_control(
       reached (for example beyond what the contact can carry: gross sliding).
     """
     n = state.n_points
+    if control.fn_target is None and control.ft_target is None:  # the plan's own increment
+        law = _LawStep(params, state, None, out)
+        kernel_du, du = control._slip_increment(n)
+        single = law(kernel_du, control.dt)
+        attempt = _result_attempt(single, du, 1, single.iterations)
+        if not attempt.ok:
+            attempt.reason += _resolution_hint(params, state, du, single.status == _FAILED)
+        return attempt
     du = np.empty((n, 3))
     du[:, :2] = control.du_t
     if control.fn_target is not None:
@@ -391,12 +405,15 @@ def substep(
     accepted when ``error <= accuracy``, otherwise each half is refined in turn, at most
     ``max_halvings`` times.
     """
-    work = StepWork(iterations=np.zeros(n_points, dtype=np.int64))
+    work = StepWork()  # iterations: a copy of the first attempt's, then summed
 
     def attempt(state: Any, ctl: Any) -> Any:
         att = solve(state, ctl)
         work.solves += att.solves
-        work.iterations += att.iterations
+        if work.iterations.shape[0] != n_points:
+            work.iterations = np.array(att.iterations, dtype=np.int64)
+        else:
+            work.iterations += att.iterations
         return att
 
     def run(state: Any, ctl: Any, depth: int, full: Any) -> Any:
@@ -433,7 +450,10 @@ def substep(
         reuse = h2 if first.state is h1.state else None
         return combine(first, run(first.state, c2, depth + 1, reuse))
 
-    return run(start, control, 0, None), work
+    outcome = run(start, control, 0, None)
+    if work.iterations.shape[0] != n_points:  # no attempt (not reached: one always runs)
+        work.iterations = np.zeros(n_points, dtype=np.int64)
+    return outcome, work
 
 
 def advance(

@@ -192,10 +192,46 @@ def update(
         raise ParameterError("time_increment", dt, "finite Delta t >= 0 [s]")
     if params.per_point and params.n_points != n:
         raise ParameterError("params", f"{params.n_points} points", f"{n} points, as in the state")
-    table = params._kernel_table
     buffers = kernels.empty_outputs(n, tangent) if out is None else _checked_buffers(out, n, state)
     if tangent and buffers["tangent"].shape[0] != n:
         raise ParameterError("out", "tangent buffer without rows", "empty_outputs(N, tangent=True)")
+    result = _solve(params, state, du, dt, tangent, buffers, out is not None)
+    if raise_on_failure and not result.success:
+        raise ConvergenceError(
+            "the implicit return map failed (e.g. the normal traction left a closed "
+            "sliding-yield surface, or no admissible plastic state exists)",
+            mask=~result.converged,
+            result=result,
+        )
+    return result
+
+
+def _update_into(
+    params: SubloadingParams,
+    state: ContactState,
+    du: np.ndarray,
+    dt: np.ndarray,
+    out: dict[str, np.ndarray],
+) -> StepResult:
+    """:func:`update` without its checks, no tangent, no raise, into ``out``: for a caller
+    that made every input itself from checked values (the driver: ``du`` (N, 3) float64
+    from a checked programme, ``dt`` (1 or N,) float64 >= 0, ``out`` from
+    ``kernels.empty_outputs(N, tangent=False)`` not holding ``state``)."""
+    return _solve(params, state, du, dt, False, out, True)
+
+
+def _solve(
+    params: SubloadingParams,
+    state: ContactState,
+    du: np.ndarray,
+    dt: np.ndarray,
+    tangent: bool,
+    buffers: dict[str, np.ndarray],
+    views: bool,
+) -> StepResult:
+    """Run the kernel on checked inputs; the result over ``buffers`` (``views``: left
+    writeable, the caller's buffers; otherwise made read-only)."""
+    n = state.n_points
     kernel = kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
     try:
         kernel(
@@ -205,7 +241,7 @@ def update(
             np.ascontiguousarray(state.gap),
             np.ascontiguousarray(du),
             np.ascontiguousarray(dt),
-            table,
+            params._kernel_table,
             dt.shape[0] == 1,
             SURFACE_CODES[params.surface],
             params.tear_k,
@@ -227,7 +263,7 @@ def update(
         )
     except ArithmeticError:  # a division by an underflowed value (f_n ~ 1e-300): no result
         _keep_old_state(state, buffers)
-    if out is None:
+    if not views:
         slip = state.plastic_slip + buffers["dlam"]
         new_state = ContactState._trusted(
             traction=buffers["traction"],
@@ -249,7 +285,7 @@ def update(
             gap=buffers["gap"],
             frame=state.frame,
         )
-    result = StepResult(
+    return StepResult(
         state=new_state,
         traction=new_state.traction,
         tangent=buffers["tangent"],
@@ -259,14 +295,6 @@ def update(
         status=buffers["status"],
         iterations=buffers["iterations"],
     )
-    if raise_on_failure and not result.success:
-        raise ConvergenceError(
-            "the implicit return map failed (e.g. the normal traction left a closed "
-            "sliding-yield surface, or no admissible plastic state exists)",
-            mask=~result.converged,
-            result=result,
-        )
-    return result
 
 
 def _keep_old_state(state: ContactState, out: dict[str, np.ndarray]) -> None:

@@ -241,18 +241,28 @@ def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list
     of 65 values of F, the end points included). Normal tractions at or above F_k on a
     closed surface are left to the domain checks.
     """
+    reasons = [""] * int(np.size(normal_traction))
+    for i, reason in _snap_back_failures(params, normal_traction).items():
+        reasons[i] = reason
+    return reasons
+
+
+def _snap_back_failures(params: SubloadingParams, normal_traction: Any) -> dict[int, str]:
+    """:func:`snap_back_violations` for the failing points only: point -> why (in order)."""
     fn = np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))
     n = fn.shape[0]
-    alpha_t = np.broadcast_to(params.alpha_t, (n,))
-    kappa = np.broadcast_to(params.kappa, (n,))
-    m = np.broadcast_to(params.m, (n,))
-    static = np.broadcast_to(params.static, (n,))
-    kinetic = np.broadcast_to(params.kinetic, (n,))
-    a_max = np.max(np.broadcast_to(params.axis_factors, (n, 2)), axis=1)
-    out = [""] * n
+    # shared values stay scalars (0-d): broadcast by the arithmetic, not N copies
+    alpha_t, kappa, m, static, kinetic = (
+        np.asarray(v, dtype=np.float64)
+        for v in (params.alpha_t, params.kappa, params.m, params.static, params.kinetic)
+    )
+    a_max = np.max(np.asarray(params.axis_factors, dtype=np.float64), axis=-1)
+    for v in (alpha_t, kappa, m, static, kinetic, a_max):
+        np.broadcast_to(v, (n,))  # per-point values for other than N points: ValueError
+    out: dict[int, str] = {}
     if params.is_cone:
         slope = a_max * fn * kappa * (static / kinetic - 1.0) ** m
-        for i in np.flatnonzero(~(alpha_t > slope)):
+        for i in np.flatnonzero(~(alpha_t > slope)).tolist():
             out[i] = (
                 f"alpha_t > C_max f_n kappa (mu_s/mu_k - 1)^m = {slope[i]:.6g} at f_n = "
                 f"{fn[i]:.6g} Pa (no snap-back in softening: below it the local solution "
@@ -262,6 +272,10 @@ def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list
     inside = (fn > 0.0) & (fn < kinetic)
     if not inside.any():
         return out
+    alpha_t, kappa, m, static, kinetic = (
+        np.broadcast_to(v, (n,)) for v in (alpha_t, kappa, m, static, kinetic)
+    )
+    a_max = np.broadcast_to(a_max, (n,))
     failed_at = np.empty(n)
     _closed_snap_back(
         SURFACE_CODES[params.surface], params.tear_k, np.ascontiguousarray(fn),
@@ -323,10 +337,11 @@ def check_snap_back(
     See :func:`snap_back_violations`; ``field_name`` names the input that set the normal
     traction in the message when it is not the law (e.g. a programme segment).
     """
-    reasons = snap_back_violations(params, normal_traction)
-    for i, reason in enumerate(reasons):
+    failures = _snap_back_failures(params, normal_traction)
+    n = int(np.size(normal_traction))
+    for i, reason in failures.items():
         if reason:
-            alpha_t = float(np.broadcast_to(params.alpha_t, (len(reasons),))[i])
+            alpha_t = float(np.broadcast_to(params.alpha_t, (n,))[i])
             if field_name == "alpha_t":
                 raise ParameterError("alpha_t", alpha_t, reason)
             fn = float(np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))[i])
