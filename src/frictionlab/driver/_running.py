@@ -81,6 +81,8 @@ def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plasti
         fn = traction[i, 2]
         r = _length(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
         ratio[i] = r
+        # in both passes: the arrays stay in the loop (a helper taking them would be
+        # reference-counted per point); the shared part, _extremes, takes scalars
         if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change
             (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
              seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
@@ -135,6 +137,8 @@ def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, stat
         row_iterations[i] = iterations[i]
         r = _length(f0, f1) / fn if fn > 0.0 else 0.0
         ratio[i] = r
+        # in both passes: the arrays stay in the loop (a helper taking them would be
+        # reference-counted per point); the shared part, _extremes, takes scalars
         if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change
             (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
              seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],

@@ -814,6 +814,9 @@ def step_points(
     entries. Failed points keep their old state, get the elastic tangent and status
     FAILED; no NaN is ever written. ``out_tangent`` may have zero rows when
     ``want_tangent`` is False.
+
+    The array reads and writes stay in the loops (written in both): a helper taking the
+    arrays, called per point, would be reference-counted on every point.
     """
     npts = traction.shape[0]
     shared_p = P.shape[0] == 1
