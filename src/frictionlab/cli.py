@@ -26,6 +26,7 @@ COMMANDS: tuple[str, ...] = (
     "sweep",
     "example",
     "bench",
+    "warmup",
 )
 
 EXIT_OK = 0
