@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= out/demo
 
-.PHONY: demo test check lint typecheck docs pytest bench clean venv
+.PHONY: demo test test-fast check lint typecheck docs pytest bench clean venv
 
 venv: $(STAMP)
 
@@ -40,6 +40,10 @@ docs: $(STAMP)
 
 pytest: $(STAMP)
 	$(BIN)/python -m pytest -n auto -q
+
+# While developing: lint, type check and the tests not marked slow (no docs site).
+test-fast: check
+	$(BIN)/python -m pytest -n auto -q -m "not slow"
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py
