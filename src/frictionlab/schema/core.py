@@ -207,7 +207,7 @@ class Field:
         if self.json is not None:
             out = dict(self.json)
         elif self.table is not None:
-            sub = self.table.schema()
+            sub = {"$ref": f"#/$defs/{self.table.name}"} if self.table.ref else self.table.schema()
             out = {"type": "array", "items": sub} if self.many else sub
         else:
             assert self.kind is not None, self.name
@@ -243,6 +243,7 @@ class Section:
     variants: Mapping[str, tuple[str | Field, ...]] | None = None
     required_by: Mapping[str, tuple[str, ...]] | None = None
     extra: Mapping[str, Any] | None = None  # more JSON Schema (oneOf, ...)
+    ref: bool = False  # written once under $defs/<name> of the generated schema
 
     def __getitem__(self, name: str) -> Field:
         for f in self.fields:

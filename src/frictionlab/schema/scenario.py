@@ -140,7 +140,7 @@ SEGMENT = Section("segment", (
 }, required_by={
     "slide": ("velocity",), "hold": ("duration",), "turn": ("angle_deg",),
     "cycle": ("amplitude", "velocity"), "table": ("file",),
-})  # fmt: skip
+}, ref=True)  # fmt: skip
 
 _M = {"by": SpringSlider, "per_point": True}
 MACHINE = Section("machine", (
