@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= out/demo
 
-.PHONY: demo test check lint typecheck docs pytest bench clean venv
+.PHONY: demo test check lint typecheck docs pytest bench clean venv schemas
 
 venv: $(STAMP)
 
@@ -38,6 +38,10 @@ docs: $(STAMP)
 
 pytest: $(STAMP)
 	$(BIN)/python -m pytest -n auto -q
+
+# docs/schemas/*.json and the key tables of the docs, from src/frictionlab/schema/.
+schemas: $(STAMP)
+	$(BIN)/python -m frictionlab.schema
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py

@@ -5,10 +5,11 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from frictionlab.schema.bridge import NOT_USED as _NOT_USED
-from frictionlab.schema.bridge import BridgeOptions, BridgeScenario, parse_bridge
+from frictionlab.schema.bridge import NOT_USED, BridgeOptions, BridgeScenario, parse_bridge
 
 __all__ = ["BridgeOptions", "BridgeScenario", "parse_bridge_scenario"]
+
+_NOT_USED = NOT_USED
 
 
 def parse_bridge_scenario(data: dict[str, Any], base_dir: str | os.PathLike[str]) -> BridgeScenario:

@@ -103,5 +103,3 @@ class Scenario:
             initial=self.initial, n_points=self.n_points, accuracy=opts.accuracy,
             max_halvings=opts.max_halvings, progress=progress,
         )  # fmt: skip
-
-

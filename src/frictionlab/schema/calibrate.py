@@ -22,10 +22,23 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table, load_toml
 from frictionlab.io.tribometer import SLIP_UNITS, TIME_UNITS, read_tribometer
 from frictionlab.schema.core import (
-    BOOL, INTEGER, NUMBER, REQUIRED, STRING, Field, Section, listed, override,
+    BOOL,
+    INTEGER,
+    NUMBER,
+    REQUIRED,
+    STRING,
+    Field,
+    Section,
+    listed,
+    override,
 )  # fmt: skip
 from frictionlab.schema.scenario import (
-    INITIAL, LAW, SEGMENT, parse_initial_table, parse_law_table, parse_program_tables,
+    INITIAL,
+    LAW,
+    SEGMENT,
+    parse_initial_table,
+    parse_law_table,
+    parse_program_tables,
 )  # fmt: skip
 from frictionlab.subloading import SubloadingParams
 
@@ -38,7 +51,8 @@ END_TOLERANCE = 1e-6
 _PAIR = listed(float, "number", 2)
 FIT = Section("fit", (
     Field("parameters", listed(str, "string"), "the [law] keys to fit (the rest stay fixed)",
-          default=REQUIRED, choices=FITTABLE, json={"type": "array", "items": {"enum": list(FITTABLE)}}),
+          default=REQUIRED, choices=tuple(FITTABLE),
+          json={"type": "array", "items": {"enum": list(FITTABLE)}}),
     Field("bounds", table=Section("bounds", ()), doc="name = [low, high] (physical units)",
           json={"type": "object", "additionalProperties": _PAIR.json,
                 "description": "name = [low, high] (physical units)"}),
@@ -47,9 +61,11 @@ FIT = Section("fit", (
     Field("profile_points", INTEGER, "grid values per profile", "", 9, low=3),
     Field("profile_max", INTEGER, "profile at most this many (worst first)", "", 2, low=0),
 ), "what to fit", "[fit]")  # fmt: skip
-COLUMNS = Section("columns", tuple(
-    Field(k, STRING, f"title of the {k} column") for k in ("time", "slip", "friction_ratio")
-), "column titles of the data file")
+COLUMNS = Section(
+    "columns",
+    tuple(Field(k, STRING, f"title of the {k} column") for k in ("time", "slip", "friction_ratio")),
+    "column titles of the data file",
+)
 UNITS = Section("units", (
     Field("time", STRING, "unit of the time column", choices=tuple(TIME_UNITS)),
     Field("slip", STRING, "unit of the slip column", choices=tuple(SLIP_UNITS)),
@@ -189,7 +205,9 @@ def parse_calibrate(
     )  # fmt: skip
 
 
-def load_calibrate(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> CalibrationConfig:
+def load_calibrate(
+    path: str | os.PathLike[str], overrides: Sequence[str] = ()
+) -> CalibrationConfig:
     """Read, override (``section.key=value``) and validate a calibration file."""
     p = Path(path)
     data = override(CALIBRATE, load_toml(p), overrides)

@@ -19,14 +19,22 @@ from frictionlab.contact.loading import Hold, NormalLoad, Reverse, Segment, Slid
 from frictionlab.contact.solver import DRIVES, SolverOptions
 from frictionlab.errors import InputError
 from frictionlab.io.config import load_toml
-from frictionlab.schema.core import INTEGER, NUMBER, REQUIRED, STRING, Field, Section, override
-from frictionlab.schema.core import reraise
+from frictionlab.schema.core import (
+    INTEGER,
+    NUMBER,
+    REQUIRED,
+    STRING,
+    Field,
+    Section,
+    override,
+    reraise,
+)
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, check_snap_back
 
 __all__ = ["CONTACT", "ContactScenario", "load_contact", "parse_contact"]
 
-_B = {"by": Block}
+_B: dict[str, Any] = {"by": Block}
 BLOCK = Section("block", (
     Field("E", NUMBER, "Young's modulus", "Pa", REQUIRED, **_B),
     Field("nu", NUMBER, "Poisson's ratio", "-", REQUIRED, **_B),
@@ -36,7 +44,7 @@ BLOCK = Section("block", (
     Field("depth", NUMBER, "block depth (z): gives a 3-D block", "m", None, **_B),
     Field("element", STRING, "element (default quad in 2-D, hex in 3-D)", choices=ELEMENTS, **_B),
 ), "the elastic block", "[block]")  # fmt: skip
-_N = {"by": NormalLoad}
+_N: dict[str, Any] = {"by": NormalLoad}
 NORMAL = Section("normal", (
     Field("pressure", NUMBER, "normal pressure on the top (or displacement)", "Pa", None, **_N),
     Field("displacement", NUMBER, "normal displacement of the top (or pressure)", "m", None,
@@ -61,7 +69,7 @@ SEGMENT = Section("contact_segment", (
     "traction": ("target", "duration", "steps", "direction_deg"),
 }, required_by={"slide": ("velocity",), "hold": ("duration",),
                 "traction": ("target", "duration")}, ref=True)  # fmt: skip
-_S = {"by": SolverOptions}
+_S: dict[str, Any] = {"by": SolverOptions}
 SOLVER = Section("solver", (
     Field("tolerance", NUMBER, "relative residual norm for convergence", "", 1e-10, **_S),
     Field("max_iterations", INTEGER, "Newton iterations per step attempt", "", 25, **_S),

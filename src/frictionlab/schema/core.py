@@ -127,8 +127,8 @@ PAIRS = Kind("pair(s)", _pairs, {"$ref": "#/$defs/pairs"})
 DEFS: dict[str, Any] = {
     "numbers": {"anyOf": [{"type": "number"},
                           {"type": "array", "items": {"type": "number"}, "minItems": 1}]},
-    "pairs": {"anyOf": [{"$ref": "#/$defs/pair"}, {"type": "array", "items": {"$ref": "#/$defs/pair"},
-                                                   "minItems": 1}]},
+    "pairs": {"anyOf": [{"$ref": "#/$defs/pair"},
+                        {"type": "array", "items": {"$ref": "#/$defs/pair"}, "minItems": 1}]},
     "pair": {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2},
 }  # fmt: skip
 
@@ -216,7 +216,9 @@ class Field:
                 out["enum"] = list(self.choices)
             if self.kind in (NUMBER, INTEGER):
                 if self.low is not None:
-                    out["exclusiveMinimum" if self.open in ("low", "both") else "minimum"] = self.low
+                    out["exclusiveMinimum" if self.open in ("low", "both") else "minimum"] = (
+                        self.low
+                    )
                 if self.high is not None:
                     out["exclusiveMaximum" if self.open in ("high", "both") else "maximum"] = (
                         self.high
@@ -269,13 +271,15 @@ class Section:
         if self.variants is not None:
             kind = t.get("kind", str, choices=tuple(self.variants))
         allowed = self.keys(kind)
-        for key in t.keys():
+        for key in t.mapping():
             if key not in allowed:
                 name = f"{t.where}.{key}" if t.where else key
                 raise InputError(unknown_key(name, key, allowed))
         for key in (self.required_by or {}).get(kind or "", ()):
             if key not in t:
-                raise InputError(f"missing required key {t.where}.{key} (needed by kind = '{kind}')")
+                raise InputError(
+                    f"missing required key {t.where}.{key} (needed by kind = '{kind}')"
+                )
         return t
 
     def read(
@@ -290,13 +294,13 @@ class Section:
         kind = t.get("kind", str) if self.variants is not None else None
         out: dict[str, Any] = {} if kind is None else {"kind": kind}
         for f in self.fields_of(kind):
-            if f.name == "kind" or f.table is not None:
+            if f.name == "kind" or f.table is not None or f.kind is None:
                 continue
-            if f.name in t and f.kind is not None:
+            if f.name in t:
                 out[f.name] = f.kind.read(t, f)
             elif f.required:
                 raise InputError(f"missing required key {t.where}.{f.name}")
-            elif not only_given and f.kind is not None:
+            elif not only_given:
                 out[f.name] = None if f.default is OMIT else f.default
         return out
 
@@ -316,7 +320,6 @@ class Section:
                     out["properties"][f.name] = {"anyOf": [self[f.name].schema(), f.schema()]}
         out.update(self.extra or {})
         return out
-
 
     def _rule(self, kind: str) -> dict[str, Any]:
         then: dict[str, Any] = {"propertyNames": {"enum": list(self.keys(kind))}}
@@ -347,17 +350,18 @@ def check_overrides(root: Section, overrides: Iterable[str]) -> None:
         section: Section | None = root
         where = ""
         for part in (p.strip() for p in dotted.split(".")):
-            if section is None or part.isdigit():
+            if section is None:
+                break
+            if part.isdigit():  # an entry of an array of tables, counted from 1
+                where = f"[{where}] #{part}"
                 continue
             allowed = section.keys() if section.variants is None else _all_keys(section)
+            name = f"{where}.{part}" if where else part
             if part not in allowed:
-                name = f"{where}.{part}" if where else part
                 raise InputError(f"--set {item}: " + unknown_key(name, part, allowed))
             f = section[part]
-            where = f"[{part}]" if not where else f"{where}.{part}"
-            section = f.table
-            if section is not None and section.fields == ():
-                section = None  # free-form table
+            where = f"[{part}]" if not where else name
+            section = f.table if f.table is not None and f.table.fields else None
 
 
 def _all_keys(section: Section) -> tuple[str, ...]:

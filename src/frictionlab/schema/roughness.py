@@ -23,17 +23,35 @@ from frictionlab.io.budget import check_grid_size
 from frictionlab.io.config import Table, load_toml
 from frictionlab.roughness import generators
 from frictionlab.roughness.hierarchy import (
-    MU_PASSED, ON_INVALID, HierarchyLevel, check_nested, self_similar_levels,
+    MU_PASSED,
+    ON_INVALID,
+    HierarchyLevel,
+    check_nested,
+    self_similar_levels,
 )  # fmt: skip
 from frictionlab.roughness.lattice import (
-    CONTROLS, ENGINES, FULL_CONTACT_METHODS, MU_DEFINITIONS, TRAVEL_MODES, LatticeSettings,
+    CONTROLS,
+    ENGINES,
+    FULL_CONTACT_METHODS,
+    MU_DEFINITIONS,
+    TRAVEL_MODES,
+    LatticeSettings,
     lattice_geometry,
 )  # fmt: skip
 from frictionlab.roughness.surface import HeightMap, Surface
 from frictionlab.roughness.topography import DETREND_MODES, PERIODICITY_MODES, read_prepared
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
 from frictionlab.schema.core import (
-    BOOL, INTEGER, NUMBER, REQUIRED, STRING, Field, Kind, Section, listed, override,
+    BOOL,
+    INTEGER,
+    NUMBER,
+    REQUIRED,
+    STRING,
+    Field,
+    Kind,
+    Section,
+    listed,
+    override,
 )  # fmt: skip
 
 __all__ = [
@@ -87,7 +105,9 @@ def _loads(t: Table, f: Field) -> np.ndarray:
     else:
         loads = np.array(t.get_list(f.name, float), dtype=np.float64)
         if loads.size == 0:
-            raise InputError(f"{name} is empty: allowed a sweep of at least one load (N per spring)")
+            raise InputError(
+                f"{name} is empty: allowed a sweep of at least one load (N per spring)"
+            )
     if loads.size > MAX_DIRECTIONS:
         raise InputError(f"{name} has {loads.size} loads: allowed at most {MAX_DIRECTIONS}")
     return loads
@@ -118,12 +138,15 @@ def _range_json(last: str, kind: str) -> dict[str, Any]:
 
 
 _NUMS = listed(float, "number")
-DIRECTIONS = Kind("directions", _directions,
-                  {"oneOf": [{"type": "number"}, _NUMS.json, _range_json("step", "number")]})
+DIRECTIONS = Kind(
+    "directions",
+    _directions,
+    {"oneOf": [{"type": "number"}, _NUMS.json, _range_json("step", "number")]},
+)
 LOADS = Kind("loads", _loads, {"oneOf": [_NUMS.json, _range_json("count", "integer")]})
 _FULL = Kind("'full'", _full, {"type": "string", "enum": ["full"]})
 _BETA = Field("beta_deg", DIRECTIONS, "directions (default: [sliding].beta_deg)", "deg")
-_POS = {"low": 0.0, "open": "low", "allowed": "a positive value (SI units)"}
+_POS: dict[str, Any] = {"low": 0.0, "open": "low", "allowed": "a positive value (SI units)"}
 _SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
 SURFACE = Section("surface", (
     Field("kind", STRING, "surface kind", "", REQUIRED, choices=SURFACE_KINDS),
@@ -168,7 +191,7 @@ SURFACE = Section("surface", (
     "self_affine": ("hurst", "physical_sizes", "points", "seed"),
     "file": ("path", "periodicity", "detrend"),
 }, ref=True)  # fmt: skip
-_L = {"by": LatticeSettings}
+_L: dict[str, Any] = {"by": LatticeSettings}
 SLIDING = Section("sliding", (
     Field("beta_deg", DIRECTIONS, "sliding directions: one value, a list or {start, stop, "
           "step}", "deg", REQUIRED),
@@ -212,7 +235,7 @@ ADHESION = Section("adhesion", (
     _BETA,
     Field("compare_without_adhesion", BOOL, "also run without tensile springs", "", True),
 ), "load sweep with tensile springs (Eqs 21-22)", "[adhesion]")  # fmt: skip
-_W = {"default": REQUIRED, "low": 0.0, "open": "low"}
+_W: dict[str, Any] = {"default": REQUIRED, "low": 0.0, "open": "low"}
 WEAR = Section("wear", (
     Field("wear_coefficient", NUMBER, "Archard K", "-", allowed="a positive number "
           "(dimensionless)", **_W),
@@ -228,10 +251,14 @@ WEAR = Section("wear", (
     Field("method", STRING, "how the worn polar is computed", "", "auto", choices=WEAR_METHODS),
     _BETA,
 ), "Archard wear, mu(t) (Eqs 23-28w)", "[wear]")  # fmt: skip
-LEVEL = Section("level", (
-    Field("lower", table=SURFACE, default=REQUIRED),
-    Field("upper", table=SURFACE, default=REQUIRED),
-), "one inner level (innermost first)")
+LEVEL = Section(
+    "level",
+    (
+        Field("lower", table=SURFACE, default=REQUIRED),
+        Field("upper", table=SURFACE, default=REQUIRED),
+    ),
+    "one inner level (innermost first)",
+)
 HIERARCHY = Section("hierarchy", (
     Field("levels", INTEGER, "self-similar levels (Eq 28; with ratio)", "", None, low=1),
     Field("ratio", NUMBER, "scale factor between levels", "", None, low=1, open="low",
@@ -249,8 +276,16 @@ MULTISCALE = Section("multiscale", (
     _BETA,
 ), "scale-resolved friction (sampled surfaces)", "[multiscale]")  # fmt: skip
 _TOP = (
-    Field("mu0", NUMBER, "local Coulomb coefficient", "-", REQUIRED, low=0, open="low",
-          allowed="a local friction coefficient mu0 > 0"),
+    Field(
+        "mu0",
+        NUMBER,
+        "local Coulomb coefficient",
+        "-",
+        REQUIRED,
+        low=0,
+        open="low",
+        allowed="a local friction coefficient mu0 > 0",
+    ),
     Field("title", STRING, "title of the run", "", ""),
     Field("lower", table=SURFACE, default=REQUIRED, doc="surface 1, fixed"),
     Field("upper", table=SURFACE, default=REQUIRED, doc="surface 2, sliding"),
@@ -353,7 +388,7 @@ def parse_roughness(
     try:
         settings = LatticeSettings(**options)
     except ParameterError as exc:
-        section = "[sliding]" if exc.field in SLIDING.keys() else "[lattice]"
+        section = "[sliding]" if exc.field in SLIDING.keys(None) else "[lattice]"
         raise InputError(f"{section}.{exc}") from None
     output = OUTPUT.read(top.raw("output", {}))
     adhesion = wear = hierarchy = multiscale = None
@@ -379,7 +414,9 @@ def parse_roughness(
     )  # fmt: skip
 
 
-def load_roughness(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> RoughnessScenario:
+def load_roughness(
+    path: str | os.PathLike[str], overrides: Sequence[str] = ()
+) -> RoughnessScenario:
     """Read, override (``section.key=value``) and validate a roughness scenario."""
     p = Path(path)
     data = override(ROUGHNESS, load_toml(p), overrides)
@@ -532,7 +569,9 @@ def _build(v: dict[str, Any], where: str, base_dir: Path, info: dict[str, Any]) 
     path = Path(v["path"])
     sizes, crop = v["physical_sizes"], v["crop"]
     if sizes is not None and any(not s > 0.0 for s in sizes):
-        raise InputError(f"{where}.physical_sizes = {sizes} is invalid: allowed sizes > 0 in `unit`")
+        raise InputError(
+            f"{where}.physical_sizes = {sizes} is invalid: allowed sizes > 0 in `unit`"
+        )
     prepared = read_prepared(
         path if path.is_absolute() else base_dir / path, periodicity=v["periodicity"],
         detrend=v["detrend"], fill_missing=v["fill_missing"], gradient=v["gradient"],

@@ -18,8 +18,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from frictionlab.driver import SEGMENT_KINDS, InitialConditions, Program, SpringSlider, Table
-from frictionlab.driver import plan_program
+from frictionlab.driver import (
+    SEGMENT_KINDS,
+    InitialConditions,
+    Program,
+    SpringSlider,
+    Table,
+    plan_program,
+)
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.recorder import Recording, RowSink
 from frictionlab.driver.simulate import count_points
@@ -29,12 +35,26 @@ from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.config import load_toml
 from frictionlab.io.tables import read_csv
 from frictionlab.schema.core import (
-    BOOL, INTEGER, NUMBER, NUMBERS, PAIRS, REQUIRED, STRING, Field, Section, listed, override,
+    BOOL,
+    INTEGER,
+    NUMBER,
+    NUMBERS,
+    PAIRS,
+    REQUIRED,
+    STRING,
+    Field,
+    Section,
+    listed,
+    override,
     reraise,
 )  # fmt: skip
 from frictionlab.subloading import SURFACES, SubloadingParams
 from frictionlab.subloading.params import (
-    F_INTEGRATORS, OPEN_RECOVERY, ORTHOTROPY_CONVENTIONS, RECOVERY_FORMS, U_LAWS,
+    F_INTEGRATORS,
+    OPEN_RECOVERY,
+    ORTHOTROPY_CONVENTIONS,
+    RECOVERY_FORMS,
+    U_LAWS,
 )  # fmt: skip
 
 if TYPE_CHECKING:
@@ -109,7 +129,7 @@ OUTPUT = Section("output", (
           None),
 ), "what is recorded", "[output]")  # fmt: skip
 
-_SEG = {"by": SEGMENT_KINDS["slide"], "per_point": True}
+_SEG: dict[str, Any] = {"by": SEGMENT_KINDS["slide"], "per_point": True}
 SEGMENT = Section("segment", (
     Field("kind", STRING, "segment kind", "", REQUIRED, choices=tuple(SEGMENT_KINDS)),
     Field("velocity", NUMBERS, "sliding velocity", "m/s", **_SEG),
@@ -142,7 +162,7 @@ SEGMENT = Section("segment", (
     "cycle": ("amplitude", "velocity"), "table": ("file",),
 }, ref=True)  # fmt: skip
 
-_M = {"by": SpringSlider, "per_point": True}
+_M: dict[str, Any] = {"by": SpringSlider, "per_point": True}
 MACHINE = Section("machine", (
     Field("stiffness", NUMBERS, "machine spring k", "Pa/m", REQUIRED, **_M),
     Field("velocity", NUMBERS, "load-point velocity V", "m/s", REQUIRED, **_M),
@@ -168,13 +188,12 @@ SCENARIO = Section("scenario", (
     Field("machine", table=MACHINE),
 ), "A scenario file of `frictionlab simulate`: [law], [initial], optional [run] and [output], "
    "then [[program]] segments or a [machine]. Numbers may be lists, one value per contact "
-   "point. SI units.", "", extra={"oneOf": [{"required": ["program"]}, {"required": ["machine"]}]})  # fmt: skip
+   "point. SI units.", "",
+   extra={"oneOf": [{"required": ["program"]}, {"required": ["machine"]}]})  # fmt: skip
 
 
 # --------------------------------------------------------------------------- sections
-def parse_law_table(
-    data: Any, where: str = "[law]"
-) -> tuple[SubloadingParams, dict[str, Any]]:
+def parse_law_table(data: Any, where: str = "[law]") -> tuple[SubloadingParams, dict[str, Any]]:
     """Validate a ``[law]`` mapping -> (params, the keys given with their values)."""
     given = LAW.read(data, where, only_given=True)
     surface = given.get("surface", "coulomb")
@@ -443,7 +462,11 @@ def parse_scenario(
     root = SCENARIO.table(data, "")
     top = SCENARIO.read(root)
     law, initial = root.table("law", required=True), root.table("initial", required=True)
-    run, output_table, machine_table = root.table("run"), root.table("output"), root.table("machine")
+    run, output_table, machine_table = (
+        root.table("run"),
+        root.table("output"),
+        root.table("machine"),
+    )
     has_program = "program" in root
     program_tables = root.tables("program") if has_program else []
     assert law is not None and initial is not None

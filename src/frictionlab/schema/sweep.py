@@ -12,12 +12,14 @@ import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from frictionlab.errors import InputError
 from frictionlab.io.config import load_toml
 from frictionlab.schema.core import REQUIRED, STRING, Field, Section, override
-from frictionlab.sweep.cases import LINK, Case, expand_grid, make_cases
+
+if TYPE_CHECKING:
+    from frictionlab.sweep.cases import Case
 
 __all__ = ["COMMANDS", "SWEEP", "SweepSpec", "load_sweep", "parse_sweep"]
 
@@ -54,6 +56,8 @@ def parse_sweep(
     data: Mapping[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> SweepSpec:
     """Validate a parsed sweep file and expand its cases."""
+    from frictionlab.sweep.cases import expand_grid, make_cases  # sweep/ imports this module
+
     if not isinstance(data.get("base", ""), str) or not data.get("base"):
         SWEEP.table(dict(data), "")  # an unknown key first
         raise InputError('base must name the base scenario file, e.g. base = "scenario.toml"')
@@ -94,6 +98,9 @@ def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
 def _check_value(key: str, value: Any) -> None:
     if isinstance(value, float) and not math.isfinite(value):
         raise InputError(f"'{key}' = {value} must be finite")
+
+
+LINK = "+"  # links keys that take the same value (frictionlab.sweep.cases.LINK)
 
 
 def _grid(raw: Any) -> dict[str, list[Any]]:
