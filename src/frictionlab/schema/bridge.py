@@ -34,20 +34,26 @@ _FITTED_KEYS = {
     "orthotropy": ("orthotropy", "orthotropy_angle", "orthotropy_angle_deg"),
 }
 OPTIONS = Section("bridge", (
-    Field("scale", STRING, "the size from the law, or from the roughness polar", "", "law",
+    Field("scale", STRING, "where the law's size comes from: the [law] values, or "
+          "mu_k from the polar (roughness)", "", "law",
           choices=SCALES),
-    Field("fit", listed(str, "string"), "law groups fitted to the polar", "", list(FIT_GROUPS),
-          json={"type": "array", "items": {"enum": list(FIT_GROUPS)}, "uniqueItems": True,
-                "description": "law groups fitted to the polar"}),
-    Field("step_deg", NUMBER, "full-circle grid of the polar", "deg", 10.0, low=0.5, high=45,
+    Field("fit", listed(str, "string"), "what is fitted; a group left out is held at its [law] "
+          "value", "", list(FIT_GROUPS),
+          json={"type": "array", "items": {"enum": list(FIT_GROUPS)}, "uniqueItems": True}),
+    Field("step_deg", NUMBER, "full-circle grid of the polar ([sliding].beta_deg added)", "deg",
+          10.0, low=0.5, high=45,
           allowed="a step from 0.5 to 45 deg that divides 360"),
-    Field("tolerance", NUMBER, "relative rms misfit still called expressible", "", 0.02,
+    Field("tolerance", NUMBER, "largest relative rms misfit (over the mean |mu|) still called "
+          "expressible", "", 0.02,
           low=0, high=1, open="both", allowed="0 < tolerance < 1 (relative rms misfit)"),
-    Field("normal_traction", NUMBER, "f_n of the fitted scenario (closed surfaces: < F_k)",
+    Field("normal_traction", NUMBER, "f_n of the fitted scenario and of the check (closed "
+          "surfaces: < F_k)",
           "Pa", 1.0, low=0, open="low", allowed="f_n > 0 Pa"),
-    Field("velocity", NUMBER, "steady-sliding check and fitted scenario", "m/s", 1.0e-3,
+    Field("velocity", NUMBER, "speed of the steady-sliding check and of the fitted "
+          "scenario's slide", "m/s", 1.0e-3,
           low=0, open="low", allowed="V > 0 m/s"),
-    Field("distance", NUMBER, "slide length (default: 25 relaxation lengths)", "m", None,
+    Field("distance", NUMBER, "slide length of the check (default: 25 relaxation "
+          "lengths)", "m", None,
           low=0, open="low", allowed="a length > 0 m"),
     Field("steps", INTEGER, "steps of that slide", "", 400, low=1, high=100_000,
           allowed="1 to 100000 steps"),

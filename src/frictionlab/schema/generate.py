@@ -96,6 +96,7 @@ def key_table(address: str) -> str:
         kinds = [k for k, keys in (section.variants or {}).items()
                  if f.name in [g if isinstance(g, str) else g.name for g in keys]]  # fmt: skip
         doc = f.doc + (f" (kind: {', '.join(kinds)})" if kinds and f.name != "kind" else "")
+        doc = doc.replace("|", "\\|")
         allowed = f.allowed_text().replace("|", "\\|")
         rows.append(f"| `{f.name}` | {kind} | {f.unit} | {_default(f)} | {allowed} | {doc} |")
     return "\n".join(rows) + "\n"

@@ -27,16 +27,16 @@ __all__ = ["COMMANDS", "SWEEP", "SweepSpec", "load_sweep", "parse_sweep"]
 COMMANDS = ("simulate", "roughness")
 _FREE = Section("overrides", ())
 SWEEP = Section("sweep", (
-    Field("title", STRING, "title of the sweep", "", ""),
+    Field("title", STRING, "names the sweep in the plot", "", ""),
     Field("base", STRING, "the base scenario file (relative to the sweep file)", "", REQUIRED),
-    Field("command", STRING, "the base scenario's command (default: detected)", "", None,
-          choices=COMMANDS),
-    Field("grid", table=_FREE, doc='"section.key" = [values]: every combination is a case',
-          json={"type": "object", "minProperties": 1, "description": '"section.key" = '
-                "[values]: every combination is a case"}),
-    Field("case", table=_FREE, many=True, doc='one table of "section.key" = value per case',
-          json={"type": "array", "minItems": 1, "items": {"type": "object", "minProperties": 1},
-                "description": 'one table of "section.key" = value per case'}),
+    Field("command", STRING, "when absent: simulate for a base with [law], roughness for one with "
+          "[lower] or [sliding]", "", None, choices=COMMANDS),
+    Field("grid", table=_FREE, doc='"section.key" = [values]: every combination is a case; '
+          '"a.x+b.y" = [values] links keys (one axis, one column of sweep.csv)',
+          json={"type": "object", "minProperties": 1}),
+    Field("case", table=_FREE, many=True, doc='one table per case: "section.key" = value '
+          '("a.x+b.y" links keys as in [grid])',
+          json={"type": "array", "minItems": 1, "items": {"type": "object", "minProperties": 1}}),
 ), "A sweep file of `frictionlab sweep`: a base scenario and a [grid] or [[case]] tables "
    "of overrides.", extra={"oneOf": [{"required": ["grid"]}, {"required": ["case"]}]})  # fmt: skip
 
