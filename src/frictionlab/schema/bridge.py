@@ -11,15 +11,13 @@ import math
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.config import load_toml
-from frictionlab.schema.core import INTEGER, NUMBER, STRING, Field, Section, listed, override
+from frictionlab.schema.core import INTEGER, NUMBER, STRING, Field, Section, listed, load
 from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, parse_roughness
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, initial_state
@@ -156,9 +154,7 @@ def parse_bridge(
 
 def load_bridge(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> BridgeScenario:
     """Read, override (``section.key=value``) and validate a bridge scenario."""
-    p = Path(path)
-    data = override(BRIDGE, load_toml(p), overrides)
-    return parse_bridge(data, base_dir=p.parent, source=str(p))
+    return load(BRIDGE, parse_bridge, path, overrides)
 
 
 def _options(data: Any) -> BridgeOptions:

@@ -19,7 +19,7 @@ from frictionlab.calibration.fit import make_space
 from frictionlab.calibration.model import FITTABLE, Curve, program_duration
 from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.config import Table, load_toml
+from frictionlab.io.config import Table
 from frictionlab.io.tribometer import SLIP_UNITS, TIME_UNITS, read_tribometer
 from frictionlab.schema.core import (
     BOOL,
@@ -30,7 +30,7 @@ from frictionlab.schema.core import (
     Field,
     Section,
     listed,
-    override,
+    load,
 )  # fmt: skip
 from frictionlab.schema.scenario import (
     INITIAL,
@@ -208,6 +208,4 @@ def load_calibrate(
     path: str | os.PathLike[str], overrides: Sequence[str] = ()
 ) -> CalibrationConfig:
     """Read, override (``section.key=value``) and validate a calibration file."""
-    p = Path(path)
-    data = override(CALIBRATE, load_toml(p), overrides)
-    return parse_calibrate(data, base_dir=p.parent, source=str(p))
+    return load(CALIBRATE, parse_calibrate, path, overrides)

@@ -10,7 +10,6 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 from frictionlab.contact.block import ELEMENTS, Block
@@ -18,7 +17,6 @@ from frictionlab.contact.interface import TANGENTS
 from frictionlab.contact.loading import Hold, NormalLoad, Reverse, Segment, Slide, Traction
 from frictionlab.contact.solver import DRIVES, SolverOptions
 from frictionlab.errors import InputError
-from frictionlab.io.config import load_toml
 from frictionlab.schema.core import (
     INTEGER,
     NUMBER,
@@ -26,7 +24,7 @@ from frictionlab.schema.core import (
     STRING,
     Field,
     Section,
-    override,
+    load,
     reraise,
 )
 from frictionlab.schema.scenario import LAW, parse_law_table
@@ -182,6 +180,4 @@ def parse_contact(
 
 def load_contact(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> ContactScenario:
     """Read, override (``section.key=value``) and validate a contact scenario file."""
-    p = Path(path)
-    data = override(CONTACT, load_toml(p), overrides)
-    return parse_contact(data, base_dir=p.parent, source=str(p))
+    return load(CONTACT, parse_contact, path, overrides)

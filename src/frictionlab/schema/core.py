@@ -15,12 +15,14 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from pathlib import Path
+from typing import Any, TypeVar
 
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.config import REQUIRED, Table, apply_overrides, unknown_key
+from frictionlab.io.config import REQUIRED, Table, apply_overrides, load_toml, unknown_key
 
 __all__ = [
     "BOOL",
@@ -36,6 +38,7 @@ __all__ = [
     "Section",
     "check_overrides",
     "listed",
+    "load",
     "reraise",
 ]
 
@@ -372,3 +375,14 @@ def override(root: Section, data: dict[str, Any], overrides: Sequence[str]) -> d
     """``data`` with the ``--set`` overrides applied, each key checked against ``root``."""
     check_overrides(root, overrides)
     return apply_overrides(data, overrides)
+
+
+T = TypeVar("T")
+
+
+def load(root: Section, parse: Callable[..., T], path: str | os.PathLike[str],
+         overrides: Sequence[str]) -> T:  # fmt: skip
+    """Read the TOML file ``path``, apply the ``--set`` overrides (checked against ``root``)
+    and ``parse`` it (relative file names from the file's folder)."""
+    p = Path(path)
+    return parse(override(root, load_toml(p), overrides), base_dir=p.parent, source=str(p))

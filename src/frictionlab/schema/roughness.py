@@ -20,7 +20,7 @@ import numpy as np
 
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.budget import check_grid_size
-from frictionlab.io.config import Table, load_toml
+from frictionlab.io.config import Table
 from frictionlab.roughness import generators
 from frictionlab.roughness.hierarchy import (
     MU_PASSED,
@@ -51,7 +51,7 @@ from frictionlab.schema.core import (
     Kind,
     Section,
     listed,
-    override,
+    load,
 )  # fmt: skip
 
 __all__ = [
@@ -418,9 +418,7 @@ def load_roughness(
     path: str | os.PathLike[str], overrides: Sequence[str] = ()
 ) -> RoughnessScenario:
     """Read, override (``section.key=value``) and validate a roughness scenario."""
-    p = Path(path)
-    data = override(ROUGHNESS, load_toml(p), overrides)
-    return parse_roughness(data, base_dir=p.parent, source=str(p))
+    return load(ROUGHNESS, parse_roughness, path, overrides)
 
 
 def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:

@@ -32,7 +32,6 @@ from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.budget import RunEstimate, check_run_size, largest
 from frictionlab.io.config import Table as TomlTable
-from frictionlab.io.config import load_toml
 from frictionlab.io.tables import read_csv
 from frictionlab.schema.core import (
     BOOL,
@@ -45,7 +44,7 @@ from frictionlab.schema.core import (
     Field,
     Section,
     listed,
-    override,
+    load,
     reraise,
 )  # fmt: skip
 from frictionlab.subloading import SURFACES, SubloadingParams
@@ -562,9 +561,7 @@ def _machine_steps(m: MachineRun) -> int:
 
 def load_scenario(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> Scenario:
     """Read, override (``section.key=value``) and validate a scenario file."""
-    p = Path(path)
-    data = override(SCENARIO, load_toml(p), overrides)
-    return parse_scenario(data, base_dir=p.parent, source=str(p))
+    return load(SCENARIO, parse_scenario, path, overrides)
 
 
 def _jsonable(obj: Any) -> Any:

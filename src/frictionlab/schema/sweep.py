@@ -15,8 +15,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from frictionlab.errors import InputError
-from frictionlab.io.config import load_toml
-from frictionlab.schema.core import REQUIRED, STRING, Field, Section, override
+from frictionlab.schema.core import REQUIRED, STRING, Field, Section, load
 
 if TYPE_CHECKING:
     from frictionlab.sweep.cases import Case
@@ -78,9 +77,7 @@ def parse_sweep(
 
 def load_sweep(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> SweepSpec:
     """Read, override (``key=value``) and validate a sweep file."""
-    p = Path(path)
-    data = override(SWEEP, load_toml(p), overrides)
-    return parse_sweep(data, base_dir=p.parent, source=str(p))
+    return load(SWEEP, parse_sweep, path, overrides)
 
 
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
