@@ -76,11 +76,25 @@ def build_uinter_harness(build_dir: Path, fortran: str) -> Path:
     src = build_dir / abaqus.SOURCE_NAME
     src.write_text(abaqus.self_contained_source())
     obj = build_dir / "frictionlab_uinter.o"
-    _run([cc, *c_core.CFLAGS, "-Wall", "-Werror", "-c", str(src), "-o", str(obj)])
+    run_checked([cc, *c_core.CFLAGS, "-Wall", "-Werror", "-c", str(src), "-o", str(obj)])
     objects = [str(obj)]
     main = build_dir / "harness_uinter.o"
-    _run([fortran, "-O2", "-c", str(HERE / "harness_uinter.f90"), "-o", str(main)])
-    _run([fortran, "-o", str(exe), str(main), *objects, "-lm"])
+    run_checked([fortran, "-O2", "-c", str(HERE / "harness_uinter.f90"), "-o", str(main)])
+    run_checked([fortran, "-o", str(exe), str(main), *objects, "-lm"])
+    return exe
+
+
+def build_vuinter_harness(build_dir: Path) -> Path:
+    """The C harness of VUINTER linked with the exported source."""
+    exe = build_dir / "harness_vuinter"
+    if exe.exists():
+        return exe
+    cc = c_core.compiler()
+    assert cc is not None
+    src = build_dir / abaqus.SOURCE_NAME
+    src.write_text(abaqus.self_contained_source())
+    run_checked([cc, *c_core.CFLAGS, "-Wall", "-o", str(exe), str(HERE / "harness_vuinter.c"),
+          str(src), "-lm"])  # fmt: skip
     return exe
 
 
@@ -88,10 +102,10 @@ def run_uinter(exe: Path, recs: np.ndarray, work: Path) -> np.ndarray:
     """Run the harness on the records; (n, 23) outputs."""
     inp, out = work / "calls.bin", work / "results.bin"
     np.concatenate([[float(recs.shape[0])], recs.ravel()]).astype("<f8").tofile(inp)
-    _run([str(exe), str(inp), str(out)])
+    run_checked([str(exe), str(inp), str(out)])
     return np.fromfile(out, dtype="<f8").reshape(-1, N_OUT)
 
 
-def _run(cmd: list[str]) -> None:
+def run_checked(cmd: list[str]) -> None:
     done = subprocess.run(cmd, capture_output=True, text=True, check=False)
     assert done.returncode == 0, f"{' '.join(cmd)}:\n{done.stdout}\n{done.stderr}"

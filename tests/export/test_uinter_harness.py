@@ -17,7 +17,14 @@ import frictionlab
 from frictionlab.io.scenario import load_scenario
 from frictionlab.subloading import kernels
 
-from .support import build_uinter_harness, recorded_calls, records, run_uinter
+from .support import (
+    build_uinter_harness,
+    build_vuinter_harness,
+    recorded_calls,
+    records,
+    run_checked,
+    run_uinter,
+)
 
 BUNDLED = Path(frictionlab.__file__).parent / "data" / "scenarios"
 SCENARIOS = sorted(p.name for p in BUNDLED.glob("*.toml"))
@@ -137,3 +144,27 @@ def test_uinter_reproduces_separation_and_reclosing(
     reclosed = any(((c["gap"] > 0.0) & (c["out_status"] != kernels.OPEN)).any() for c in calls)
     assert opened and reclosed
     _replay(scenario, build_dir, fortran, tmp_path)
+
+
+def test_vuinter_block_equals_uinter_point_by_point(
+    build_dir: Path, fortran: str, tmp_path: Path
+) -> None:
+    """VUINTER (one call for a block of nodes) gives UINTER's answers node by node."""
+    path = tmp_path / "reclosing.toml"
+    path.write_text(RECLOSING.format(surface="coulomb", sizes=CONE, fn=1.0e6))
+    scenario = load_scenario(path)
+    with recorded_calls() as calls:
+        scenario.run()
+    recs = records(calls, scenario.params)
+    recs = recs[recs[:, 40] == recs[0, 40]]  # one time increment for the whole block
+    uinter = run_uinter(build_uinter_harness(build_dir, fortran), recs, tmp_path)
+    exe = build_vuinter_harness(build_dir)
+    (tmp_path / "block.bin").write_bytes(
+        np.concatenate([[float(len(recs))], recs.ravel()]).astype("<f8").tobytes()
+    )
+    run_checked([str(exe), str(tmp_path / "block.bin"), str(tmp_path / "block.out")])
+    block = np.fromfile(tmp_path / "block.out", dtype="<f8").reshape(len(recs), 14)
+    ok = uinter[:, 20] == 1.0  # failed points: VUINTER cannot cut the increment
+    assert ok.sum() >= 50
+    np.testing.assert_array_equal(block[ok, :11], uinter[ok, :11])
+    np.testing.assert_array_equal(block[ok, 11], uinter[ok, 21])
