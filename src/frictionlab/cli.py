@@ -26,6 +26,7 @@ COMMANDS: tuple[str, ...] = (
     "sweep",
     "example",
     "bench",
+    "export",
 )
 
 EXIT_OK = 0

@@ -105,7 +105,11 @@ def props_vector(
 ) -> np.ndarray:
     """The 22 PROPS of one law; refused (naming the key) when values differ per point."""
     table = parameter_table(params)
-    names = [name for name, _, _ in PROPS[:N_PARAMS]]
+    cone = params.is_cone
+    names = ["alpha_n", "alpha_t", "mu_s" if cone else "F_s", "mu_k" if cone else "F_k", "u",
+             "kappa", "xi", "m", "n", "rotation", "rotation",
+             *(["orthotropy"] * 2 if cone else ["orthotropy or M"] * 2),
+             "orthotropy_angle"]  # fmt: skip
     for col in range(N_PARAMS):
         if np.any(table[:, col] != table[0, col]):
             raise ParameterError(
