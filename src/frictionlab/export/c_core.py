@@ -89,18 +89,19 @@ class Options(ctypes.Structure):
     ]
 
 
-def load_core(cache: Path | None = None) -> ctypes.CDLL:
-    """The C core as a ctypes library, built once per source version into ``cache``
-    (default: a folder in the system's temporary directory)."""
+def load_core(cache: Path | None = None, extra: tuple[str, ...] = ()) -> ctypes.CDLL:
+    """The C core as a ctypes library, built once per source version and ``extra`` flags
+    into ``cache`` (default: a folder in the system's temporary directory)."""
     text = {name: source(name) for name in ("subloading.h", "subloading.c")}
-    key = hashlib.sha256("".join(text.values()).encode() + " ".join(CFLAGS).encode())
+    flags = " ".join((*CFLAGS, *extra))
+    key = hashlib.sha256("".join(text.values()).encode() + flags.encode())
     tag = key.hexdigest()[:16]
     if tag in _LIB:
         return _LIB[tag]
     folder = cache or Path(tempfile.gettempdir()) / f"frictionlab-c-core-{os.getuid()}"
     lib_path = folder / tag / "libsubloading.so"
     if not lib_path.exists():
-        build(text, lib_path)
+        build(text, lib_path, extra)
     lib = ctypes.CDLL(str(lib_path))
     dbl = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
     i32 = np.ctypeslib.ndpointer(dtype=np.int32, flags="C_CONTIGUOUS")

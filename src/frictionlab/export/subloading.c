@@ -1367,13 +1367,15 @@ int sl_point(const double *p, double ca, double sa, const double *traction, doub
              double R_old, double gap_old, const double *slip, double dt,
              const sl_options *opt, sl_result *out)
 {
-    fenv_t env;
-    feholdexcept(&env); /* save the caller's flags and traps, run without traps */
+    /* the division-by-zero flag marks a division by zero inside this update; the
+     * caller's flag is kept (cleared and raised again only in the rare case it was set) */
+    int caller_flag = fetestexcept(FE_DIVBYZERO);
+    if (caller_flag) feclearexcept(FE_DIVBYZERO);
     point(dt, ca, sa, p, traction[0], traction[1], traction[2], F_old, R_old, gap_old, slip[0],
           slip[1], slip[2], opt, out);
     int zero_division = fetestexcept(FE_DIVBYZERO) != 0;
-    feclearexcept(FE_ALL_EXCEPT);
-    fesetenv(&env);
+    if (zero_division && !caller_flag) feclearexcept(FE_DIVBYZERO);
+    if (caller_flag && !zero_division) feraiseexcept(FE_DIVBYZERO);
     int finite = isfinite(out->F) && isfinite(out->R) && isfinite(out->gap) &&
                  isfinite(out->dlam) && isfinite(out->diss);
     for (int i = 0; i < 3; i++) {
