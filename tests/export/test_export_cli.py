@@ -73,3 +73,14 @@ def test_per_point_law_is_refused_naming_the_key(tmp_path: Path, capsys) -> None
     assert code == 2 and len(err.splitlines()) == 1
     assert "law.mu_k" in err and "one value" in err
     assert not out.exists()
+
+
+def test_the_docs_tables_are_the_routine_tables() -> None:
+    """docs/fe-codes.md lists PROPS and STATEV as abaqus.PROPS and abaqus.STATEV do."""
+    text = (Path(__file__).resolve().parents[2] / "docs" / "fe-codes.md").read_text()
+    for tag, rows in (("props", abaqus.PROPS), ("statev", abaqus.STATEV)):
+        block = text.split(f"<!-- {tag}:start -->")[1].split(f"<!-- {tag}:end -->")[0]
+        lines = block.strip().splitlines()[2:]
+        want = [f"| {k + 1} | {n} | {u} | {m.replace('|', chr(92) + '|')} |"
+                for k, (n, u, m) in enumerate(rows)]  # fmt: skip
+        assert lines == want, tag

@@ -72,7 +72,7 @@ distance = 2.0e-6
 direction_deg = 120.0
 steps = 40
 """
-CLOSED = 'F_s = 1.0e6\nF_k = 0.6e6\nM = 0.5'
+CLOSED = "F_s = 1.0e6\nF_k = 0.6e6\nM = 0.5"
 CONE = "mu_s = 0.5\nmu_k = 0.3"
 
 

@@ -135,7 +135,7 @@ def step_points(
     if table.shape[0] not in (1, n) or dt.shape[0] not in (1, n):
         raise ParameterError("table", table.shape, f"1 or {n} rows, and dt 1 or {n} entries")
     c = np.ascontiguousarray
-    out = {
+    out: dict[str, np.ndarray] = {
         "traction": np.empty((n, 3)),
         "F": np.empty(n),
         "R": np.empty(n),
@@ -147,7 +147,7 @@ def step_points(
         "status": np.empty(n, dtype=np.int32),
         "iterations": np.empty(n, dtype=np.int32),
     }
-    opts = Options(**{k: options[k] for k, _ in Options._fields_})
+    opts = Options(**{field[0]: options[field[0]] for field in Options._fields_})
     lib.sl_step_points(
         n, c(traction, dtype=np.float64), c(F, dtype=np.float64), c(R, dtype=np.float64),
         c(gap, dtype=np.float64), c(slip, dtype=np.float64), c(dt, dtype=np.float64),
