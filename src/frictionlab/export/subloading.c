@@ -757,7 +757,7 @@ static void ratio_slope(double phi, double phi_w, double phi_fn, double w, doubl
 
 /* the straight trial path: fhat(s) = h + s e, f_n(s) = fn0 + s dfn */
 typedef struct {
-    double h1, h2, e1, e2, fn0, dfn, F_old;
+    double h1, h2, e1, e2, fn0, dfn, F_old, dt; /* F_old and dt: the path's start and span */
 } path_t;
 
 typedef struct {
@@ -772,9 +772,9 @@ static void path_ratio(double s, const path_t *P, const law_t *L, path_pt *o)
     double w = norm2(q1 / L->A1, q2 / L->A2);
     double phi, phi_w, phi_fn;
     potential(L->surface, L->tear_k, w, fns, &phi, &phi_w, &phi_fn);
-    double F = recovered_size(P->F_old, L->Fs, L->Fk, L->xi, L->m, L->n, s * L->dt, L->integ,
+    double F = recovered_size(P->F_old, L->Fs, L->Fk, L->xi, L->m, L->n, s * P->dt, L->integ,
                               L->rform);
-    double dF = path_size_slope(F, s, L->Fs, L->xi, L->n, L->dt, L->integ, L->rform);
+    double dF = path_size_slope(F, s, L->Fs, L->xi, L->n, P->dt, L->integ, L->rform);
     ratio_slope(phi, phi_w, phi_fn, w, q1, q2, P->e1, P->e2, P->dfn, L->A1, L->A2, F, dF,
                 &o->rho, &o->drho);
     o->F = F;
@@ -1093,7 +1093,7 @@ static int point(double dt, double ca, double sa, const double *p, double t1_old
                    pmax(-fn_tr / alpha_n, 0.0));
         return SL_OPEN;
     }
-    double et, f1t, f2t, h1, h2, fn0, hn1, hn2, en1, en2, f0n, dfnn, R_prev;
+    double et, f1t, f2t, h1, h2, fn0, hn1, hn2, en1, en2, f0n, dfnn, R_prev, F_path, dt_path;
     if (fn > 0.0) {
         et = alpha_t;
         f1t = f1 + alpha_t * du1;
@@ -1108,6 +1108,8 @@ static int point(double dt, double ca, double sa, const double *p, double t1_old
         f0n = 0.0;
         dfnn = alpha_n;
         R_prev = R_old;
+        F_path = F_old;
+        dt_path = dt;
     } else {
         /* re-closing: a virgin contact at the end-of-step normal traction */
         double s_c = dun > 0.0 ? gap_old / dun : 0.0;
@@ -1125,7 +1127,11 @@ static int point(double dt, double ca, double sa, const double *p, double t1_old
         en2 = alpha_t * du2 * ds_c;
         f0n = alpha_n;
         dfnn = 0.0;
-        R_prev = INFINITY;
+        /* no memory: the virgin ratio starts the path, never above the surface (R <= 1);
+         * the contact forms at the end of the step with the recovered size F_rec */
+        R_prev = 1.0;
+        F_path = F_rec;
+        dt_path = 0.0;
     }
     double fh1t = f1t - fn_tr * b1;
     double fh2t = f2t - fn_tr * b2;
@@ -1136,7 +1142,8 @@ static int point(double dt, double ca, double sa, const double *p, double t1_old
     P.e2 = fh2t - h2;
     P.fn0 = fn0;
     P.dfn = fn_tr - fn0;
-    P.F_old = F_old;
+    P.F_old = F_path;
+    P.dt = dt_path;
     double w_tr = norm2(fh1t / A1, fh2t / A2);
     double phi_tr, phi_tr_w, phi_tr_fn;
     potential(surface, tear_k, w_tr, fn_tr, &phi_tr, &phi_tr_w, &phi_tr_fn);
@@ -1148,11 +1155,11 @@ static int point(double dt, double ca, double sa, const double *p, double t1_old
     double w0 = norm2(h1 / A1, h2 / A2);
     double phi0, phi0_w, phi0_fn;
     potential(surface, tear_k, w0, fn0, &phi0, &phi0_w, &phi0_fn);
-    double dF0 = path_size_slope(F_old, 0.0, Fs, xi, n, dt, integ, rform);
+    double dF0 = path_size_slope(F_path, 0.0, Fs, xi, n, dt_path, integ, rform);
     double r_0, d_0, r_1, d_1;
-    ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, P.e1, P.e2, P.dfn, A1, A2, F_old, dF0, &r_0,
+    ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, P.e1, P.e2, P.dfn, A1, A2, F_path, dF0, &r_0,
                 &d_0);
-    double dF1 = path_size_slope(F_rec, 1.0, Fs, xi, n, dt, integ, rform);
+    double dF1 = path_size_slope(F_rec, 1.0, Fs, xi, n, dt_path, integ, rform);
     ratio_slope(phi_tr, phi_tr_w, phi_tr_fn, w_tr, fh1t, fh2t, P.e1, P.e2, P.dfn, A1, A2, F_rec,
                 dF1, &r_1, &d_1);
     double s_star = path_minimum(&P, &L, r_0, d_0, r_1, d_1);
@@ -1175,9 +1182,20 @@ static int point(double dt, double ca, double sa, const double *p, double t1_old
         q1 = pt.q1;
         q2 = pt.q2;
     }
+    /* a re-closing path starts at the virgin point of the end-of-step normal traction: its
+     * ratio rho(0) depends on du_n, and so does R_start when the minimum is at s* = 0 */
+    int reclosing_start = fn <= 0.0 && s_star == 0.0;
+    if (reclosing_start) {
+        F_s = F_path;
+        phis_w = phi0_w;
+        phis_fn = phi0_fn;
+        ws = w0;
+        q1 = h1;
+        q2 = h2;
+    }
     if (rho < R_start) {
         R_start = rho;
-        if (0.0 < s_star && s_star < 1.0) {
+        if ((0.0 < s_star && s_star < 1.0) || reclosing_start) {
             corrected = 1;
             double u1, u2;
             if (ws > 0.0) {
