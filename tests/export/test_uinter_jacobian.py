@@ -37,7 +37,7 @@ def _sample(surface: str, tmp_path: Path, rng: np.random.Generator) -> np.ndarra
     reclosing = np.concatenate([(c["gap"] > 0.0) for c in calls]) & (status != kernels.OPEN)
     picks = []
     for mask, count in ((status == kernels.SLIP, 12), (status == kernels.STICK, 4),
-                        (reclosing, 4)):  # fmt: skip
+                        (reclosing, 8)):  # fmt: skip
         idx = np.flatnonzero(mask)
         assert idx.size, "the programme must exercise every kind of point"
         picks.append(rng.choice(idx, size=min(count, idx.size), replace=False))
@@ -51,7 +51,9 @@ def test_uinter_jacobian_matches_richardson_central_differences(
     exe = build_uinter_harness(build_dir, fortran)
     base = _sample(surface, tmp_path, np.random.default_rng(7))
     du = base[:, 37:40]
-    h = 1e-3 * np.linalg.norm(du, axis=1)  # step per point: small against its increment
+    # step per point: small against its increment (or, at rest, against f_n/alpha_n)
+    h = 1e-3 * np.maximum(np.linalg.norm(du, axis=1), 1e-3 * base[:, 23] / base[:, 1])
+    assert np.all(h > 0.0)
     batch = [base]
     for scale in (1.0, 0.5):
         for j in range(3):
@@ -62,7 +64,7 @@ def test_uinter_jacobian_matches_richardson_central_differences(
     out = run_uinter(exe, np.concatenate(batch), tmp_path).reshape(len(batch), len(base), -1)
     status = out[:, :, 7]
     smooth = np.all(status == status[0], axis=0)  # no stick/slip switch within the steps
-    assert smooth.sum() >= 0.8 * len(base)
+    assert smooth.sum() >= 0.5 * len(base)
     worst = 0.0
     for i in np.flatnonzero(smooth):
         J = out[0, i, 11:20].reshape(3, 3, order="F")
@@ -73,8 +75,11 @@ def test_uinter_jacobian_matches_richardson_central_differences(
             d_h2 = (out[6 + k, i, :3] - out[6 + k + 1, i, :3]) / h[i]
             fd[:, j] = (4.0 * d_h2 - d_h) / 3.0
         err = np.abs(fd - J).max() / np.abs(J).max()
+        assert np.isfinite(err)
         worst = max(worst, err)
-    print(f"{surface}: {smooth.sum()} points, worst relative error {worst:.3g}")
+    reclosings = int(smooth[-8:].sum())  # the last picks are re-closing points
+    print(f"{surface}: {smooth.sum()} points ({reclosings} re-closing), worst {worst:.3g}")
+    assert reclosings >= 2
     assert worst <= 1e-6, f"worst relative error {worst:.3g}"
 
 
