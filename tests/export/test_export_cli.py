@@ -18,7 +18,7 @@ from .conftest import require
 
 BUNDLED = Path(frictionlab.__file__).parent / "data" / "scenarios"
 FILES = {"frictionlab_uinter.c", "props.csv", "statev.csv", "interaction_standard.inp",
-         "interaction_explicit.inp", "README.md"}  # fmt: skip
+         "interaction_explicit.inp", "README.md", "summary.json"}  # fmt: skip
 
 
 def _props(out: Path) -> dict[str, float]:
@@ -26,7 +26,7 @@ def _props(out: Path) -> dict[str, float]:
         return {row["name"]: float(row["value"]) for row in csv.DictReader(f)}
 
 
-def test_export_abaqus_writes_the_law_of_the_scenario(tmp_path: Path) -> None:
+def test_export_abaqus_writes_the_law_of_the_scenario(tmp_path: Path, check_summary) -> None:  # type: ignore[no-untyped-def]
     out = tmp_path / "abaqus"
     assert main(["export", "abaqus", str(BUNDLED / "orthotropy.toml"), "--out", str(out),
                  "--quiet"]) == 0  # fmt: skip
@@ -49,6 +49,8 @@ def test_export_abaqus_writes_the_law_of_the_scenario(tmp_path: Path) -> None:
     assert values == list(props.values())
     with (out / "statev.csv").open() as f:
         assert [row["name"] for row in csv.DictReader(f)] == [n for n, _, _ in abaqus.STATEV]
+    summary = check_summary(out / "summary.json")
+    assert summary["export"]["props"] == props
 
 
 def test_exported_source_compiles_alone(tmp_path: Path) -> None:

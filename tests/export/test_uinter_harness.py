@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import frictionlab
+from frictionlab.app.simulate import run_scenario
 from frictionlab.io.scenario import load_scenario
 from frictionlab.subloading import kernels
 
@@ -85,7 +86,7 @@ def _cases() -> list[tuple[str, str, list[str]]]:
 
 def _replay(scenario, build_dir: Path, fortran: str, work: Path) -> int:  # type: ignore[no-untyped-def]
     with recorded_calls() as calls:
-        history = scenario.run()
+        history = run_scenario(scenario)
     assert history.success
     exe = build_uinter_harness(build_dir, fortran)
     recs = records(calls, scenario.params)
@@ -139,7 +140,7 @@ def test_uinter_reproduces_separation_and_reclosing(
     path.write_text(text)
     scenario = load_scenario(path)
     with recorded_calls() as calls:
-        scenario.run()
+        run_scenario(scenario)
     opened = any((c["out_status"] == kernels.OPEN).any() for c in calls)
     reclosed = any(((c["gap"] > 0.0) & (c["out_status"] != kernels.OPEN)).any() for c in calls)
     assert opened and reclosed
@@ -154,7 +155,7 @@ def test_vuinter_block_equals_uinter_point_by_point(
     path.write_text(RECLOSING.format(surface="coulomb", sizes=CONE, fn=1.0e6))
     scenario = load_scenario(path)
     with recorded_calls() as calls:
-        scenario.run()
+        run_scenario(scenario)
     recs = records(calls, scenario.params)
     recs = recs[recs[:, 40] == recs[0, 40]]  # one time increment for the whole block
     uinter = run_uinter(build_uinter_harness(build_dir, fortran), recs, tmp_path)

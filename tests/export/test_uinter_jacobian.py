@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from frictionlab.app.simulate import run_scenario
 from frictionlab.io.scenario import load_scenario
 from frictionlab.subloading import kernels
 
@@ -31,7 +32,7 @@ def _sample(surface: str, tmp_path: Path, rng: np.random.Generator) -> np.ndarra
                                      fn=1.0e6 if cone else 3.0e5))  # fmt: skip
     scenario = load_scenario(path)
     with recorded_calls() as calls:
-        scenario.run()
+        run_scenario(scenario)
     recs = records(calls, scenario.params)
     status = np.concatenate([c["out_status"] for c in calls])
     reclosing = np.concatenate([(c["gap"] > 0.0) for c in calls]) & (status != kernels.OPEN)
