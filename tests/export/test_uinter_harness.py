@@ -169,3 +169,28 @@ def test_vuinter_block_equals_uinter_point_by_point(
     assert ok.sum() >= 50
     np.testing.assert_array_equal(block[ok, :11], uinter[ok, :11])
     np.testing.assert_array_equal(block[ok, 11], uinter[ok, 21])
+
+
+def test_uinter_first_call_sets_the_initial_state(
+    build_dir: Path, fortran: str, tmp_path: Path
+) -> None:
+    """STATEV all zero: F = F_initial, and the opening from RDISP(1) - DRDISP(1) < 0."""
+    from frictionlab.export.abaqus import props_vector
+    from frictionlab.subloading import ContactState, SubloadingParams, update
+
+    params = SubloadingParams(mu_s=0.5, mu_k=0.3, alpha_n=1e12, alpha_t=1e12, u=1e5,
+                              kappa=1e3, xi=1e-3, rotation=(0.05, 0.0))  # fmt: skip
+    gap, approach, slip = 1e-6, 1.5e-6, (2e-7, -1e-7)
+    rec = np.zeros(41)
+    rec[0] = 3.0
+    rec[1:23] = props_vector(params, F_initial=0.45)
+    rec[34] = approach - gap  # RDISP(1): the overclosure at the end of the increment
+    rec[37:40] = [approach, *slip]
+    rec[40] = 0.5
+    got = run_uinter(build_uinter_harness(build_dir, fortran), rec[None], tmp_path)[0]
+    start = ContactState(traction=np.zeros((1, 3)), F=np.array([0.45]), R=np.zeros(1),
+                         plastic_slip=np.zeros(1), gap=np.array([gap]), frame=np.eye(3)[None])  # fmt: skip
+    want = update(params, start, np.array([[*slip, approach]]), 0.5)
+    np.testing.assert_array_equal(got[[1, 2, 0]], want.traction[0])
+    assert (got[3], got[4], got[5], got[10]) == (want.state.F[0], want.state.R[0], 0.0, 1.0)
+    assert got[0] == pytest.approx(1e12 * (approach - gap), rel=1e-9)
