@@ -188,8 +188,10 @@ def test_uinter_first_call_sets_the_initial_state(
     rec[37:40] = [approach, *slip]
     rec[40] = 0.5
     got = run_uinter(build_uinter_harness(build_dir, fortran), rec[None], tmp_path)[0]
-    start = ContactState(traction=np.zeros((1, 3)), F=np.array([0.45]), R=np.zeros(1),
-                         plastic_slip=np.zeros(1), gap=np.array([gap]), frame=np.eye(3)[None])  # fmt: skip
+    start = ContactState(
+        traction=np.zeros((1, 3)), F=np.array([0.45]), R=np.zeros(1),
+        plastic_slip=np.zeros(1), gap=np.array([gap]), frame=np.eye(3)[None],
+    )  # fmt: skip
     want = update(params, start, np.array([[*slip, approach]]), 0.5)
     np.testing.assert_array_equal(got[[1, 2, 0]], want.traction[0])
     assert (got[3], got[4], got[5], got[10]) == (want.state.F[0], want.state.R[0], 0.0, 1.0)
