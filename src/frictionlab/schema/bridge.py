@@ -22,7 +22,7 @@ from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, pa
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, initial_state
 
-__all__ = ["BRIDGE", "BridgeOptions", "BridgeScenario", "load_bridge", "parse_bridge"]
+__all__ = ["BRIDGE_FILE", "BridgeOptions", "BridgeScenario", "load_bridge", "parse_bridge"]
 
 #: Roughness tables the bridge does not use (its polar is the single-level kinetic one).
 NOT_USED = ("output", "adhesion", "wear", "hierarchy")
@@ -58,7 +58,7 @@ OPTIONS = Section("bridge", (
     Field("check_tolerance", NUMBER, "|simulated - closed form| allowed in f_t/f_n", "",
           1.0e-6, low=0, open="low", allowed="a tolerance > 0"),
 ), "what is fitted and how the fit is checked", "[bridge]")  # fmt: skip
-BRIDGE = Section("bridge", (
+BRIDGE_FILE = Section("bridge", (
     *_TOP,
     Field("multiscale", table=MULTISCALE),
     Field("law", table=LAW, doc="the law to fit (one value per key, no fitted keys)"),
@@ -154,7 +154,7 @@ def parse_bridge(
 
 def load_bridge(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> BridgeScenario:
     """Read, override (``section.key=value``) and validate a bridge scenario."""
-    return load(BRIDGE, parse_bridge, path, overrides)
+    return load(BRIDGE_FILE, parse_bridge, path, overrides)
 
 
 def _options(data: Any) -> BridgeOptions:
