@@ -28,11 +28,11 @@ from frictionlab.calibration import (
     Profile,
 )
 from frictionlab.io.atomic import write_text_atomic
-from frictionlab.io.calibration_config import CalibrationConfig
 from frictionlab.io.config import format_toml
 from frictionlab.io.report import Report, Section, format_value
-from frictionlab.io.scenario import law_table
 from frictionlab.io.tables import write_csv_atomic
+from frictionlab.schema.calibrate import CalibrationConfig
+from frictionlab.schema.scenario import law_table
 
 __all__ = ["CALIBRATE", "CalibrationRun", "identifiability", "parameter_unit", "write_calibration"]
 
@@ -286,9 +286,9 @@ class Calibrate:
     aliases: tuple[str, ...] = ("fit.json",)
 
     def parse(self, args: argparse.Namespace, out: Path) -> tuple[CalibrationConfig, Path]:
-        from frictionlab.io.calibration_config import load_calibration
+        from frictionlab.schema.calibrate import load_calibrate
 
-        return load_calibration(args.config, args.set), Path(args.config)
+        return load_calibrate(args.config, args.set), Path(args.config)
 
     def run(self, job: Any, progress: ProgressFactory, staging: Path) -> CalibrationRun:
         from frictionlab.calibration import evaluate_columns, fit_law, profile_likelihood
