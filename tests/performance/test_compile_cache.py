@@ -103,10 +103,12 @@ def test_folder_without_lock_file_is_removed_only_when_old(tmp_path: Path) -> No
     assert _compile_cache.prune(tmp_path, keep="x") == [KEY_A]
 
 
-def test_import_prunes_stale_siblings(tmp_path: Path) -> None:
+def test_first_kernel_use_prunes_stale_siblings(tmp_path: Path) -> None:
+    """The set-up runs when the first kernel module is imported (import frictionlab
+    alone does not touch the cache: tests/performance/test_import.py)."""
     root = tmp_path / "frictionlab" / "numba"
     stale = _stale(root, KEY_A)
-    probe = "import frictionlab, numba.core.config as c; print(c.CACHE_DIR)"
+    probe = "import frictionlab._jit, numba.core.config as c; print(c.CACHE_DIR)"
     used = Path(_run({"XDG_CACHE_HOME": str(tmp_path), "FRICTIONLAB_CACHE_DIR": ""}, probe))
     assert used.parent == root and used.exists() and not stale.exists()
     assert (used / _compile_cache.LOCK_NAME).exists()
