@@ -13,10 +13,12 @@ $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e ".[dev]"
+	$(BIN)/frictionlab warmup --quiet
 	touch $(STAMP)
 
 demo: $(STAMP)
 	$(BIN)/python -c "import skfem" 2>/dev/null || $(BIN)/python -m pip install --quiet -e ".[fem]"
+	$(BIN)/frictionlab warmup --quiet
 	$(BIN)/frictionlab demo --out $(OUT)
 
 # The whole test suite: lint, type check, the docs site (strict), then every test.

@@ -25,6 +25,7 @@ COMMANDS: tuple[str, ...] = (
     "sweep",
     "example",
     "bench",
+    "warmup",
 )
 
 EXIT_BAD_INPUT = 2

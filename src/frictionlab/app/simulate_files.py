@@ -38,7 +38,7 @@ from frictionlab.driver.table import (
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import atomic_path
 from frictionlab.io.scenario import OutputOptions, Scenario
-from frictionlab.io.tables import format_csv, write_csv_atomic
+from frictionlab.io.tables import format_csv_bytes, write_csv_atomic
 
 __all__ = [
     "HISTORY_UNITS",
@@ -103,10 +103,12 @@ def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict
 def _write_csv_blocks(path: Path, cols: dict[str, np.ndarray], units: dict[str, str]) -> Path:
     """Like ``write_csv_atomic``, formatting CSV_BLOCK lines at a time (bounded memory)."""
     n = len(next(iter(cols.values())))
-    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="") as handle:
+    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
         for start in range(0, max(n, 1), CSV_BLOCK):
-            text = format_csv({k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units)
-            handle.write(text if start == 0 else text[text.index("\n") + 1 :])
+            text = format_csv_bytes(
+                {k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units
+            )
+            handle.write(text if start == 0 else text[text.index(b"\n") + 1 :])
     return path
 
 
@@ -126,7 +128,7 @@ class HistoryStream:
         self.extra = tuple(extra or ())
         self.units.update(extra or {})
         self.rows = 0
-        self._file = open(self.path, "w", encoding="utf-8", newline="")  # noqa: SIM115
+        self._file = open(self.path, "wb")  # noqa: SIM115
 
     def __call__(self, chunk: dict[str, np.ndarray]) -> None:
         rows, m = chunk["time"].shape
@@ -137,9 +139,9 @@ class HistoryStream:
 
     def _write(self, chunk: dict[str, np.ndarray]) -> None:
         cols = chunk_columns(chunk, self.extra)
-        text = format_csv(cols, self.units)
+        text = format_csv_bytes(cols, self.units)
         if self.rows:
-            text = text[text.index("\n") + 1 :]
+            text = text[text.index(b"\n") + 1 :]
         self._file.write(text)
         self.rows += len(cols["step"])
 
