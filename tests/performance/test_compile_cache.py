@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 import frictionlab
 from frictionlab import _compile_cache
 
@@ -33,6 +35,7 @@ def test_cache_is_written_under_the_user_cache_keyed_on_the_sources(tmp_path: Pa
     assert list(used.rglob("*g_value*.nbi"))  # the compiled function was cached there
 
 
+@pytest.mark.slow
 def test_unwritable_location_falls_back_and_user_setting_is_respected(tmp_path: Path) -> None:
     blocked = tmp_path / "file"
     blocked.write_text("not a directory")
