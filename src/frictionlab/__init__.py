@@ -48,6 +48,7 @@ _LAZY: dict[str, str] = {
     "History": "frictionlab.driver",
     "simulate": "frictionlab.driver",
     "simulate_spring_slider": "frictionlab.driver",
+    "DriverSettings": "frictionlab.driver",
     # scenario files
     "load_scenario": "frictionlab.io.scenario",
     "run_scenario": "frictionlab.app.simulate",
@@ -63,6 +64,7 @@ _LAZY: dict[str, str] = {
     "Block": "frictionlab.contact",
     "NormalLoad": "frictionlab.contact",
     "run_contact": "frictionlab.contact",
+    "SolverSettings": "frictionlab.contact",
 }
 
 __all__ = [
@@ -71,6 +73,7 @@ __all__ = [
     "ConvergenceError",
     "Curve",
     "Cycle",
+    "DriverSettings",
     "FrictionPolar",
     "FrictionlabError",
     "History",
@@ -84,6 +87,7 @@ __all__ = [
     "Program",
     "Reverse",
     "Slide",
+    "SolverSettings",
     "SpringSlider",
     "StepResult",
     "SubloadingParams",
@@ -109,9 +113,10 @@ if TYPE_CHECKING:  # for type checkers and IDEs; at run time these come from __g
     from frictionlab.app.simulate import run_scenario
     from frictionlab.bridge import fit_anisotropy, fitted_law
     from frictionlab.calibration import Curve, fit_law
-    from frictionlab.contact import Block, NormalLoad, run_contact
+    from frictionlab.contact import Block, NormalLoad, SolverSettings, run_contact
     from frictionlab.driver import (
         Cycle,
+        DriverSettings,
         History,
         Hold,
         InitialConditions,

@@ -155,7 +155,7 @@ def run_contact_scenario(
 
     return run_contact(
         scenario.block, scenario.params, scenario.normal, scenario.program,
-        options=scenario.options, drive=scenario.drive, progress=progress,
+        settings=scenario.options, drive=scenario.drive, progress=progress,
     )  # fmt: skip
 
 
