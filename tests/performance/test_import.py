@@ -81,3 +81,15 @@ def test_all_lists_the_errors_and_every_lazy_name() -> None:
     eager = {"ConvergenceError", "FrictionlabError", "InputError", "ParameterError",
              "ValidityError", "__version__"}  # fmt: skip
     assert set(frictionlab.__all__) == eager | set(frictionlab._LAZY)
+
+
+def test_the_interpreted_kernels_stay_plain_python() -> None:
+    """Kernel modules import njit from frictionlab._jit; the interpreted reference must
+    still replace it (else both sides of the kernel-agreement tests are compiled)."""
+    import types
+
+    from frictionlab.subloading import interpreted
+
+    namespace = interpreted.load()
+    assert isinstance(namespace["_point"], types.FunctionType)
+    assert isinstance(namespace["step_points"], types.FunctionType)
