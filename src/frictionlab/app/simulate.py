@@ -17,7 +17,7 @@ from typing import Any
 from frictionlab._progress import ProgressFactory
 from frictionlab.app import simulate_files as files
 from frictionlab.app.outputs import write_outputs
-from frictionlab.driver import History, simulate, simulate_spring_slider
+from frictionlab.driver import DriverSettings, History, simulate, simulate_spring_slider
 from frictionlab.driver.healing import Healing, healing_analysis
 from frictionlab.driver.recorder import RowSink
 from frictionlab.driver.simulate import ProgressCallback
@@ -42,18 +42,19 @@ def run_scenario(
     history is written).
     """
     opts = scenario.run_options
+    settings = DriverSettings(accuracy=opts.accuracy, max_halvings=opts.max_halvings)
     if scenario.program is not None:
         return simulate(
             scenario.params, scenario.program, scenario.initial, n_points=scenario.n_points,
-            accuracy=opts.accuracy, max_halvings=opts.max_halvings, progress=progress,
+            settings=settings, progress=progress,
             recording=scenario.output.recording(sink, keep_rows, keep_points),
         )  # fmt: skip
     assert scenario.machine is not None
     m = scenario.machine
     return simulate_spring_slider(
         scenario.params, m.machine, m.duration, steps=m.steps, max_step=m.max_step,
-        initial=scenario.initial, n_points=scenario.n_points, accuracy=opts.accuracy,
-        max_halvings=opts.max_halvings, progress=progress,
+        initial=scenario.initial, n_points=scenario.n_points, settings=settings,
+        progress=progress,
     )  # fmt: skip
 
 

@@ -25,7 +25,7 @@ from frictionlab.contact.newton import newton_step
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import ContactState, SubloadingParams, check_snap_back
 
-__all__ = ["DRIVES", "SolverOptions", "run_contact"]
+__all__ = ["DRIVES", "SolverOptions", "SolverSettings", "run_contact"]
 
 #: How the tangential displacement is imposed: on the top edge (default), or on every
 #: node (a rigidly translated block: a verification case that isolates the interface).
@@ -172,16 +172,22 @@ class _Recorder:
         )
 
 
+#: Newton and step control, the ``settings=`` of :func:`run_contact` (one name for solver
+#: settings across frictionlab); :class:`SolverOptions` is the same class.
+SolverSettings = SolverOptions
+
+
 def run_contact(
     block: Block,
     params: SubloadingParams,
     normal: NormalLoad,
     program: Sequence[Segment],
     *,
-    options: SolverOptions | None = None,
+    settings: SolverOptions | None = None,
     drive: str = "top",
     progress: ProgressCallback | None = None,
     discretisation: Discretisation | None = None,
+    options: SolverOptions | None = None,
 ) -> ContactHistory:
     """Press the block on the base, then run the tangential programme.
 
@@ -191,8 +197,9 @@ def run_contact(
         The elastic block and the interface law (shared by all contact points).
     normal, program:
         The normal phase and the tangential segments (:mod:`~frictionlab.contact.loading`).
-    options:
-        Newton and step control (:class:`SolverOptions`).
+    settings:
+        Newton and step control (:class:`SolverSettings`, also named
+        :class:`SolverOptions`); ``options=`` is its deprecated name (one release).
     drive:
         ``"top"`` (default) or ``"rigid"`` (every node moved along x; displacement
         control only) — see :data:`DRIVES`.
@@ -207,6 +214,17 @@ def run_contact(
     ContactHistory
         ``success`` False with a ``message`` when a step failed; the rows before it kept.
     """
+    if options is not None:
+        if settings is not None:
+            raise ParameterError("options", options, "settings= alone (options= is its old name)")
+        import warnings
+
+        warnings.warn(
+            "run_contact(options=) is deprecated: pass settings=SolverSettings(...)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+    options = settings if settings is not None else options
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # pragma: no cover - part of the extra `fem`; only slower without
