@@ -128,9 +128,9 @@ class LatticeSettings:
         Samples per relative period along beta (a return path crossing the cell m times
         along x and n times along y gets ``time_samples * max(|m|, |n|)``). For the
         ergodic average: about ``time_samples`` relative shifts on a grid of
-        ``ceil(sqrt(time_samples))`` per axis, raised to a divisor of the station count
-        within a factor 2 when one exists. Shifts by whole station spacings reuse the
-        upper surface evaluated once (choose counts that divide the stations for speed).
+        ``sqrt(time_samples)`` per axis, rounded to the nearest divisor of the station
+        count within a factor 2 (else raised to the next integer). Shifts by whole
+        station spacings reuse the upper surface evaluated once.
     travel:
         ``"auto"`` (default): ``"return"`` where beta is commensurate with the cell within
         ``max_return_periods``, else ``"ergodic"``. ``"return"``: one exact relative period
@@ -166,6 +166,14 @@ class LatticeSettings:
         cover one relative period uniformly). ``False``: exactly ``time_samples``.
     engine:
         ``"numba"`` (default, compiled kernels) or ``"numpy"`` (reference twin).
+    shift_invariance:
+        ``True`` (default): when either surface is flat every relative shift is the same
+        configuration (a translation of the rough surface over the periodic cell), so
+        each direction takes one time sample at the start phase (travel mode
+        ``"invariant"``). Equal to the time-sampled average to rounding when the samples
+        are whole-station shifts (the default snapping); otherwise it differs from it
+        only by the interpolation error of the shifted samples. ``False``: sample the
+        path anyway.
     """
 
     load: float | str = "full"
@@ -184,6 +192,7 @@ class LatticeSettings:
     engine: str = "numba"
     full_contact: str = "average"
     snap_time_samples: bool = True
+    shift_invariance: bool = True
 
     def __post_init__(self) -> None:
         if self.control not in CONTROLS:
@@ -261,6 +270,8 @@ class LatticeSettings:
             )
         if not isinstance(self.snap_time_samples, bool):
             raise ParameterError("snap_time_samples", self.snap_time_samples, "true or false")
+        if not isinstance(self.shift_invariance, bool):
+            raise ParameterError("shift_invariance", self.shift_invariance, "true or false")
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready dictionary of the settings."""
@@ -600,7 +611,7 @@ def _sliding_path(geometry: LatticeGeometry, beta_deg: float, settings: LatticeS
                 f"vector (m Lx, n Ly) with |m|, |n| <= {settings.max_return_periods}; use "
                 "travel='ergodic' or a travel length",
             )
-    target = math.ceil(math.sqrt(nt))
+    target = math.sqrt(nt)
     na = _ergodic_count(target, geometry.shape[0])
     nb = _ergodic_count(target, geometry.shape[1])
     a, b = np.meshgrid(np.arange(na) / na, np.arange(nb) / nb, indexing="ij")
@@ -629,13 +640,16 @@ def snap_count(count: int, stations: int) -> int:
 _snap = snap_count
 
 
-def _ergodic_count(target: int, stations: int) -> int:
-    """Shifts per axis of the ergodic grid: ``target``, raised to a divisor of the station
-    count when one lies in [target, 2 target] (whole-station shifts need no re-evaluation)."""
-    for d in range(target, 2 * target + 1):
-        if stations % d == 0:
-            return d
-    return target
+def _ergodic_count(target: float, stations: int) -> int:
+    """Shifts per axis of the ergodic grid: the divisor of the station count nearest to
+    ``target`` (ratio scale) within a factor 2, so every shift is whole stations and the
+    upper surface is read rolled, not re-evaluated; ``ceil(target)`` when there is none."""
+    best, best_err = math.ceil(target), math.inf
+    for d in range(max(1, math.ceil(target / 2.0)), math.floor(2.0 * target) + 1):
+        err = abs(math.log(d / target))
+        if stations % d == 0 and err < best_err - 1e-12:
+            best, best_err = d, err
+    return best
 
 
 def _check_mu0(mu0: Any) -> float:
@@ -792,6 +806,7 @@ class _Lattice:
     spacing: tuple[float, float]
     mode: int
     load: float
+    invariant: bool = False
 
 
 @dataclass(frozen=True)
@@ -901,6 +916,7 @@ def _prepare(lower: Surface, upper: Surface, settings: LatticeSettings) -> _Latt
         spacing=(lx / nx, (ly / ny) if ly is not None else math.inf),
         mode=mode,
         load=settings.load if isinstance(settings.load, float) else 0.0,
+        invariant=settings.shift_invariance and (lower.is_flat or upper.is_flat),
     )
 
 
@@ -913,7 +929,10 @@ def _direction(
     settings: LatticeSettings,
 ) -> _Direction:
     """Time average over the sliding path of one direction (Eqs 5-9 and 21-22, time-averaged)."""
-    path = _sliding_path(lat.geometry, beta, settings)
+    if lat.invariant:  # a flat face: every shift is the same configuration
+        path = _Path(np.array([settings.phase], dtype=np.float64), "invariant", None)
+    else:
+        path = _sliding_path(lat.geometry, beta, settings)
     results = _samples(lat, upper, mu0, beta, path.shifts, settings)
     n_st = lat.geometry.n_stations
     f_sum = x_sum = y_sum = f_tot = 0.0
