@@ -386,7 +386,8 @@ class FrictionPolar:
     the time samples (``*_min``/``*_max``: extreme sample; ``*_mean``: average over the
     period); contact is 1 in full contact. ``invalid_fraction`` is the fraction of all
     2 N contacts violating Eq 1 that ``on_invalid="drop"`` left out (time-averaged; 0
-    for the other modes, where such a direction raises or is masked).
+    for the other modes, where such a direction raises or is masked). ``notes``: sentences
+    for the user (a numeric load that compresses every spring at every sample says so).
 
     Forces are time averages per spring (N; both families, ``2 N_stations`` springs):
     ``force_x``, ``force_y`` are the resisting force R^(c) of the compressed springs
@@ -426,6 +427,7 @@ class FrictionPolar:
     success: bool
     message: str
     invalid_messages: tuple[str, ...] = field(default=())
+    notes: tuple[str, ...] = field(default=())
 
     @property
     def mu_over_mu0(self) -> FloatArray:
@@ -520,6 +522,7 @@ def merge_polars(first: FrictionPolar, *others: FrictionPolar) -> FrictionPolar:
             merged[f.name] = tuple(values[i] for i in order)
     merged["spring_evaluations"] = sum(p.spring_evaluations for p in polars)
     merged["invalid_messages"] = tuple(m for p in polars for m in p.invalid_messages)
+    merged["notes"] = tuple(dict.fromkeys(n for p in polars for n in p.notes))
     merged["success"] = all(p.success for p in polars)
     bad = int(np.count_nonzero(~merged["valid"]))
     merged["message"] = (
@@ -730,6 +733,13 @@ def friction_polar(
     mu_proj = mu_x * cos_b + mu_y * sin_b
     messages = tuple(r.invalid for r in results if r.invalid is not None)
     n_bad = len(messages)
+    notes: tuple[str, ...] = ()
+    if lattice.mode == _kernels.MODE_LOAD and all(r.contact_min == 1.0 for r in results):
+        notes = (
+            f"load = {settings.load:g} N per spring compresses every spring at every time "
+            "sample (full contact): mu differs from the limit load = 'full' only through "
+            "the unequal spring forces; load = 'full' computes that limit in one pass",
+        )
     return FrictionPolar(
         beta_deg=readonly(betas, None),
         mu_x=readonly(mu_x, None),
@@ -763,6 +773,7 @@ def friction_polar(
         success=n_bad == 0,
         message="ok" if n_bad == 0 else f"{n_bad} of {betas.size} directions violate Eq 1's bound",
         invalid_messages=messages,
+        notes=notes,
     )
 
 

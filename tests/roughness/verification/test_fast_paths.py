@@ -53,3 +53,18 @@ def test_ergodic_grid_rounds_to_a_divisor(samples: int, stations: int, expected:
     assert count == expected
     if stations % expected == 0:
         assert stations % count == 0
+
+
+def test_a_load_giving_full_contact_says_so(rough) -> None:
+    """Every spring compressed: a note, one sample on a flat face, and the limit of a
+    large load is the full-contact average (forces equal to first order in heights/L)."""
+    h = np.asarray(rough.heights)
+    span = float(h.max() - h.min())  # k_c = 1: this load compresses every spring
+    betas = [0.0, 45.0, 90.0]
+    big = friction_polar(rough, flat(), 0.2, betas, load=1e4 * span)
+    assert np.all(big.contact_fraction_min == 1.0) and np.all(big.time_samples == 1)
+    assert big.notes and "full contact" in big.notes[0] and "load = 'full'" in big.notes[0]
+    full = friction_polar(rough, flat(), 0.2, betas, load="full")
+    np.testing.assert_allclose(big.mu, full.mu, rtol=1e-3)
+    partial = friction_polar(rough, flat(), 0.2, betas, load=1e-3 * span)
+    assert partial.notes == () and partial.contact_fraction_min.max() < 1.0
