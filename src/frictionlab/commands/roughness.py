@@ -130,6 +130,8 @@ def run(args: argparse.Namespace) -> int:
     if not quiet:
         for text in scenario.warnings:
             print(f"frictionlab roughness: warning: {text}", file=sys.stderr)
+    if scenario.contact is not None:
+        return _run_elastic(scenario, scenario_path, data, out_dir, args, quiet, plots)
     # the output set (and its lock) is held for the whole run, as simulate does: two runs
     # on one --out cannot interleave
     with output_set(out_dir, args.overwrite) as oset:
@@ -148,6 +150,9 @@ def run(args: argparse.Namespace) -> int:
                         "spring compressed (sweeps through zero and tension belong in [adhesion])"
                     )
                 plot_polar = _full_circle(scenario, polar, progress) if plots else polar
+            if not quiet:
+                for text in polar.notes:
+                    print(f"frictionlab roughness: note: {text}", file=sys.stderr)
             extensions = _extensions(scenario)
         except ValidityError as exc:
             # Full contact fails in its one pass over all directions, partial contact at the
@@ -158,6 +163,7 @@ def run(args: argparse.Namespace) -> int:
         files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, polar, scenario_path)}
         files.update(_extension_files(scenario, extensions, scenario_path, plots))
         summary = _summary(scenario, polar, plot_polar, scenario_path, seconds)
+        summary["warnings"] = [*summary["warnings"], *polar.notes]
         summary.update(_extension_summary(scenario, extensions))
         extra = sorted(name for name in files if name != "polar.csv")
         summary["files"] = ["polar.csv", "summary.json", *(["polar.png"] if plots else []), *extra]
@@ -578,5 +584,128 @@ def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:
         scenario.upper,
         requested=scenario.beta_deg,
         title=scenario.title or None,
+    )
+    return figure_png_bytes(fig)
+
+
+def _run_elastic(
+    scenario: RoughnessScenario,
+    scenario_path: Path,
+    data: dict[str, Any],
+    out_dir: Path,
+    args: argparse.Namespace,
+    quiet: bool,
+    plots: bool,
+) -> int:
+    """``[contact] model = "elastic"``: the BEM load distribution (roughness.elastic).
+
+    One solve gives every direction, so the full circle of the plot costs nothing extra.
+    Writes polar.csv, summary.json (with ``contact``), polar.png and pressure_map.png.
+    """
+    from frictionlab.roughness.elastic import elastic_polar
+
+    settings = scenario.contact
+    assert settings is not None
+    if scenario.adhesion or scenario.wear or scenario.hierarchy or scenario.multiscale:
+        raise InputError(
+            "[contact] model = 'elastic' is invalid with [adhesion], [wear], [hierarchy] or "
+            "[multiscale]: allowed only with the lattice model (model = 'lattice')"
+        )
+    circle = np.arange(0.0, 360.0 - 1e-9, scenario.plot_step_deg) if plots else np.empty(0)
+    requested = np.asarray(scenario.beta_deg, dtype=np.float64)
+    extra = circle[~np.isin(np.round(circle, 9), np.round(np.mod(requested, 360.0), 9))]
+    with output_set(out_dir, args.overwrite) as oset:
+        started = time.perf_counter()
+        with progress_bar(f"roughness {scenario_path.name}", enabled=not quiet) as progress:
+            whole = elastic_polar(
+                scenario.lower, scenario.upper, scenario.mu0,
+                np.concatenate([requested, extra]), settings=settings, progress=progress,
+            )  # fmt: skip
+        seconds = time.perf_counter() - started
+        n = requested.size
+        columns = {k: v[:n] for k, v in whole.columns().items()}
+        header = (
+            f"frictionlab {__version__} roughness: {scenario.title or scenario_path.name}\n"
+            f"lower = {scenario.lower.kind}, upper = {scenario.upper.kind}, mu0 = "
+            f"{scenario.mu0:g}, mu = {settings.mu_definition}, elastic contact: pressure = "
+            f"{settings.pressure:g} Pa, E* = {settings.modulus:g} Pa\n"
+            f"grid = {list(whole.geometry.shape)}, contact fraction "
+            f"{whole.contact_fraction_mean:.6g} in columns contact_fraction_*"
+        )
+        files: dict[str, str | bytes] = {
+            "polar.csv": format_csv(columns, {"beta_deg": "deg"}, header)
+        }
+        mu = whole.mu[:n]
+        ratio = mu / scenario.mu0
+        summary: dict[str, Any] = {
+            "frictionlab_version": __version__,
+            "command": "roughness",
+            "scenario_file": str(scenario_path),
+            "title": scenario.title,
+            "mu0": scenario.mu0,
+            "mu_definition": settings.mu_definition,
+            "lower": scenario.lower.describe(),
+            "upper": scenario.upper.describe(),
+            "sources": scenario.sources,
+            "warnings": list(scenario.warnings),
+            "contact": {**whole.summary(), "settings": settings.as_dict()},
+            "results": {
+                "mu_min": float(np.nanmin(mu)),
+                "mu_max": float(np.nanmax(mu)),
+                "mu_over_mu0_min": float(np.nanmin(ratio)),
+                "mu_over_mu0_max": float(np.nanmax(ratio)),
+                "directions_deg": requested.tolist(),
+                "invalid_fraction": whole.invalid_fraction[:n].tolist(),
+            },
+            "work": {"seconds": round(seconds, 3), "plot_directions": int(whole.beta_deg.size)},
+        }
+        names = ["polar.csv", "summary.json"]
+        if plots:
+            files["polar.png"] = _png(scenario, whole)  # type: ignore[arg-type]
+            files["pressure_map.png"] = _pressure_png(whole)
+            names += ["polar.png", "pressure_map.png"]
+        summary["files"] = names
+        summary = stamp(summary, names, _input_files(scenario_path, data))
+        for name, content in files.items():
+            if isinstance(content, bytes):
+                write_bytes_atomic(oset.staging / name, content)
+            else:
+                write_text_atomic(oset.staging / name, content)
+        write_json_atomic(oset.staging / "summary.json", summary)
+    if not quiet:
+        print(
+            f"frictionlab roughness: elastic contact, {n} directions in {seconds:.3g} s, "
+            f"contact fraction {whole.contact_fraction_mean:.4g}, mu/mu0 from "
+            f"{np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; wrote "
+            + ", ".join(str(out_dir / name) for name in names)
+        )
+    return 0
+
+
+def _pressure_png(polar: Any) -> bytes:
+    """The contact pressure of the first shift (a map, or a profile's line)."""
+    from frictionlab.plotting.roughness import figure_png_bytes, new_figure
+
+    fig = new_figure(5.5, 4.5)
+    ax = fig.add_subplot()
+    state = polar.states[0]
+    cell = [c for c in polar.geometry.cell if c is not None]
+    if state.pressure.ndim == 2 and polar.geometry.dimension == 2:
+        image = ax.imshow(
+            state.pressure.T / 1e6, origin="lower", cmap="magma",
+            extent=(0.0, cell[0] * 1e6, 0.0, cell[1] * 1e6),
+        )  # fmt: skip
+        fig.colorbar(image, ax=ax, label="contact pressure [MPa]")
+        ax.set_ylabel("y [um]")
+    else:
+        p = np.ravel(state.pressure)
+        x = (np.arange(p.size) + 0.5) * cell[0] / p.size
+        ax.plot(x * 1e6, p / 1e6, lw=1.0)
+        ax.set_ylabel("contact pressure [MPa]")
+    ax.set_xlabel("x [um]")
+    ax.set_title(
+        f"elastic contact: {polar.settings.pressure:g} Pa nominal, "
+        f"{100 * polar.contact_fraction_mean:.3g} % in contact",
+        fontsize=9,
     )
     return figure_png_bytes(fig)

@@ -17,6 +17,7 @@ Layout (every unknown key is an error; docs/bridge.md has every key with its def
     fit = ["orthotropy", "rotation"]
     step_deg = 10.0               # full-circle grid of the polar (deg)
     tolerance = 0.02              # relative rms misfit still called expressible
+    anisotropy_tolerance = 0.1    # share of the anisotropy left unexplained (docs/bridge.md)
     normal_traction = 1.0         # Pa: f_n of the fitted scenario (closed surfaces: < F_k)
     velocity = 1.0e-3             # m/s: steady-sliding check and fitted scenario
     distance = 1.0                # m: slide length (default: 25 relaxation lengths)
@@ -46,7 +47,7 @@ from frictionlab.subloading import SubloadingParams, initial_state
 __all__ = ["BridgeOptions", "BridgeScenario", "parse_bridge_scenario"]
 
 #: Roughness tables the bridge does not use (its polar is the single-level kinetic one).
-_NOT_USED = ("output", "adhesion", "wear", "hierarchy")
+_NOT_USED = ("output", "adhesion", "wear", "hierarchy", "contact")
 #: [law] keys that a fitted group replaces.
 _FITTED_KEYS = {
     "rotation": ("rotation",),
@@ -67,6 +68,7 @@ class BridgeOptions:
     distance: float | None = None
     steps: int = 400
     check_tolerance: float = 1.0e-6
+    anisotropy_tolerance: float = 0.1
 
 
 @dataclass(frozen=True)
@@ -162,8 +164,14 @@ def _options(t: Table) -> BridgeOptions:
     check = t.get(
         "check_tolerance", float, 1.0e-6, check=lambda v: v > 0.0, allowed="a tolerance > 0"
     )
+    anisotropy = t.get(
+        "anisotropy_tolerance", float, 0.1, check=lambda v: 0.0 < v < 1.0,
+        allowed="0 < anisotropy_tolerance < 1 (share of the anisotropy unexplained)",
+    )  # fmt: skip
     t.finish()
-    return BridgeOptions(scale, tuple(fit), step, tolerance, fn, velocity, distance, steps, check)
+    return BridgeOptions(
+        scale, tuple(fit), step, tolerance, fn, velocity, distance, steps, check, anisotropy
+    )
 
 
 def _divides_circle(step: float) -> bool:

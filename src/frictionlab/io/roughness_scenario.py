@@ -92,6 +92,7 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.budget import check_grid_size
 from frictionlab.io.config import Table
 from frictionlab.roughness import generators
+from frictionlab.roughness.elastic import ElasticSettings
 from frictionlab.roughness.hierarchy import (
     MU_PASSED,
     ON_INVALID,
@@ -188,6 +189,7 @@ class RoughnessScenario:
     sources: dict[str, dict[str, Any]] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
     multiscale: MultiscaleOptions | None = None
+    contact: ElasticSettings | None = None
 
 
 def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessScenario:
@@ -252,8 +254,9 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
             options["engine"] = lattice.get("engine", str, choices=ENGINES)
         if "full_contact" in lattice:
             options["full_contact"] = lattice.get("full_contact", str, choices=FULL_CONTACT_METHODS)
-        if "snap_time_samples" in lattice:
-            options["snap_time_samples"] = lattice.get("snap_time_samples", bool)
+        for key in ("snap_time_samples", "shift_invariance"):
+            if key in lattice:
+                options[key] = lattice.get(key, bool)
         lattice.finish(allowed=_LATTICE_KEYS)
     try:
         settings = LatticeSettings(**options)
@@ -282,6 +285,8 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
     multiscale = None
     if multiscale_table is not None:
         multiscale = _multiscale(multiscale_table, lower, upper, betas)
+    contact_table = top.table("contact")
+    contact = None if contact_table is None else _contact(contact_table, settings)
     top.finish()
     try:  # the station count is checked against the surfaces now, not mid-computation
         lattice_geometry(lower, upper, settings.stations)
@@ -303,18 +308,60 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         sources={k: v for k, v in notes.items() if k in ("lower", "upper")},
         warnings=tuple(notes.get("warnings", ())),
         multiscale=multiscale,
+        contact=contact,
     )
+
+
+CONTACT_MODELS = ("lattice", "elastic")
+
+
+def _contact(table: Table, settings: LatticeSettings) -> ElasticSettings | None:
+    """The ``[contact]`` table: ``model = "elastic"`` gives the BEM settings, ``"lattice"``
+    (the default) None. One model and one pressure (sweeps: the Python API)."""
+    raw = table.raw("model", "lattice")
+    if isinstance(raw, list):
+        raise InputError(
+            f"{table.where}.model = {raw} is invalid: allowed one of {CONTACT_MODELS} here "
+            "(both at once: frictionlab.roughness.elastic_polar and friction_polar)"
+        )
+    model = table.get("model", str, "lattice", choices=CONTACT_MODELS)
+    if model == "lattice":
+        given = [k for k in ("pressure", "modulus", "hardness") if k in table]
+        if given:
+            raise InputError(
+                f"{table.where}.{given[0]} is invalid with model = 'lattice': allowed only with "
+                "model = 'elastic' (the lattice's load is [sliding].load, N per spring)"
+            )
+        table.finish(allowed=("pressure", "modulus", "hardness"))
+        return None
+    if isinstance(table.raw("pressure", None), list):
+        raise InputError(
+            f"{table.where}.pressure is a list: allowed one pressure in Pa here (a sweep: "
+            "frictionlab.roughness.pressure_sweep)"
+        )
+    pressure = table.get("pressure", float, check=lambda v: v > 0.0, allowed="> 0 Pa")
+    modulus = table.get("modulus", float, check=lambda v: v > 0.0, allowed="E* > 0 Pa")
+    hardness = table.get("hardness", float, None, check=lambda v: v > 0.0, allowed="> 0 Pa")
+    table.finish(allowed=("hardness",))
+    try:
+        return ElasticSettings(
+            pressure=pressure, modulus=modulus, hardness=hardness, stations=settings.stations,
+            mu_definition=settings.mu_definition,
+            on_invalid="raise" if settings.on_invalid == "raise" else "drop",
+        )  # fmt: skip
+    except ParameterError as exc:
+        raise InputError(f"{table.where}.{exc}") from None
 
 
 #: Every key of [lattice] (listed when an unknown one is given).
 #: Optional keys of a surface table that are read only when given, by kind.
 _OPTIONAL_SURFACE_KEYS = {
     "self_affine": ("rms_height", "rms_slope", "short_cutoff", "long_cutoff"),
-    "file": ("short_cutoff", "long_cutoff"),
+    "file": ("short_cutoff", "long_cutoff", "allow_flattening", "resample"),
 }
 _LATTICE_KEYS = (
     "stations", "time_samples", "max_return_periods", "k_c", "k_t", "travel",
-    "mu_definition", "engine", "full_contact", "snap_time_samples",
+    "mu_definition", "engine", "full_contact", "snap_time_samples", "shift_invariance",
 )  # fmt: skip
 
 
@@ -580,6 +627,13 @@ def _build(kind: str, table: Table, base_dir: Path, info: dict[str, Any]) -> Sur
     window = table.get("window", str, None)
     short = _positive(table, "short_cutoff") if "short_cutoff" in table else None
     long = _positive(table, "long_cutoff") if "long_cutoff" in table else None
+    flattening = table.get("allow_flattening", bool, False)
+    resample: str | int | None = None
+    if "resample" in table:
+        raw = table.raw("resample")
+        resample = (
+            table.get("resample", str) if isinstance(raw, str) else table.get("resample", int)
+        )
     if sizes is not None and any(not (v > 0.0 and math.isfinite(v)) for v in sizes):
         raise InputError(
             f"{table.where}.physical_sizes = {sizes} is invalid: allowed sizes > 0 in `unit`"
@@ -598,6 +652,8 @@ def _build(kind: str, table: Table, base_dir: Path, info: dict[str, Any]) -> Sur
         window=window,
         short_cutoff=short,
         long_cutoff=long,
+        allow_flattening=flattening,
+        resample=resample,
     )
     info.update(prepared.info)
     info["warnings"] = list(prepared.warnings)
