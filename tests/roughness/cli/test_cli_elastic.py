@@ -33,6 +33,7 @@ def _scenario(text: str) -> dict:
     return tomllib.loads(text)
 
 
+@pytest.mark.slow
 def test_elastic_model_writes_contact_outputs(tmp_path: Path, check_summary) -> None:
     path = tmp_path / "s.toml"
     path.write_text(BASE + '[contact]\nmodel = "elastic"\npressure = 1e8\nmodulus = 1e11\n')

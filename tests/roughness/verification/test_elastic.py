@@ -36,6 +36,7 @@ def _westergaard(x: np.ndarray, lam: float, pbar: float, pstar: float) -> tuple[
     return a, p
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("fraction", [0.1, 0.5])
 def test_westergaard_pressure(fraction: float) -> None:
     lam, n = 1e-3, 1024
@@ -182,6 +183,7 @@ def test_pressure_sweep_area_grows_linearly_at_low_load() -> None:
     assert polars[0].mean_gap < polars[1].mean_gap
 
 
+@pytest.mark.slow
 def test_hardness_caps_the_pressure() -> None:
     lam, n = 1e-3, 128
     x = (np.arange(n) + 0.5) * lam / n

@@ -19,6 +19,7 @@ def rough():
     return self_affine(0.8, (1e-4, 1e-4), (48, 48), rng=np.random.default_rng(5), rms_slope=0.3)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("rough_below", [True, False])
 def test_flat_counter_face_takes_one_sample(rough, rough_below: bool) -> None:
     lower, upper = (rough, flat()) if rough_below else (flat(), rough)
@@ -55,6 +56,7 @@ def test_ergodic_grid_rounds_to_a_divisor(samples: int, stations: int, expected:
         assert stations % count == 0
 
 
+@pytest.mark.slow
 def test_a_load_giving_full_contact_says_so(rough) -> None:
     """Every spring compressed: a note, one sample on a flat face, and the limit of a
     large load is the full-contact average (forces equal to first order in heights/L)."""
