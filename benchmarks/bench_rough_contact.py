@@ -6,7 +6,9 @@ Usage::
 
 Each case runs in a fresh Python process (imports, numba's cache load or compilation and
 the computation all counted: what a user waits for); the process's own wall time is
-reported beside the time of the computation alone, with the machine's load average.
+reported beside the time of the computation alone and the process's CPU time (all
+threads), with the machine's load average: on a shared machine the CPU time is the part
+that does not depend on the other users.
 
 * ``lattice_1024``: 1024^2 self-affine map (H = 0.8, rms slope 0.5) on a flat face, 91
   directions (0 to 90 deg), partial contact (about 5 % of the springs compressed):
@@ -21,6 +23,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import time
@@ -60,15 +63,19 @@ print(json.dumps({"setup_s": t1 - t0, "compute_s": t2 - t1, "area": area,
 
 def run_case(name: str) -> dict[str, object]:
     load_before = os.getloadavg()
+    cpu_before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     done = subprocess.run(
         [sys.executable, "-c", _CODE, name], capture_output=True, text=True, check=False
     )
     wall = time.perf_counter() - start
+    cpu_after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (cpu_after.ru_utime - cpu_before.ru_utime) + (cpu_after.ru_stime - cpu_before.ru_stime)
     row: dict[str, object] = {
         "case": name,
         "target_s": CASES[name],
         "process_wall_s": round(wall, 2),
+        "process_cpu_s": round(cpu, 2),
         "load_before": [round(v, 2) for v in load_before],
         "load_after": [round(v, 2) for v in os.getloadavg()],
     }

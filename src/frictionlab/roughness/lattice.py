@@ -793,9 +793,12 @@ def _all_directions(
     progress: Callable[[int, int], None] | None,
 ) -> list[_Direction]:
     """:func:`_direction` for every direction, in order (the threads work inside a sample)."""
-    results = []
+    results: list[_Direction] = []
     for i, b in enumerate(betas):
-        results.append(_direction(lattice, lower, upper, mu0, float(b), settings))
+        # shift-invariant (one sample, the same gaps in every direction): the load balance's
+        # root is the same, so the previous direction's offset starts Newton at it
+        start = results[-1].offset if lattice.invariant and results else math.nan
+        results.append(_direction(lattice, lower, upper, mu0, float(b), settings, start))
         if progress is not None:
             progress(i + 1, betas.size)
     return results
@@ -841,6 +844,7 @@ class _Direction:
     travel: float | None
     invalid: str | None
     invalid_fraction: float = 0.0
+    offset: float = math.nan  # c of the last time sample (load control)
 
 
 def _average_directions(
@@ -938,13 +942,17 @@ def _direction(
     mu0: float,
     beta: float,
     settings: LatticeSettings,
+    c_start: float = math.nan,
 ) -> _Direction:
-    """Time average over the sliding path of one direction (Eqs 5-9 and 21-22, time-averaged)."""
+    """Time average over the sliding path of one direction (Eqs 5-9 and 21-22, time-averaged).
+
+    ``c_start``: a warm start of the first sample's load balance (load control).
+    """
     if lat.invariant:  # a flat face: every shift is the same configuration
         path = _Path(np.array([settings.phase], dtype=np.float64), "invariant", None)
     else:
         path = _sliding_path(lat.geometry, beta, settings)
-    results = _samples(lat, upper, mu0, beta, path.shifts, settings)
+    results = _samples(lat, upper, mu0, beta, path.shifts, settings, c_start)
     n_st = lat.geometry.n_stations
     f_sum = x_sum = y_sum = f_tot = 0.0
     fractions = np.empty(path.shifts.shape[0])
@@ -999,6 +1007,7 @@ def _direction(
         travel=path.travel,
         invalid=None,
         invalid_fraction=dropped / n_samples if drop else 0.0,
+        offset=float(results[-1][0]) if results else math.nan,
     )
     if first_invalid is not None:
         message = _invalid_message(
@@ -1052,8 +1061,12 @@ def _samples(
     beta: float,
     shifts: FloatArray,
     settings: LatticeSettings,
+    c_start: float = math.nan,
 ) -> list[tuple[Any, ...]]:
     """The kernel's outcome (``SAMPLE_FIELDS``) of every time sample of one direction, in order.
+
+    ``c_start`` warm-starts the first load balance (load control without detachment,
+    whose balance has several roots).
 
     A block stops early at a sample that ends the computation (a load above the pull-off
     load, or a contact violating Eq 1 with ``on_invalid="raise"``): the caller raises at
@@ -1073,6 +1086,8 @@ def _samples(
     drop = settings.on_invalid == "drop"
     stop_invalid = settings.on_invalid == "raise"
     c_cold = math.nan  # load control: no warm start
+    if lat.mode == _kernels.MODE_LOAD and settings.detachment is None:
+        c_cold = c_start
     if lat.mode == _kernels.MODE_SEPARATION and settings.separation is not None:
         c_cold = settings.separation
 
