@@ -53,11 +53,15 @@ def _first_line(exc: BaseException) -> str:
     return f"{type(exc).__name__}: {text[0] if text else ''}"
 
 
-def run_file(path: Path) -> dict[str, Any]:
+def run_file(path: Path, **read: Any) -> dict[str, Any]:
     row: dict[str, Any] = {"file": path.name, "bytes": path.stat().st_size}
+    if read:
+        row["options"] = read
     t0 = time.perf_counter()
     try:
-        prepared = read_prepared(path, periodicity="assume", detrend="height", fill_missing=True)
+        prepared = read_prepared(
+            path, periodicity="assume", detrend="height", fill_missing=True, **read
+        )
     except Exception as exc:  # the refusal is the result
         row["refusal"] = _first_line(exc)
         return row
@@ -111,8 +115,18 @@ def main() -> int:
     parser.add_argument("folder", type=Path)
     parser.add_argument("--limit-s", type=float, default=120.0)
     parser.add_argument("--out", type=Path, default=None)
-    args = parser.parse_args()
+    parser.add_argument("--format", default=None, help="force a reader (e.g. xyz)")
+    parser.add_argument("--resample", default=None, help="median, finest or points")
+    parser.add_argument("files", nargs="*", help="only these names in FOLDER")
+    args = parser.parse_intermixed_args()
+    read: dict[str, Any] = {}
+    if args.format:
+        read["format"] = args.format
+    if args.resample:
+        read["resample"] = int(args.resample) if args.resample.isdigit() else args.resample
     files = sorted(p for p in args.folder.iterdir() if p.is_file())
+    if args.files:
+        files = [p for p in files if p.name in set(args.files)]
     files.sort(key=lambda p: p.stat().st_size)
     out = open(args.out, "a") if args.out else sys.stdout  # noqa: SIM115
     signal.signal(signal.SIGALRM, _alarm)
@@ -121,7 +135,7 @@ def main() -> int:
         signal.alarm(math.ceil(args.limit_s))
         t0 = time.perf_counter()
         try:
-            row = run_file(path)
+            row = run_file(path, **read)
         except _Timeout:
             row = {"file": path.name, "bytes": path.stat().st_size,
                    "refusal": f"not finished in {args.limit_s:g} s"}  # fmt: skip
