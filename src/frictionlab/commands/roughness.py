@@ -162,9 +162,13 @@ def run(args: argparse.Namespace) -> int:
 
         files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, polar, scenario_path)}
         files.update(_extension_files(scenario, extensions, scenario_path, plots))
+        stat_files, stat_summary = _statistics_outputs(scenario, plots)
+        files.update(stat_files)
         summary = _summary(scenario, polar, plot_polar, scenario_path, seconds)
         summary["warnings"] = [*summary["warnings"], *polar.notes]
         summary.update(_extension_summary(scenario, extensions))
+        if stat_summary:
+            summary["statistics"] = stat_summary
         extra = sorted(name for name in files if name != "polar.csv")
         summary["files"] = ["polar.csv", "summary.json", *(["polar.png"] if plots else []), *extra]
         if plots:
@@ -664,6 +668,11 @@ def _run_elastic(
             files["polar.png"] = _png(scenario, whole)  # type: ignore[arg-type]
             files["pressure_map.png"] = _pressure_png(whole)
             names += ["polar.png", "pressure_map.png"]
+        stat_files, stat_summary = _statistics_outputs(scenario, plots)
+        files.update(stat_files)
+        names += sorted(stat_files)
+        if stat_summary:
+            summary["statistics"] = stat_summary
         summary["files"] = names
         summary = stamp(summary, names, _input_files(scenario_path, data))
         for name, content in files.items():
@@ -709,3 +718,33 @@ def _pressure_png(polar: Any) -> bytes:
         fontsize=9,
     )
     return figure_png_bytes(fig)
+
+
+def _statistics_outputs(
+    scenario: RoughnessScenario, plots: bool
+) -> tuple[dict[str, str | bytes], dict[str, Any]]:
+    """``[output] statistics = true``: per sampled surface, its statistics as CSV tables
+    (``statistics_<side>_<table>.csv``) and one figure (``statistics_<side>.png``)."""
+    from frictionlab.roughness.statistics import surface_statistics
+    from frictionlab.roughness.surface import SampledHeightMap, SampledProfile
+
+    files: dict[str, str | bytes] = {}
+    summary: dict[str, Any] = {}
+    if not scenario.statistics:
+        return files, summary
+    for side, surface in (("lower", scenario.lower), ("upper", scenario.upper)):
+        if not isinstance(surface, SampledProfile | SampledHeightMap):
+            continue
+        stats = surface_statistics(surface)
+        summary[side] = stats.summary()
+        for name, columns in stats.tables().items():
+            files[f"statistics_{side}_{name}.csv"] = format_csv(
+                columns, {}, f"frictionlab {__version__} surface statistics: {side}, {name}"
+            )
+        if plots:
+            from frictionlab.plotting.roughness import figure_png_bytes, plot_statistics
+
+            files[f"statistics_{side}.png"] = figure_png_bytes(
+                plot_statistics(stats, title=f"{side} surface ({surface.kind})")
+            )
+    return files, summary

@@ -190,6 +190,7 @@ class RoughnessScenario:
     warnings: tuple[str, ...] = ()
     multiscale: MultiscaleOptions | None = None
     contact: ElasticSettings | None = None
+    statistics: bool = False
 
 
 def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessScenario:
@@ -264,9 +265,10 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         section = "[sliding]" if exc.field in _SLIDING_FIELDS else "[lattice]"
         raise InputError(f"{section}.{exc}") from None
     output = top.table("output")
-    full_circle, step = True, 5.0
+    full_circle, step, statistics = True, 5.0, False
     if output is not None:
         full_circle = output.get("plot_full_circle", bool, True)
+        statistics = output.get("statistics", bool, False)
         step = output.get(
             "plot_step_deg", float, 5.0, check=lambda v: 0.0 < v <= 90.0, allowed="0 < step <= 90"
         )
@@ -309,6 +311,7 @@ def parse_roughness_scenario(data: dict[str, Any], base_dir: Path) -> RoughnessS
         warnings=tuple(notes.get("warnings", ())),
         multiscale=multiscale,
         contact=contact,
+        statistics=statistics,
     )
 
 

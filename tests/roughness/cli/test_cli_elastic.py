@@ -96,3 +96,17 @@ def test_file_keys_resample_and_allow_flattening(tmp_path: Path, capsys) -> None
     resampled = text.replace('detrend = "center"\n', 'detrend = "center"\nresample = "median"\n')
     ok = parse_roughness_scenario(_scenario(resampled), tmp_path)
     assert ok.sources["lower"]["resampled"]["source_points"] == 200
+
+
+def test_statistics_output(tmp_path: Path, check_summary) -> None:
+    path = tmp_path / "s.toml"
+    path.write_text(BASE + 'load = "full"\n[output]\nstatistics = true\nplot_full_circle = false\n')
+    assert main(["roughness", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    names = {p.name for p in (tmp_path / "out").iterdir()}
+    assert {"statistics_lower.png", "statistics_lower_psd_isotropic.csv",
+            "statistics_lower_rms_slope_direction.csv"} <= names  # fmt: skip
+    assert not any("upper" in n for n in names)  # the flat face has no statistics
+    summary = check_summary(tmp_path / "out" / "summary.json")
+    # rms_slope = 0.3 by the generator (spectral); SurfaceTopography's forward difference
+    # reads the finest wavelengths a little lower
+    assert 0.2 < summary["statistics"]["lower"]["rms_slope"] <= 0.3
