@@ -58,7 +58,10 @@ def test_elastic_model_writes_contact_outputs(tmp_path: Path, check_summary) -> 
         ('[contact]\nmodel = ["lattice", "elastic"]\n', ["model", "string"]),
         ('[contact]\nmodel = "elastic"\npressure = [1e6, 2e6]\nmodulus = 1e9\n', ["pressure"]),
         ("[contact]\npressure = 1e6\n", ["pressure", "model = 'elastic'"]),
-        ('[contact]\nmodel = "elastic"\npressure = -1.0\nmodulus = 1e9\n', ["pressure", "positive"]),
+        (
+            '[contact]\nmodel = "elastic"\npressure = -1.0\nmodulus = 1e9\n',
+            ["pressure", "positive"],
+        ),
         (
             '[contact]\nmodel = "elastic"\npressure = 1e6\nmodulus = 1e9\nhardness = 1e5\n',
             ["hardness", "nominal pressure"],
