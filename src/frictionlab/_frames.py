@@ -66,7 +66,8 @@ def to_dataframe(columns: Mapping[str, np.ndarray], units: Mapping[str, str]) ->
 
 
 def short_repr(obj: Any, columns: Mapping[str, np.ndarray]) -> str:
-    """A one-line repr of a result object: its table size and scalar fields, no arrays."""
+    """A one-line repr of a result object: its table size and scalar fields (floats to 6
+    significant digits), no arrays."""
     import dataclasses
 
     rows = len(next(iter(columns.values()))) if columns else 0
@@ -74,7 +75,7 @@ def short_repr(obj: Any, columns: Mapping[str, np.ndarray]) -> str:
     for f in dataclasses.fields(obj):
         value = getattr(obj, f.name)
         if isinstance(value, bool | int | float) or (isinstance(value, str) and value):
-            text = repr(value)
+            text = f"{value:.6g}" if isinstance(value, float) else repr(value)
             parts.append(f"{f.name}={text if len(text) <= 40 else text[:37] + '...'}")
     fields = "; " + ", ".join(parts) if parts else ""
     return f"{type(obj).__name__}({rows} rows x {len(columns)} columns{fields})"
