@@ -53,10 +53,13 @@ def slip_map(dim: int) -> np.ndarray:
     return -(np.diag([1.0, 1.0, -1.0]) @ FRAMES[dim])[:, :dim]
 
 
-def open_state(params: SubloadingParams, n_points: int, dim: int = 2) -> ContactState:
-    """The virgin interface before loading: touching, traction-free, fully recovered.
+def open_state(
+    params: SubloadingParams, n_points: int, dim: int = 2, gap: np.ndarray | None = None
+) -> ContactState:
+    """The virgin interface before loading: traction-free, fully recovered.
 
-    ``F = F_s`` (or mu_s), ``R = 0``, zero gap: the first compression closes it.
+    ``F = F_s`` (or mu_s), ``R = 0``; the gap is ``gap`` [m] (the base's shape, zero by
+    default: touching, so that the first compression closes it).
     """
     static = np.broadcast_to(np.asarray(params.static, dtype=np.float64), (n_points,))
     return ContactState(
@@ -64,7 +67,7 @@ def open_state(params: SubloadingParams, n_points: int, dim: int = 2) -> Contact
         F=static.copy(),
         R=np.zeros(n_points),
         plastic_slip=np.zeros(n_points),
-        gap=np.zeros(n_points),
+        gap=np.zeros(n_points) if gap is None else np.array(gap, dtype=np.float64),
         frame=np.broadcast_to(FRAMES[dim], (n_points, 3, 3)),
     )
 

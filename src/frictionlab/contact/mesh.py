@@ -12,6 +12,7 @@ no re-assembly. The normal axis is the last one (y in 2-D, z in 3-D).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -110,15 +111,9 @@ class Discretisation:
 def discretise(block: Block) -> Discretisation:
     """Mesh the block and assemble its elastic stiffness and contact operator."""
     skfem = require_skfem()
-    from skfem.models.elasticity import linear_elasticity
 
     d = block.dim
-    sizes = (
-        [block.width, block.height]
-        if block.depth is None
-        else [block.width, block.depth, block.height]
-    )
-    axes = [np.linspace(0.0, L, n + 1) for L, n in zip(sizes, block.cells, strict=True)]
+    axes = block.axes()
     if block.element == "quad":
         mesh = skfem.MeshQuad.init_tensor(*axes)
         element = skfem.ElementVector(skfem.ElementQuad1())
@@ -129,8 +124,7 @@ def discretise(block: Block) -> Discretisation:
         mesh = skfem.MeshHex.init_tensor(*axes)
         element = skfem.ElementVector(skfem.ElementHex1())
     basis = skfem.Basis(mesh, element, intorder=2)
-    lam, mu = block.lame
-    stiffness = linear_elasticity(lam, mu).assemble(basis).tocsr()
+    stiffness = elastic_stiffness(skfem, mesh, element, basis, block)
 
     normal = d - 1
     tol = 1e-9 * block.height
@@ -168,6 +162,30 @@ def discretise(block: Block) -> Discretisation:
         unit_pressure=pressure.assemble(ft),
         unit_shear=np.array(shears),
     )
+
+
+def elastic_stiffness(
+    skfem: Any, mesh: Any, element: Any, basis: Any, block: Block
+) -> sp.csr_matrix:
+    """Linear-elastic stiffness; with selective integration the volumetric part
+    ``lambda div u div v`` takes one Gauss point per cell (no volumetric locking)."""
+    from skfem.helpers import ddot, div, sym_grad
+    from skfem.models.elasticity import linear_elasticity
+
+    lam, mu = block.lame
+    if block.integration == "full":
+        return linear_elasticity(lam, mu).assemble(basis).tocsr()
+
+    @skfem.BilinearForm
+    def shear(u, v, w):
+        return 2.0 * mu * ddot(sym_grad(u), sym_grad(v))
+
+    @skfem.BilinearForm
+    def volume(u, v, w):
+        return lam * div(u) * div(v)
+
+    reduced = skfem.Basis(mesh, element, intorder=1)
+    return (shear.assemble(basis) + volume.assemble(reduced)).tocsr()
 
 
 def _contact_operator(

@@ -22,6 +22,7 @@ from frictionlab.contact.linear import TangentSolver
 from frictionlab.contact.loading import NormalLoad, Segment, Stage, plan_stages
 from frictionlab.contact.mesh import Discretisation, discretise
 from frictionlab.contact.newton import newton_step
+from frictionlab.contact.shapes import Base
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import ContactState, SubloadingParams, check_snap_back
 
@@ -181,6 +182,7 @@ def run_contact(
     drive: str = "top",
     progress: ProgressCallback | None = None,
     discretisation: Discretisation | None = None,
+    base: Base | None = None,
 ) -> ContactHistory:
     """Press the block on the base, then run the tangential programme.
 
@@ -199,6 +201,9 @@ def run_contact(
         Called with the fraction of the total time done after every step.
     discretisation:
         A prebuilt mesh of ``block`` (else built here).
+    base:
+        The rigid base's shape (:class:`~frictionlab.contact.shapes.Base`; flat when
+        None): the law's initial gap at the contact points.
 
     Returns
     -------
@@ -208,11 +213,15 @@ def run_contact(
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # pragma: no cover - part of the extra `fem`; only slower without
-        return _run(block, params, normal, program, options, drive, progress, discretisation)
+        return _run(
+            block, params, normal, program, options, drive, progress, discretisation, base
+        )
     # The dense blocks are small (m x m, m = contact dofs): threaded BLAS only adds
     # overhead, and a lot of it on a loaded machine.
     with threadpool_limits(limits=1, user_api="blas"):
-        return _run(block, params, normal, program, options, drive, progress, discretisation)
+        return _run(
+            block, params, normal, program, options, drive, progress, discretisation, base
+        )
 
 
 def _run(
@@ -224,8 +233,11 @@ def _run(
     drive: str,
     progress: ProgressCallback | None,
     discretisation: Discretisation | None,
+    base: Base | None,
 ) -> ContactHistory:
     opts = options or SolverOptions()
+    base = base or Base()
+    base.check_dim(block.dim)
     if drive not in DRIVES:
         raise ParameterError("drive", drive, "one of " + ", ".join(DRIVES))
     if params.per_point:
@@ -235,15 +247,18 @@ def _run(
         raise ParameterError("drive", drive, "'top' for a force-controlled programme")
     # the snap-back bound of the law at the nominal pressure (for a prescribed
     # displacement, alpha_n d bounds the pressure from above: the block is compliant)
-    nominal_pressure = (
-        normal.value
-        if normal.control == "pressure"
-        else normal.value * float(np.asarray(params.alpha_n))
-    )
-    check_snap_back(params, nominal_pressure)
     disc = discretisation if discretisation is not None else discretise(block)
     if disc.block != block:
         raise ParameterError("discretisation", "another block", "a mesh of this block")
+    top_area = -float(np.sum(disc.unit_pressure))
+    # a total force is applied as the uniform pressure force / top area
+    to_pressure = 1.0 / top_area if normal.control == "force" else 1.0
+    nominal_pressure = (
+        normal.value * to_pressure
+        if normal.control != "displacement"
+        else normal.value * float(np.asarray(params.alpha_n))
+    )
+    check_snap_back(params, nominal_pressure)
 
     dim = disc.dim
     if dim == 2 and any(abs(s.end[1]) > 0.0 for s in stages[1:]):
@@ -262,15 +277,43 @@ def _run(
         fixed[dofs] = True
     if normal.control == "displacement":
         fixed[top_normal] = True
+    # A normal force acts through a rigid top plate: the top face translates as one body
+    # (its normal dofs tied; under tangential force control its in-plane dofs too, so
+    # the plate carries the shear without tilting the block).
+    ties: list[np.ndarray] = []
+    if normal.control == "force":
+        ties.append(top_normal)
+        if control == "force":
+            ties.extend(disc.dofs[a][disc.top_nodes] for a in range(dim - 1))
+    # Under tangential force control nothing but friction holds the block in-plane; as
+    # mu -> 0 the normal stage is singular. It is pinned (the in-plane rigid modes: the
+    # plate, or single top dofs), and the pins' reactions are then kept as loads.
+    if control != "force":
+        pins = np.zeros(0, dtype=np.int64)
+    elif normal.control == "force":
+        pins = np.concatenate([disc.dofs[a][disc.top_nodes] for a in range(dim - 1)])
+    else:
+        pins = _pins(disc)
+    pinned = fixed.copy()
+    pinned[pins] = True
+    pin_load = np.zeros(disc.n_dofs)
 
-    solver = TangentSolver(disc, fixed, params)
-    state = open_state(params, disc.n_points, dim)
+    solver = TangentSolver(disc, pinned, params, ties)
+    middle = np.array([0.5 * (lo + hi) for lo, hi in zip(disc.nodes.min(1), disc.nodes.max(1))])
+    gap0 = base.gap(disc.contact_xy, middle[: dim - 1])
+    state = open_state(params, disc.n_points, dim, gap=gap0)
     u = np.zeros(disc.n_dofs)
     rec = _Recorder(disc, state)
     total_time = sum(s.duration for s in stages)
     t = 0.0
     pressure, shear, slide = 0.0, np.zeros(2), np.zeros(2)
+    force = np.zeros(disc.n_dofs)
     for index, stage in enumerate(stages):
+        if index == 1 and pins.size:
+            f_now = _external(disc, normal, pressure * to_pressure, shear, dim)
+            r = disc.stiffness @ u - f_now - force
+            pin_load[pins] = r[pins]
+            solver = TangentSolver(disc, fixed, params, ties)
         nominal = 1.0 / stage.steps
         h = nominal
         done = 0.0
@@ -290,9 +333,7 @@ def _run(
                 guess[dofs] = x_new[a]
             if normal.control == "displacement":
                 guess[top_normal] = -p_new
-            f_ext = sum(s_new[a] * disc.unit_shear[a] for a in range(dim - 1))
-            if normal.control == "pressure":
-                f_ext = f_ext + p_new * disc.unit_pressure
+            f_ext = _external(disc, normal, p_new * to_pressure, s_new, dim) + pin_load
             dt = h_try * stage.duration
             outcome = newton_step(
                 disc,
@@ -300,7 +341,6 @@ def _run(
                 state,
                 u,
                 guess,
-                fixed,
                 f_ext,
                 dt,
                 solver,
@@ -320,6 +360,7 @@ def _run(
                 continue
             assert outcome.response is not None
             state = outcome.response.result.state
+            force = outcome.response.force
             u = outcome.u
             pressure, shear, slide = p_new, s_new, x_new
             done += h_try
@@ -341,3 +382,29 @@ def _run(
             if progress is not None:
                 progress(min(t / total_time, 1.0))
     return rec.history(True, "completed", stages)
+
+
+def _external(
+    disc: Discretisation, normal: NormalLoad, pressure: float, shear: np.ndarray, dim: int
+) -> np.ndarray:
+    """Nodal loads of the top pressure [Pa] (pressure or force control) and shear [Pa]."""
+    f = sum((shear[a] * disc.unit_shear[a] for a in range(dim - 1)), np.zeros(disc.n_dofs))
+    if normal.control != "displacement":
+        f = f + pressure * disc.unit_pressure
+    return f
+
+
+def _pins(disc: Discretisation) -> np.ndarray:
+    """In-plane dofs fixing the rigid in-plane modes: the top node nearest the top face's
+    centre (x, and y in 3-D), and in 3-D the y dof of the top node farthest from it
+    along x on its row (the rotation about the normal)."""
+    top = disc.top_nodes
+    xy = disc.nodes[: disc.dim - 1, top]
+    centre = 0.5 * (xy.min(axis=1) + xy.max(axis=1))
+    k = int(np.argmin(np.sum((xy - centre[:, None]) ** 2, axis=0)))
+    dofs = [disc.dofs[a][top[k]] for a in range(disc.dim - 1)]
+    if disc.dim == 3:
+        row = np.flatnonzero(np.isclose(xy[1], xy[1, k]))
+        far = row[int(np.argmax(np.abs(xy[0, row] - xy[0, k])))]
+        dofs.append(disc.dofs[1][top[far]])
+    return np.array(dofs, dtype=np.int64)
