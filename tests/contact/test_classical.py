@@ -48,9 +48,7 @@ def _block(size: float, nu: float = NU) -> Block:
 
 
 def _law() -> SubloadingParams:
-    return SubloadingParams(
-        alpha_n=1e15, alpha_t=1e15, mu_s=MU, mu_k=MU, u=1e9, kappa=0.0, xi=0.0
-    )
+    return SubloadingParams(alpha_n=1e15, alpha_t=1e15, mu_s=MU, mu_k=MU, u=1e9, kappa=0.0, xi=0.0)
 
 
 def _run(size: float, program: list[Traction], nu: float = NU):  # type: ignore[no-untyped-def]

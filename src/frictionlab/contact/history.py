@@ -47,6 +47,9 @@ class ContactHistory:
         The mesh, for pictures.
     displacement:
         Nodal displacement vectors kept for pictures: ``{"final": u, "peak": u}``.
+    nodal_displacement:
+        (S, n_dofs) nodal displacement of every row [m] when the run recorded it
+        (``run_contact(record_displacement=True)``, for field output), else None.
     """
 
     time: np.ndarray
@@ -82,6 +85,7 @@ class ContactHistory:
     success: bool = True
     message: str = "completed"
     stages: list[dict[str, Any]] = field(default_factory=list)
+    nodal_displacement: np.ndarray | None = None
 
     @property
     def n_rows(self) -> int:

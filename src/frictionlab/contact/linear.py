@@ -130,8 +130,9 @@ class TangentSolver:
                 rows.append(np.broadcast_to(ia_k[:, :, None], shape).ravel())
                 cols.append(np.broadcast_to(ib_k[:, None, :], shape).ravel())
                 values.append(
-                    ((w[keep] * c[keep])[:, None, None] * va_k[:, :, None] * vb_k[:, None, :])
-                    .ravel()
+                    (
+                        (w[keep] * c[keep])[:, None, None] * va_k[:, :, None] * vb_k[:, None, :]
+                    ).ravel()
                 )
         if not rows:
             return sp.csr_matrix((m, m))

@@ -3,8 +3,8 @@
 The normal load acts on the top of the block: a uniform pressure [Pa], a total force
 (N per metre of depth in 2-D, N in 3-D; applied as the uniform pressure force / top
 area) or a prescribed downward displacement [m] of the top edge, ramped linearly over
-``duration`` and then held. The tangential programme uses the segment vocabulary of ``frictionlab simulate``
-where it applies:
+``duration`` and then held. The tangential programme uses the segment vocabulary of
+``frictionlab simulate`` where it applies:
 
 * :class:`Slide` — move the top edge along x at ``velocity`` [m/s] (negative: -x) for a
   ``distance`` [m] or a ``duration`` [s] (displacement control);
@@ -260,8 +260,6 @@ def plan_stages(normal: NormalLoad, program: Sequence[Segment]) -> tuple[str, li
             value = target
             for _ in range(seg.cycles):
                 for end in (-target, target):
-                    stages.append(
-                        Stage("traction", control, value, end, seg.duration, seg.steps)
-                    )
+                    stages.append(Stage("traction", control, value, end, seg.duration, seg.steps))
                     value = end
     return control, stages

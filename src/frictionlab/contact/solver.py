@@ -84,8 +84,9 @@ _ROW_KEYS = (
 
 
 class _Recorder:
-    def __init__(self, disc: Discretisation, state: ContactState) -> None:
+    def __init__(self, disc: Discretisation, state: ContactState, keep_u: bool = False) -> None:
         self.disc = disc
+        self.u_rows: list[np.ndarray] | None = [] if keep_u else None
         self.M = slip_map(disc.dim)
         self.rows: dict[str, list[object]] = {k: [] for k in _ROW_KEYS}
         self.peak = (-1.0, np.zeros(disc.n_dofs))
@@ -137,6 +138,8 @@ class _Recorder:
         }
         for key, value in row.items():
             self.rows[key].append(value)
+        if self.u_rows is not None:
+            self.u_rows.append(u.copy())
         if float(np.hypot(Q[0], Q[1])) > self.peak[0]:
             self.peak = (float(np.hypot(Q[0], Q[1])), u.copy())
         self.last_u = u
@@ -158,6 +161,7 @@ class _Recorder:
             displacement={"final": self.last_u.copy(), "peak": self.peak[1]},
             success=success,
             message=message,
+            nodal_displacement=None if self.u_rows is None else np.array(self.u_rows),
             stages=[
                 {
                     "kind": s.kind,
@@ -183,6 +187,7 @@ def run_contact(
     progress: ProgressCallback | None = None,
     discretisation: Discretisation | None = None,
     base: Base | None = None,
+    record_displacement: bool = False,
 ) -> ContactHistory:
     """Press the block on the base, then run the tangential programme.
 
@@ -204,6 +209,9 @@ def run_contact(
     base:
         The rigid base's shape (:class:`~frictionlab.contact.shapes.Base`; flat when
         None): the law's initial gap at the contact points.
+    record_displacement:
+        Keep the nodal displacement of every recorded row (for field output; memory
+        rows x dofs x 8 bytes).
 
     Returns
     -------
@@ -214,14 +222,16 @@ def run_contact(
         from threadpoolctl import threadpool_limits
     except ImportError:  # pragma: no cover - part of the extra `fem`; only slower without
         return _run(
-            block, params, normal, program, options, drive, progress, discretisation, base
-        )
+            block, params, normal, program, options, drive, progress, discretisation, base,
+            record_displacement,
+        )  # fmt: skip
     # The dense blocks are small (m x m, m = contact dofs): threaded BLAS only adds
     # overhead, and a lot of it on a loaded machine.
     with threadpool_limits(limits=1, user_api="blas"):
         return _run(
-            block, params, normal, program, options, drive, progress, discretisation, base
-        )
+            block, params, normal, program, options, drive, progress, discretisation, base,
+            record_displacement,
+        )  # fmt: skip
 
 
 def _run(
@@ -234,6 +244,7 @@ def _run(
     progress: ProgressCallback | None,
     discretisation: Discretisation | None,
     base: Base | None,
+    record_displacement: bool = False,
 ) -> ContactHistory:
     opts = options or SolverOptions()
     base = base or Base()
@@ -277,6 +288,7 @@ def _run(
         fixed[dofs] = True
     if normal.control == "displacement":
         fixed[top_normal] = True
+    fixed[disc.fixed_dofs] = True
     # A normal force acts through a rigid top plate: the top face translates as one body
     # (its normal dofs tied; under tangential force control its in-plane dofs too, so
     # the plate carries the shear without tilting the block).
@@ -299,11 +311,11 @@ def _run(
     pin_load = np.zeros(disc.n_dofs)
 
     solver = TangentSolver(disc, pinned, params, ties)
-    middle = np.array([0.5 * (lo + hi) for lo, hi in zip(disc.nodes.min(1), disc.nodes.max(1))])
+    middle = 0.5 * (disc.nodes.min(axis=1) + disc.nodes.max(axis=1))
     gap0 = base.gap(disc.contact_xy, middle[: dim - 1])
     state = open_state(params, disc.n_points, dim, gap=gap0)
     u = np.zeros(disc.n_dofs)
-    rec = _Recorder(disc, state)
+    rec = _Recorder(disc, state, record_displacement)
     total_time = sum(s.duration for s in stages)
     t = 0.0
     pressure, shear, slide = 0.0, np.zeros(2), np.zeros(2)
