@@ -114,6 +114,18 @@ class ContactHistory:
         return np.divide(Q, P, out=np.zeros_like(P), where=P > 0)
 
     @property
+    def travel(self) -> np.ndarray:
+        """(S,) top displacement along the sliding direction [m]: the direction of the
+        first tangential stage (x when it has none, or in 2-D)."""
+        direction = np.array([1.0, 0.0])
+        for stage in self.stages[1:]:
+            step = np.asarray(stage["end"], dtype=np.float64) - np.asarray(stage["start"])
+            if self.dim == 3 and np.hypot(*step) > 0:
+                direction = step / np.hypot(*step)
+                break
+        return direction[0] * self.top_displacement + direction[1] * self.top_displacement_y
+
+    @property
     def peak_index(self) -> int:
         """Row of the largest |Q| (the static peak of a first slide)."""
         return int(np.argmax(np.hypot(self.tangential_force, self.tangential_force_y)))

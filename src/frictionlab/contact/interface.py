@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from frictionlab.contact.frictionless import Frictionless, frictionless_update
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.subloading import ContactState, Status, StepResult, SubloadingParams, update
 
@@ -54,7 +55,10 @@ def slip_map(dim: int) -> np.ndarray:
 
 
 def open_state(
-    params: SubloadingParams, n_points: int, dim: int = 2, gap: np.ndarray | None = None
+    params: SubloadingParams | Frictionless,
+    n_points: int,
+    dim: int = 2,
+    gap: np.ndarray | None = None,
 ) -> ContactState:
     """The virgin interface before loading: traction-free, fully recovered.
 
@@ -84,7 +88,7 @@ class InterfaceResponse:
 
 def respond(
     disc: Discretisation,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     state: ContactState,
     du: np.ndarray,
     dt: float,
@@ -99,12 +103,15 @@ def respond(
     d = disc.dim
     M = slip_map(d)
     dug = np.column_stack([B @ du for B in disc.interp])  # (P, d)
-    result = update(params, state, dug @ M.T, dt, raise_on_failure=False)
+    if isinstance(params, Frictionless):
+        result = frictionless_update(params, state, dug @ M.T)
+    else:
+        result = update(params, state, dug @ M.T, dt, raise_on_failure=False)
     traction = -(result.traction @ M)  # (P, d) global components on the block
     w = disc.contact_weight
     force = sum(B.T @ (w * traction[:, a]) for a, B in enumerate(disc.interp))
     n = disc.n_points
-    alpha_t = float(np.asarray(params.alpha_t))
+    alpha_t = 0.0 if isinstance(params, Frictionless) else float(np.asarray(params.alpha_t))
     alpha_n = float(np.asarray(params.alpha_n))
     elastic = np.diag([alpha_t, alpha_t, alpha_n])
     C = np.broadcast_to(elastic, (n, 3, 3)) if tangent == "elastic" else result.tangent

@@ -24,6 +24,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.interface import slip_map
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.subloading import SubloadingParams
@@ -67,7 +68,7 @@ class TangentSolver:
         self,
         disc: Discretisation,
         fixed: np.ndarray,
-        params: SubloadingParams,
+        params: SubloadingParams | Frictionless,
         ties: Sequence[np.ndarray] = (),
         *,
         ordering: str = "MMD_AT_PLUS_A",

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.linalg as sla
 
+from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.interface import InterfaceResponse, respond
 from frictionlab.contact.linear import TangentSolver
 from frictionlab.contact.mesh import Discretisation
@@ -38,7 +39,7 @@ class NewtonOutcome:
 
 def newton_step(
     disc: Discretisation,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     state: ContactState,
     u_start: np.ndarray,
     u_guess: np.ndarray,

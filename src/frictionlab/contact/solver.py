@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from frictionlab.contact.block import Block
+from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.history import ContactHistory
 from frictionlab.contact.interface import TANGENTS, open_state, slip_map
 from frictionlab.contact.linear import TangentSolver
@@ -178,7 +179,7 @@ class _Recorder:
 
 def run_contact(
     block: Block,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     normal: NormalLoad,
     program: Sequence[Segment],
     *,
@@ -236,7 +237,7 @@ def run_contact(
 
 def _run(
     block: Block,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     normal: NormalLoad,
     program: Sequence[Segment],
     options: SolverOptions | None,
@@ -269,7 +270,8 @@ def _run(
         if normal.control != "displacement"
         else normal.value * float(np.asarray(params.alpha_n))
     )
-    check_snap_back(params, nominal_pressure)
+    if not isinstance(params, Frictionless):
+        check_snap_back(params, nominal_pressure)
 
     dim = disc.dim
     if dim == 2 and any(abs(s.end[1]) > 0.0 for s in stages[1:]):
