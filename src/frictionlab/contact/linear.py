@@ -18,18 +18,32 @@ is then two back-substitutions and a dense solve on the k <= m contact unknowns 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from frictionlab.contact.block import Block
 from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.interface import slip_map
 from frictionlab.contact.mesh import Discretisation
+from frictionlab.errors import ParameterError
 from frictionlab.subloading import SubloadingParams
 
-__all__ = ["ORDERINGS", "TangentSolver", "reduction"]
+__all__ = [
+    "LINEAR_SOLVERS",
+    "ORDERINGS",
+    "IterativeSolver",
+    "TangentSolver",
+    "make_solver",
+    "reduction",
+]
+
+#: Linear solvers: sparse direct (SuperLU, the contact block of K0^-1 kept) or iterative
+#: (GMRES preconditioned by algebraic multigrid, pyamg; memory linear in the unknowns).
+LINEAR_SOLVERS: tuple[str, ...] = ("direct", "iterative")
 
 #: SuperLU column orderings (scipy ``splu(permc_spec=...)``).
 ORDERINGS: tuple[str, ...] = ("MMD_AT_PLUS_A", "COLAMD", "MMD_ATA", "NATURAL")
@@ -158,6 +172,144 @@ class TangentSolver:
         scatter = np.zeros(self.n)
         scatter[self.contact[s]] = z
         return y - self.lu.solve(scatter)
+
+
+class IterativeSolver:
+    """GMRES on ``T^T J T`` preconditioned by smoothed-aggregation AMG (pyamg).
+
+    The hierarchy is built on the symmetric part of the tangent (with the rigid-body
+    modes as near-null space) and rebuilt only when the contact moduli change; memory
+    stays linear in the unknowns (no factorisation). Same interface as
+    :class:`TangentSolver`.
+    """
+
+    def __init__(
+        self,
+        disc: Discretisation,
+        fixed: np.ndarray,
+        params: SubloadingParams | Frictionless,
+        ties: Sequence[np.ndarray] = (),
+        *,
+        rtol: float = 1e-10,
+    ) -> None:
+        try:
+            import pyamg
+        except ImportError:
+            raise ParameterError(
+                "linear_solver", "iterative", 'installed pyamg (pip install "frictionlab[fem]")'
+            ) from None
+        self._pyamg = pyamg
+        self.T = reduction(fixed, ties)
+        self.disc = disc
+        self.K = (self.T.T @ disc.stiffness @ self.T).tocsr()
+        self.n = int(self.T.shape[1])
+        self.rtol = rtol
+        self._key: bytes | None = None
+        self._J: sp.csr_matrix | None = None
+        self._M: Any = None
+        self.near_null = _rigid_modes(disc, self.T)
+        self.iterations = 0
+
+    @property
+    def memory_bytes(self) -> int:
+        """Bytes of the tangent and the multigrid hierarchy (an estimate)."""
+        J = self._J if self._J is not None else self.K
+        return int(3 * 12 * J.nnz)
+
+    def reduce(self, r: np.ndarray) -> np.ndarray:
+        """``T^T r``."""
+        return np.asarray(self.T.T @ r)
+
+    def expand(self, delta: np.ndarray) -> np.ndarray:
+        """``T delta``."""
+        return np.asarray(self.T @ delta)
+
+    def solve(self, moduli: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """``delta`` with ``T^T (K + Kc(moduli)) T delta = b``; raises when GMRES fails."""
+        from frictionlab.contact.interface import contact_stiffness
+
+        key = np.ascontiguousarray(moduli).tobytes()
+        if key != self._key:
+            Kc = self.T.T @ contact_stiffness(self.disc, moduli) @ self.T
+            J = (self.K + Kc).tocsr()
+            sym = (0.5 * (J + J.T)).tocsr()
+            ml = self._pyamg.smoothed_aggregation_solver(sym, B=self.near_null, max_coarse=500)
+            self._J, self._M, self._key = J, ml.aspreconditioner(), key
+        count = [0]
+
+        def tick(_: object) -> None:
+            count[0] += 1
+
+        x, info = spla.gmres(
+            self._J, np.asarray(b, dtype=np.float64), M=self._M, rtol=self.rtol, atol=0.0,
+            restart=60, maxiter=20, callback=tick, callback_type="pr_norm",
+        )  # fmt: skip
+        self.iterations += count[0]
+        if info != 0 or not np.all(np.isfinite(x)):
+            raise ValueError(f"GMRES did not converge (info {info}, {count[0]} iterations)")
+        return np.asarray(x)
+
+
+def make_solver(
+    kind: str,
+    disc: Discretisation,
+    fixed: np.ndarray,
+    params: SubloadingParams | Frictionless,
+    ties: Sequence[np.ndarray] = (),
+) -> TangentSolver | IterativeSolver:
+    """The linear solver of :data:`LINEAR_SOLVERS` named ``kind``."""
+    if kind == "direct":
+        return TangentSolver(disc, fixed, params, ties)
+    if kind == "iterative":
+        return IterativeSolver(disc, fixed, params, ties)
+    raise ParameterError("linear_solver", kind, "one of " + ", ".join(LINEAR_SOLVERS))
+
+
+def estimate(block: Block, linear_solver: str = "direct") -> dict[str, float]:
+    """Size of a run of ``block`` before meshing: unknowns, contact unknowns and the
+    solver's storage in bytes.
+
+    Direct: 12 bytes per nonzero of the LU factors, from the fill per unknown measured
+    with SuperLU's MMD_AT_PLUS_A ordering on this model's structured meshes (2-D:
+    79 per unknown at 3.4k unknowns, growing as n^0.26; 3-D: 384 at 2.2k, growing as
+    n^0.66), plus the m x m contact block and one chunk of back-substitution columns.
+    Iterative: the tangent and three times it for the multigrid hierarchy, plus the
+    GMRES basis (60 vectors). Within a factor ~1.5 on the measured meshes.
+    """
+    cells = np.asarray(block.cells, dtype=np.float64)
+    d = block.dim
+    nodes = float(np.prod(cells + 1))
+    n = d * nodes
+    m = d * float(np.prod(cells[:-1] + 1))
+    if linear_solver == "direct":
+        per = 79.0 * (n / 3402.0) ** 0.26 if d == 2 else 384.0 * (n / 2187.0) ** 0.66
+        storage = 12.0 * per * n + 8.0 * m * m + 8.0 * _CHUNK * n
+    else:
+        per_row = (9 if d == 2 else 27) * d
+        storage = 4 * 12.0 * per_row * n + 8.0 * 60 * n
+    return {"unknowns": n, "contact_unknowns": m, "bytes": storage}
+
+
+def _rigid_modes(disc: Discretisation, T: sp.csc_matrix) -> np.ndarray:
+    """Rigid-body modes of the block in reduced coordinates (AMG near-null space)."""
+    d = disc.dim
+    x = disc.nodes
+    modes = []
+    for a in range(d):  # translations
+        u = np.zeros(disc.n_dofs)
+        u[disc.dofs[a]] = 1.0
+        modes.append(u)
+    pairs = [(0, 1)] if d == 2 else [(0, 1), (1, 2), (0, 2)]
+    for a, b in pairs:  # rotations
+        u = np.zeros(disc.n_dofs)
+        u[disc.dofs[a]] = -x[b]
+        u[disc.dofs[b]] = x[a]
+        modes.append(u)
+    full = np.column_stack(modes)
+    # least-squares restriction to the reduced coordinates (exact on untied free dofs)
+    counts = np.asarray(T.sum(axis=0)).ravel()
+    counts[counts == 0] = 1.0
+    return np.asarray(T.T @ full) / counts[:, None]
 
 
 def _rows(B: sp.csr_matrix) -> tuple[np.ndarray, np.ndarray]:

@@ -18,7 +18,7 @@ import scipy.linalg as sla
 
 from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.interface import InterfaceResponse, respond
-from frictionlab.contact.linear import TangentSolver
+from frictionlab.contact.linear import IterativeSolver, TangentSolver
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.subloading import ContactState, SubloadingParams
 
@@ -45,7 +45,7 @@ def newton_step(
     u_guess: np.ndarray,
     f_ext: np.ndarray,
     dt: float,
-    solver: TangentSolver,
+    solver: TangentSolver | IterativeSolver,
     *,
     tangent: str = "consistent",
     tolerance: float = 1e-10,

@@ -19,7 +19,7 @@ from frictionlab.contact.block import Block
 from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.history import ContactHistory
 from frictionlab.contact.interface import TANGENTS, open_state, slip_map
-from frictionlab.contact.linear import TangentSolver
+from frictionlab.contact.linear import LINEAR_SOLVERS, estimate, make_solver
 from frictionlab.contact.loading import NormalLoad, Segment, Stage, plan_stages
 from frictionlab.contact.mesh import Discretisation, discretise
 from frictionlab.contact.newton import newton_step
@@ -54,6 +54,12 @@ class SolverOptions:
     tangent:
         ``"consistent"`` (the law's algorithmic tangent, default) or ``"elastic"`` (its
         elastic moduli, a fixed secant-type stiffness; for comparison).
+    linear_solver:
+        ``"direct"`` (SuperLU, default) or ``"iterative"`` (GMRES + AMG, pyamg): see
+        :mod:`~frictionlab.contact.linear`.
+    memory_limit:
+        Bytes the run may use (the estimate of :func:`~frictionlab.contact.linear.estimate`
+        is checked before meshing); None: no check.
     """
 
     tolerance: float = 1e-10
@@ -62,8 +68,19 @@ class SolverOptions:
     easy_iterations: int = 4
     growth: float = 2.0
     tangent: str = "consistent"
+    linear_solver: str = "direct"
+    memory_limit: float | None = None
 
     def __post_init__(self) -> None:
+        if self.linear_solver not in LINEAR_SOLVERS:
+            raise ParameterError(
+                "linear_solver", self.linear_solver, "one of " + ", ".join(LINEAR_SOLVERS)
+            )
+        limit = self.memory_limit
+        if limit is not None and (
+            isinstance(limit, bool) or not isinstance(limit, int | float) or not limit > 0
+        ):
+            raise ParameterError("memory_limit", limit, "a number of bytes > 0")
         if not (isinstance(self.tolerance, float | int) and 1e-15 <= self.tolerance < 1e-2):
             raise ParameterError("tolerance", self.tolerance, "1e-15 <= tolerance < 1e-2")
         for name, low in (("max_iterations", 1), ("max_cuts", 0), ("easy_iterations", 0)):
@@ -259,6 +276,15 @@ def _run(
         raise ParameterError("drive", drive, "'top' for a force-controlled programme")
     # the snap-back bound of the law at the nominal pressure (for a prescribed
     # displacement, alpha_n d bounds the pressure from above: the block is compliant)
+    if discretisation is None and opts.memory_limit is not None:
+        need = estimate(block, opts.linear_solver)["bytes"]
+        if need > opts.memory_limit:
+            raise ParameterError(
+                "element_size",
+                block.element_size,
+                f"a mesh that fits memory_limit = {opts.memory_limit:.3g} bytes (this one "
+                f"needs about {need:.3g} with the {opts.linear_solver} solver)",
+            )
     disc = discretisation if discretisation is not None else discretise(block)
     if disc.block != block:
         raise ParameterError("discretisation", "another block", "a mesh of this block")
@@ -312,7 +338,7 @@ def _run(
     pinned[pins] = True
     pin_load = np.zeros(disc.n_dofs)
 
-    solver = TangentSolver(disc, pinned, params, ties)
+    solver = make_solver(opts.linear_solver, disc, pinned, params, ties)
     middle = 0.5 * (disc.nodes.min(axis=1) + disc.nodes.max(axis=1))
     gap0 = base.gap(disc.contact_xy, middle[: dim - 1])
     state = open_state(params, disc.n_points, dim, gap=gap0)
@@ -327,7 +353,7 @@ def _run(
             f_now = _external(disc, normal, pressure * to_pressure, shear, dim)
             r = disc.stiffness @ u - f_now - force
             pin_load[pins] = r[pins]
-            solver = TangentSolver(disc, fixed, params, ties)
+            solver = make_solver(opts.linear_solver, disc, fixed, params, ties)
         nominal = 1.0 / stage.steps
         h = nominal
         done = 0.0
