@@ -181,3 +181,19 @@ def test_summary_records_the_newton_residuals_of_every_step(tmp_path: Path) -> N
     assert len(residuals) == len(solver["iterations_per_step"])
     for its, res in zip(solver["iterations_per_step"][1:], residuals[1:], strict=True):
         assert len(res) == its + 1 and res[-1] <= 1e-10  # one per iterate, the last converged
+
+
+@pytest.mark.slow
+def test_bundled_cylinder_partial_slip_runs(tmp_path: Path) -> None:
+    """The bundled Cattaneo-Mindlin example: exit 0, P = the given force, Q/(mu P) = 0.9
+    at the end, today's column names, one interface row per point per global row."""
+    out = tmp_path / "out"
+    with bundled_contact_scenario("cylinder_partial_slip") as scenario:
+        assert main(["contact", str(scenario), "--out", str(out), "--no-plots", "--quiet"]) == 0
+    g = read_csv(out / "global.csv")
+    normal, friction = g["normal_force"][-1], g["tangential_force"][-1]
+    assert normal == pytest.approx(20671.0, rel=1e-9)
+    assert friction / (0.5 * normal) == pytest.approx(0.9, rel=1e-4)  # the file rounds
+    i = read_csv(out / "interface.csv")
+    assert {"row", "x", "traction_n", "R", "status"} <= set(i.columns)
+    assert len(i["row"]) == len(g["time"]) * int(np.sum(i["row"] == 0))

@@ -44,6 +44,7 @@ def run(args: argparse.Namespace) -> int:
                 scenario.program,
                 options=scenario.options,
                 drive=scenario.drive,
+                base=scenario.base,
                 progress=(lambda fraction: progress(round(1000 * fraction), 1000)),
             )
         elapsed = time.perf_counter() - start
@@ -59,8 +60,8 @@ def run(args: argparse.Namespace) -> int:
             f"iterations (at most {int(steps.max(initial=0))} in a step)"
         )
         print(
-            f"peak Q/P = {history.friction_ratio[peak]:.4f} at a top displacement of "
-            f"{history.top_displacement[peak] * 1e6:.3g} um; final Q/P = "
+            f"peak Q/P = {history.friction_ratio[peak]:.4f} at a top travel of "
+            f"{history.travel[peak] * 1e6:.3g} um; final Q/P = "
             f"{history.friction_ratio[-1]:.4f}"
         )
         arrival = front_arrival(history, scenario.front_ratio)

@@ -22,13 +22,15 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from frictionlab.contact.block import ELEMENTS, Block
+from frictionlab.contact.block import ELEMENTS, INTEGRATIONS, Block, Refinement
 from frictionlab.contact.interface import TANGENTS
+from frictionlab.contact.linear import LINEAR_SOLVERS
 from frictionlab.contact.loading import Hold, NormalLoad, Reverse, Segment, Slide, Traction
+from frictionlab.contact.shapes import SHAPES, Base
 from frictionlab.contact.solver import DRIVES, SolverOptions
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import REQUIRED, apply_overrides, load_toml
@@ -55,7 +57,7 @@ _SEGMENTS: dict[str, tuple[type, dict[str, Any]]] = {
     "hold": (Hold, {"duration": REQUIRED, "steps": 5}),
     "traction": (
         Traction,
-        {"target": REQUIRED, "duration": REQUIRED, "steps": 20, "direction_deg": 0.0},
+        {"target": REQUIRED, "duration": REQUIRED, "steps": 20, "direction_deg": 0.0, "cycles": 0},
     ),
 }
 
@@ -75,6 +77,7 @@ class ContactScenario:
     front_ratio: float
     inputs: dict[str, Any]
     source: str = ""
+    base: Base = field(default_factory=Base)
 
 
 def _where(where: str, call: Callable[[], Any]) -> Any:
@@ -105,22 +108,56 @@ def _parse_block(t: TomlTable) -> tuple[Block, dict[str, Any]]:
     values["element"] = t.get(
         "element", str, "quad" if values["depth"] is None else "hex", choices=ELEMENTS
     )
+    values["integration"] = t.get("integration", str, "full", choices=INTEGRATIONS)
+    ref_t = t.table("refinement")
     t.finish()
-    return _where(t.where, lambda: Block(**values)), values
+    echo = dict(values)
+    if ref_t is not None:
+        ref = {
+            "size": _number(ref_t, "size"),
+            "extent": _number(ref_t, "extent"),
+            "center": ref_t.get_list("center", float, None, length=(1, 2)),
+            "growth": _number(ref_t, "growth", 1.2),
+        }
+        ref_t.finish()
+        values["refinement"] = _where(ref_t.where, lambda: Refinement(**ref))
+        echo["refinement"] = ref
+    return _where(t.where, lambda: Block(**values)), echo
+
+
+def _parse_base(t: TomlTable | None) -> tuple[Base, dict[str, Any]]:
+    if t is None:
+        return Base(), {"shape": "flat"}
+    values = {
+        "shape": t.get("shape", str, "flat", choices=SHAPES),
+        "radius": _number(t, "radius", None),
+        "center": t.get_list("center", float, None, length=(1, 2)),
+    }
+    t.finish()
+    if values["shape"] == "profile":
+        raise InputError(f"{t.where}.shape = 'profile' is available from Python only (Base)")
+    return _where(t.where, lambda: Base(**values)), values
 
 
 def _parse_normal(t: TomlTable) -> tuple[NormalLoad, dict[str, Any]]:
     values = {
         "pressure": _number(t, "pressure", None),
         "displacement": _number(t, "displacement", None),
+        "force": _number(t, "force", None),
         "duration": _number(t, "duration", 1.0),
         "steps": _steps(t, 5),
     }
     t.finish()
-    if values["pressure"] is None and values["displacement"] is None:
-        raise InputError(f"missing required key {t.where}.pressure (or {t.where}.displacement)")
-    if values["pressure"] is not None and values["displacement"] is not None:
-        raise InputError(f"{t.where}: give pressure [Pa] or displacement [m], not both")
+    given = [k for k in ("pressure", "displacement", "force") if values[k] is not None]
+    if not given:
+        raise InputError(
+            f"missing required key {t.where}.pressure (or {t.where}.displacement, {t.where}.force)"
+        )
+    if len(given) > 1:
+        raise InputError(
+            f"{t.where}: give exactly one of pressure [Pa], displacement [m] or force "
+            f"[N/m in 2-D, N in 3-D], not {' and '.join(given)}"
+        )
     return _where(t.where, lambda: NormalLoad(**values)), values
 
 
@@ -129,7 +166,10 @@ def _parse_segment(t: TomlTable) -> tuple[Segment, dict[str, Any]]:
     cls, keys = _SEGMENTS[kind]
     values: dict[str, Any] = {}
     for key, default in keys.items():
-        values[key] = _steps(t, default) if key == "steps" else _number(t, key, default)
+        if key in ("steps", "cycles"):
+            values[key] = int(t.get(key, int, default))
+        else:
+            values[key] = _number(t, key, default)
     t.finish()
     if kind == "slide" and (values["distance"] is None) == (values["duration"] is None):
         raise InputError(f"{t.where}: a slide needs exactly one of distance [m] or duration [s]")
@@ -148,6 +188,8 @@ def _parse_solver(t: TomlTable | None) -> tuple[SolverOptions, str, dict[str, An
         "easy_iterations": t.get("easy_iterations", int, d["easy_iterations"]),
         "growth": t.get("growth", float, d["growth"]),
         "tangent": t.get("tangent", str, d["tangent"], choices=TANGENTS),
+        "linear_solver": t.get("linear_solver", str, d["linear_solver"], choices=LINEAR_SOLVERS),
+        "memory_limit": t.get("memory_limit", float, d["memory_limit"]),
     }
     drive = t.get("drive", str, "top", choices=DRIVES)
     t.finish()
@@ -166,11 +208,14 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
     program_ts = root.tables("program", required=True)
     solver_t = root.table("solver")
     output_t = root.table("output")
+    base_t = root.table("base")
     root.finish()
     assert block_t is not None and law_t is not None and normal_t is not None
     if not program_ts:
         raise InputError("[[program]] must hold at least one segment")
     block, block_echo = _parse_block(block_t)
+    base, base_echo = _parse_base(base_t)
+    _where("[base]", lambda: base.check_dim(block.dim))
     params, _ = parse_law_table(law_t.mapping(), law_t.where)
     normal, normal_echo = _parse_normal(normal_t)
     parsed = [_parse_segment(t) for t in program_ts]
@@ -197,12 +242,19 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
         )
     if drive == "rigid" and control != "slide":
         raise InputError("[solver].drive = 'rigid' needs a displacement-controlled programme")
-    nominal = normal.value if normal.control == "pressure" else normal.value * float(params.alpha_n)
+    if normal.control == "pressure":
+        nominal = normal.value
+    elif normal.control == "force":
+        area = block.width * (block.depth or 1.0)
+        nominal = normal.value / area
+    else:
+        nominal = normal.value * float(params.alpha_n)
     _where("[law]", lambda: check_snap_back(params, nominal))
     inputs = {
         "title": title,
         "description": description,
         "block": block_echo,
+        "base": base_echo,
         "law": {
             k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in params.as_dict().items()
         },
@@ -223,6 +275,7 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
         front_ratio=front_ratio,
         inputs=inputs,
         source=source,
+        base=base,
     )
 
 
