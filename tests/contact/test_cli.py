@@ -197,3 +197,28 @@ def test_bundled_cylinder_partial_slip_runs(tmp_path: Path) -> None:
     i = read_csv(out / "interface.csv")
     assert {"row", "x", "traction_n", "R", "status"} <= set(i.columns)
     assert len(i["row"]) == len(g["time"]) * int(np.sum(i["row"] == 0))
+
+
+def test_output_fields_write_a_paraview_series(tmp_path: Path) -> None:
+    """[output] fields = true writes fields/block.pvd, fields/interface.pvd and one .vtu
+    per recorded row, readable by meshio, with the interface tractions summing to P."""
+    meshio = pytest.importorskip("meshio")
+    with bundled_contact_scenario("pmma_block") as path:
+        text = path.read_text()
+    scenario = tmp_path / "fields.toml"
+    scenario.write_text(text + "\n[output]\nfields = true\n")
+    out = tmp_path / "out"
+    args = ["contact", str(scenario), "--out", str(out), "--no-plots", "--quiet",
+            "--set", "block.element_size=0.0125", "--set", "program.1.steps=5"]  # fmt: skip
+    assert main([*args, "--set", "program.3.steps=5"]) == 0
+    g = read_csv(out / "global.csv")
+    assert (out / "fields" / "block.pvd").is_file()
+    last = len(g["time"]) - 1
+    face = meshio.read(out / "fields" / f"interface_{last:04d}.vtu")
+    block = meshio.read(out / "fields" / f"block_{last:04d}.vtu")
+    assert block.point_data["displacement"].shape[1] == 3
+    assert "stress" in block.cell_data
+    weights = np.full(face.points.shape[0], 0.1 / face.points.shape[0])  # uniform Gauss weights
+    assert np.sum(weights * face.point_data["traction_n"]) == pytest.approx(
+        g["normal_force"][-1], rel=1e-9
+    )

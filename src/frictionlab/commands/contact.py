@@ -35,7 +35,10 @@ def run(args: argparse.Namespace) -> int:
     scenario = load_contact_scenario(args.scenario, args.set)  # every input check is here
     require_skfem()
     with output_set(out, args.overwrite) as oset:
+        from frictionlab.contact import discretise
+
         start = time.perf_counter()
+        disc = discretise(scenario.block)
         with progress_bar(f"contact {args.scenario.name}", enabled=not args.quiet) as progress:
             history = run_contact(
                 scenario.block,
@@ -45,12 +48,24 @@ def run(args: argparse.Namespace) -> int:
                 options=scenario.options,
                 drive=scenario.drive,
                 base=scenario.base,
+                discretisation=disc,
+                record_displacement=scenario.fields,
                 progress=(lambda fraction: progress(round(1000 * fraction), 1000)),
             )
         elapsed = time.perf_counter() - start
         paths = write_contact_results(
             oset.staging, scenario, history, elapsed, plots=not args.no_plots
         )
+        if scenario.fields:  # [output] fields: .vtu per step + .pvd for ParaView
+            from frictionlab.contact.fields import field_frames
+            from frictionlab.io.mesh_files import write_field_series
+
+            frames = field_frames(history, disc)
+            folder = oset.staging / "fields"
+            paths.append(write_field_series(folder, "block", [(f.time, f.block) for f in frames]))
+            paths.append(
+                write_field_series(folder, "interface", [(f.time, f.interface) for f in frames])
+            )
         paths = [oset.shown(p) for p in paths]
     if not args.quiet:
         peak = history.peak_index

@@ -78,6 +78,7 @@ class ContactScenario:
     inputs: dict[str, Any]
     source: str = ""
     base: Base = field(default_factory=Base)
+    fields: bool = False
 
 
 def _where(where: str, call: Callable[[], Any]) -> Any:
@@ -222,7 +223,9 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
     program = tuple(seg for seg, _ in parsed)
     options, drive, solver_echo = _parse_solver(solver_t)
     front_ratio = 0.99
+    write_fields = False
     if output_t is not None:
+        write_fields = output_t.get("fields", bool, False)
         front_ratio = output_t.get(
             "front_ratio",
             float,
@@ -261,7 +264,7 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
         "normal": normal_echo,
         "program": [echo for _, echo in parsed],
         "solver": solver_echo,
-        "output": {"front_ratio": front_ratio},
+        "output": {"front_ratio": front_ratio, "fields": write_fields},
     }
     return ContactScenario(
         title=title,
@@ -276,6 +279,7 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
         inputs=inputs,
         source=source,
         base=base,
+        fields=write_fields,
     )
 
 
