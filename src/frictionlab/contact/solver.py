@@ -27,13 +27,14 @@ from frictionlab.contact.shapes import Base
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import ContactState, SubloadingParams, check_snap_back
 
-__all__ = ["DRIVES", "SolverOptions", "run_contact"]
+__all__ = ["DRIVES", "SolverOptions", "check_memory", "run_contact"]
 
 #: How the tangential displacement is imposed: on the top edge (default), or on every
 #: node (a rigidly translated block: a verification case that isolates the interface).
 DRIVES: tuple[str, ...] = ("top", "rigid")
 
-ProgressCallback = Callable[[float], None]
+#: ``progress(done, total)``: the time done, in thousandths of the programme's duration.
+ProgressCallback = Callable[[int, int], None]
 
 
 @dataclass(frozen=True)
@@ -194,6 +195,20 @@ class _Recorder:
         )
 
 
+def check_memory(block: Block, options: SolverOptions) -> None:
+    """Refuse ``block`` when the solver's estimated storage exceeds ``memory_limit``."""
+    if options.memory_limit is None:
+        return
+    need = estimate(block, options.linear_solver)["bytes"]
+    if need > options.memory_limit:
+        raise ParameterError(
+            "element_size",
+            block.element_size,
+            f"a mesh that fits memory_limit = {options.memory_limit:.3g} bytes (this one "
+            f"needs about {need:.3g} with the {options.linear_solver} solver)",
+        )
+
+
 def run_contact(
     block: Block,
     params: SubloadingParams | Frictionless,
@@ -221,7 +236,8 @@ def run_contact(
         ``"top"`` (default) or ``"rigid"`` (every node moved along x; displacement
         control only) — see :data:`DRIVES`.
     progress:
-        Called with the fraction of the total time done after every step.
+        Called as ``progress(done, 1000)`` after every step, ``done`` the thousandths
+        of the programme's time completed (the one progress convention).
     discretisation:
         A prebuilt mesh of ``block`` (else built here).
     base:
@@ -276,15 +292,8 @@ def _run(
         raise ParameterError("drive", drive, "'top' for a force-controlled programme")
     # the snap-back bound of the law at the nominal pressure (for a prescribed
     # displacement, alpha_n d bounds the pressure from above: the block is compliant)
-    if discretisation is None and opts.memory_limit is not None:
-        need = estimate(block, opts.linear_solver)["bytes"]
-        if need > opts.memory_limit:
-            raise ParameterError(
-                "element_size",
-                block.element_size,
-                f"a mesh that fits memory_limit = {opts.memory_limit:.3g} bytes (this one "
-                f"needs about {need:.3g} with the {opts.linear_solver} solver)",
-            )
+    if discretisation is None:
+        check_memory(block, opts)
     disc = discretisation if discretisation is not None else discretise(block)
     if disc.block != block:
         raise ParameterError("discretisation", "another block", "a mesh of this block")
@@ -420,7 +429,7 @@ def _run(
             if outcome.iterations <= opts.easy_iterations:
                 h = min(h_try * opts.growth, nominal)
             if progress is not None:
-                progress(min(t / total_time, 1.0))
+                progress(round(1000 * min(t / total_time, 1.0)), 1000)
     return rec.history(True, "completed", stages)
 
 

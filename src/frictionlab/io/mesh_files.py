@@ -17,6 +17,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from frictionlab.errors import InputError
 from frictionlab.io.atomic import atomic_path, write_bytes_atomic
 
@@ -72,6 +74,13 @@ def write_field_series(
     collection = ET.SubElement(root, "Collection")
     for k, (time, mesh) in enumerate(frames):
         file_name = f"{name}_{k:04d}.vtu"
+        points = np.asarray(mesh.points, dtype=np.float64)
+        if points.shape[1] < 3:  # VTK points are 3-D (meshio would warn and pad)
+            flat = np.zeros((points.shape[0], 3 - points.shape[1]))
+            mesh = meshio.Mesh(
+                np.hstack([points, flat]), mesh.cells,
+                point_data=mesh.point_data, cell_data=mesh.cell_data,
+            )  # fmt: skip
         with atomic_path(folder / file_name) as tmp:
             meshio.write(tmp, mesh, file_format="vtu")
         ET.SubElement(
