@@ -244,7 +244,7 @@ def test_mu_zero_is_the_frictionless_interface(tmp_path: Path) -> None:
     scenario = tmp_path / "frictionless.toml"
     scenario.write_text(head + law + "[normal]" + rest.split("[normal]")[1])
     out = tmp_path / "run"
-    code = main(["contact", str(scenario), "--out", str(out), "--quiet",
+    code = main(["contact", str(scenario), "--out", str(out), "--quiet", "--no-plots",
                  "--set", "block.element_size=0.0125", "--set", "program.1.steps=3",
                  "--set", "program.3.steps=2"])  # fmt: skip
     assert code == 0
