@@ -22,6 +22,7 @@ import numpy as np
 
 from frictionlab import __version__
 from frictionlab.driver import (
+    DriverSettings,
     Slide,
     SpringSlider,
     Turn,
@@ -91,7 +92,7 @@ def accuracy() -> dict[str, float]:
         rows = h.segments[1].first_row - 1 + every * np.arange(9)  # type: ignore[attr-defined]
         return float(np.max(np.abs(h.traction[rows, 0] - ref.traction[rows_ref, 0])))  # type: ignore[attr-defined]
 
-    controlled = simulate(PARAMS, prog(8), accuracy=1e-5)
+    controlled = simulate(PARAMS, prog(8), settings=DriverSettings(accuracy=1e-5))
     err_c = error(controlled, 1)
     # the uniform step count that reaches the same error
     for steps in (64, 128, 256, 512, 1024, 2048, 4096, 8192):
@@ -99,7 +100,7 @@ def accuracy() -> dict[str, float]:
         err_u = error(uniform, steps // 8)
         if err_u <= err_c:
             break
-    t_c = best_of(lambda: simulate(PARAMS, prog(8), accuracy=1e-5))
+    t_c = best_of(lambda: simulate(PARAMS, prog(8), settings=DriverSettings(accuracy=1e-5)))
     t_u = best_of(lambda: simulate(PARAMS, prog(steps)))
     return {"controlled_error": err_c, "controlled_solves": controlled.work["solves"],
             "uniform_steps_for_same_error": steps, "uniform_error": err_u,

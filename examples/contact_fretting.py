@@ -48,7 +48,7 @@ def run(params: SubloadingParams):  # type: ignore[no-untyped-def]
     ]
     history = run_contact(
         block, params, NormalLoad(force=P, steps=4), program,
-        base=Base("cylinder", radius=R), options=SolverOptions(tolerance=1e-8),
+        base=Base("cylinder", radius=R), settings=SolverOptions(tolerance=1e-8),
     )  # fmt: skip
     if not history.success:  # the rows before a failed step are kept and plotted
         print(f"stopped early: {history.message}")

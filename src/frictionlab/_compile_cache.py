@@ -5,7 +5,8 @@ read-only installs, and keys each entry on the time stamp of the function's own 
 a kernel that calls a function of another module is not recompiled when that module
 changes (a stale compiled caller). So frictionlab points numba at a per-user cache
 directory *keyed on the package version and a hash of every source file that uses numba*
-(kernels call only kernels, and those live in files that import numba):
+(kernels call only kernels, and those live in files that import numba, through
+:mod:`frictionlab._jit`):
 
     <user cache>/frictionlab/numba/<version>-<source hash>/
 
@@ -16,8 +17,9 @@ about a minute on a 2-core machine), so no stale compiled code is ever loaded; e
 elsewhere (CLI, I/O) keep the cache. ``FRICTIONLAB_CACHE_DIR`` overrides the location
 (the key is still appended); a user's own ``NUMBA_CACHE_DIR`` is respected as it is.
 
-Stale directories (other versions or sources) are removed when frictionlab is imported,
-only when this is certainly safe (POSIX only): the name has the ``<version>-<hash>``
+Stale directories (other versions or sources) are removed when the first kernel module
+is imported (:mod:`frictionlab._jit` calls :func:`configure`; ``import frictionlab`` alone
+does not), only when this is certainly safe (POSIX only): the name has the ``<version>-<hash>``
 form, every file inside is a numba cache file (``.nbi``/``.nbc``) or frictionlab's own
 lock file, and no process is using it. A process holds a shared lock on the lock file of
 the directory it uses for as long as it runs; a directory is removed only under an
@@ -55,11 +57,12 @@ UNLOCKED_GRACE_S = 86400.0
 
 
 def source_hash() -> str:
-    """SHA-256 (first 16 hex digits) over the names and bytes of the ``.py`` files using numba."""
+    """SHA-256 (first 16 hex digits) over the names and bytes of the ``.py`` files using numba
+    (directly or through :mod:`frictionlab._jit`)."""
     digest = hashlib.sha256()
     for path in sorted(_PACKAGE.rglob("*.py")):
         data = path.read_bytes()
-        if b"numba" not in data:
+        if b"numba" not in data and b"frictionlab._jit" not in data:
             continue
         digest.update(path.relative_to(_PACKAGE).as_posix().encode())
         digest.update(b"\0")

@@ -13,6 +13,7 @@ import numpy as np
 
 __all__ = [
     "DIMENSIONLESS",
+    "TableResult",
     "column_title",
     "normalise_unit",
     "short_repr",
@@ -77,3 +78,32 @@ def short_repr(obj: Any, columns: Mapping[str, np.ndarray]) -> str:
             parts.append(f"{f.name}={text if len(text) <= 40 else text[:37] + '...'}")
     fields = "; " + ", ".join(parts) if parts else ""
     return f"{type(obj).__name__}({rows} rows x {len(columns)} columns{fields})"
+
+
+class TableResult:
+    """Mixin of every result object that reads as a table.
+
+    A subclass defines :meth:`columns` (name -> 1-D array, masked where undefined) and
+    :meth:`units`; the mixin gives :meth:`to_dataframe` (the titles of the CSV files) and
+    a one-line repr. A dataclass using it passes ``repr=False`` so that repr is kept.
+    """
+
+    __slots__ = ()
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """The result as named columns of equal length."""
+        raise NotImplementedError
+
+    def units(self) -> dict[str, str]:
+        """The unit of each of :meth:`columns` (``-``: dimensionless)."""
+        raise NotImplementedError
+
+    def to_dataframe(self) -> Any:
+        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
+
+        Undefined (masked) values become NaN; pandas is imported on call.
+        """
+        return to_dataframe(self.columns(), self.units())
+
+    def __repr__(self) -> str:
+        return short_repr(self, self.columns())

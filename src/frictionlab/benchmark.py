@@ -47,10 +47,9 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-import numba
 import numpy as np
-from numba import njit, prange
 
+from frictionlab._jit import njit, numba, prange
 from frictionlab._version import __version__
 
 __all__ = ["coulomb_return", "run"]

@@ -6,9 +6,10 @@ user can fix the input without reading the code.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
+if TYPE_CHECKING:  # numpy is imported when an error is made, not with frictionlab
+    import numpy as np
 
 __all__ = [
     "ConvergenceError",
@@ -63,6 +64,8 @@ class ConvergenceError(FrictionlabError):
     """
 
     def __init__(self, message: str, mask: np.ndarray, result: Any = None) -> None:
+        import numpy as np
+
         self.mask = np.asarray(mask, dtype=bool)
         self.result = result
         n_failed = int(self.mask.sum())
@@ -71,6 +74,8 @@ class ConvergenceError(FrictionlabError):
 
 def _short(value: Any) -> str:
     """Render a value compactly for an error message."""
+    import numpy as np
+
     arr = np.asarray(value) if not isinstance(value, str) else None
     if arr is not None and arr.ndim > 0 and arr.size > 6:
         return f"array(shape={arr.shape}, first={arr.ravel()[:3].tolist()}...)"

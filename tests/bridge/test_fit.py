@@ -97,6 +97,7 @@ def _ratchet(angles: tuple[float, float]) -> DirectionalFriction:
     return DirectionalFriction.from_polar(polar)
 
 
+@pytest.mark.slow
 def test_ratchet_gives_a_rotation_vector_with_the_geometric_sign() -> None:
     """Sign from the geometry, not from the code.
 

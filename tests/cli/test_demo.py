@@ -20,6 +20,9 @@ from matplotlib import image as mpimg
 from frictionlab.cli import main
 from frictionlab.demo import bundled_scenarios, default_builders
 
+#: The whole demo runs once for this module (minutes on a 2-core machine).
+pytestmark = pytest.mark.slow
+
 
 class Page(HTMLParser):
     """Checks well-formedness and collects images, captions and tables per section."""

@@ -125,6 +125,7 @@ def test_pressure_dependence_with_a_surface_override(tmp_path: Path) -> None:
     np.testing.assert_allclose(final, M * np.sqrt(3.0 * (1.0 - fn / F)), rtol=1e-9)
 
 
+@pytest.mark.slow
 def test_stick_slip_scenario_regimes(tmp_path: Path) -> None:
     assert simulate("stick_slip", tmp_path, "--no-plots") == 0
     s = summary(tmp_path)["stick_slip"]
@@ -156,6 +157,7 @@ steps = 8
 """
 
 
+@pytest.mark.slow
 def test_substepping_makes_a_coarse_run_agree_with_a_fine_run(tmp_path: Path) -> None:
     scenario = tmp_path / "turn.toml"
     scenario.write_text(TURN)
@@ -178,6 +180,7 @@ def test_substepping_makes_a_coarse_run_agree_with_a_fine_run(tmp_path: Path) ->
     assert work["refined_for_accuracy"] > 0 and work["substeps"] > 58
 
 
+@pytest.mark.slow
 def test_outputs_of_a_2d_programme(tmp_path: Path) -> None:
     assert simulate("orthotropy", tmp_path) == 0
     for name in ("friction.png", "traction_path.png"):

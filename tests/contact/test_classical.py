@@ -56,7 +56,7 @@ def _run(size: float, program: list[Traction], nu: float = NU):  # type: ignore[
     p = A**2 * np.pi * block.E / (1 - nu**2) / (4.0 * R)
     history = run_contact(
         block, _law(), NormalLoad(force=p, steps=4), program,
-        base=Base("cylinder", radius=R), options=SolverOptions(tolerance=1e-8),
+        base=Base("cylinder", radius=R), settings=SolverOptions(tolerance=1e-8),
     )  # fmt: skip
     assert history.success, history.message
     return history

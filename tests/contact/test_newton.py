@@ -46,13 +46,13 @@ def test_newton_converges_quadratically_with_the_consistent_tangent() -> None:
 def test_the_elastic_tangent_needs_many_more_iterations_and_converges_linearly() -> None:
     """The law's elastic moduli (a fixed secant-type stiffness) instead of its tangent."""
     tight = SolverOptions(tolerance=1e-8, max_iterations=60, max_cuts=0)
-    consistent = run_contact(pmma_block(), law(), NORMAL, SLIDE, options=tight)
+    consistent = run_contact(pmma_block(), law(), NORMAL, SLIDE, settings=tight)
     elastic = run_contact(
         pmma_block(),
         law(),
         NORMAL,
         SLIDE,
-        options=SolverOptions(tangent="elastic", tolerance=1e-8, max_iterations=60, max_cuts=0),
+        settings=SolverOptions(tangent="elastic", tolerance=1e-8, max_iterations=60, max_cuts=0),
     )
     assert consistent.success, consistent.message
     rows = elastic.n_rows  # rows the elastic run completed

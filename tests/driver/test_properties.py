@@ -9,6 +9,7 @@ from hypothesis import strategies as st
 
 from frictionlab.driver import (
     Cycle,
+    DriverSettings,
     Hold,
     InitialConditions,
     NormalStep,
@@ -63,7 +64,7 @@ segment = st.one_of(
          beta=2.2250738585072014e-308, c2=0.5)  # fmt: skip
 def test_invariants_hold_after_every_step(program: list, beta: float, c2: float) -> None:  # type: ignore[type-arg]
     params = set_a(rotation=(beta, 0.0), orthotropy=(1.0, c2))
-    h = simulate(params, tuple(program), accuracy=None)
+    h = simulate(params, tuple(program), settings=DriverSettings(accuracy=None))
     # every recorded value is finite, F and R stay in range, time and u^p never decrease
     for arr in (h.time, h.slip, h.traction, h.F, h.R, h.plastic_slip, h.dissipation):
         assert np.all(np.isfinite(arr))

@@ -202,6 +202,7 @@ def _drive(steps: int, chunk: int, keep: int) -> tuple[Recorder, int, int]:
     return rec, peak, written[0]
 
 
+@pytest.mark.slow
 def test_the_recorders_memory_does_not_grow_with_the_step_count() -> None:
     """Held rows never exceed chunk + keep (+ segment ends); traced memory stays flat.
 

@@ -8,6 +8,7 @@ import pytest
 import frictionlab.driver.stepping as stepping
 from frictionlab.driver import (
     Cycle,
+    DriverSettings,
     Hold,
     InitialConditions,
     NormalStep,
@@ -197,7 +198,7 @@ def _coarse_vs_fine(accuracy: float | None) -> float:
         )
 
     fine = simulate(params, prog(8000))
-    coarse = simulate(params, prog(8), accuracy=accuracy)
+    coarse = simulate(params, prog(8), settings=DriverSettings(accuracy=accuracy))
     assert coarse.success
     rows_f = fine.segments[1].first_row - 1 + 1000 * np.arange(9)
     rows_c = coarse.segments[1].first_row - 1 + np.arange(9)
@@ -212,7 +213,11 @@ def test_accuracy_control_makes_a_coarse_run_agree_with_a_fine_run() -> None:
 
 def test_accuracy_control_records_its_work() -> None:
     params = set_a(F_integrator="backward_euler")  # first order in the step: refinement needed
-    h = simulate(params, (Slide(velocity=0.1, distance=0.2, steps=4),), accuracy=1e-4)
+    h = simulate(
+        params,
+        (Slide(velocity=0.1, distance=0.2, steps=4),),
+        settings=DriverSettings(accuracy=1e-4),
+    )
     assert h.work["refined_for_accuracy"] >= 1
     assert h.work["substeps"] == int(h.substeps.sum()) > 8
     assert h.work["solves"] == int(h.solves.sum()) > h.work["substeps"]
@@ -254,7 +259,11 @@ def test_a_failure_that_substepping_cannot_cure_stops_the_run(
         )
 
     monkeypatch.setattr(stepping, "update", broken)
-    h = simulate(set_a(), (Slide(velocity=0.1, distance=0.1, steps=100),), max_halvings=3)
+    h = simulate(
+        set_a(),
+        (Slide(velocity=0.1, distance=0.1, steps=100),),
+        settings=DriverSettings(max_halvings=3),
+    )
     assert not h.success and "segment #1 (slide)" in h.message and "local solve" in h.message
     k = h.n_rows - 1
     assert 0 < k < 100 and h.plastic_slip[-1, 0] >= 0.01 > h.plastic_slip[-2, 0]
@@ -270,7 +279,7 @@ def test_progress_callback_and_input_validation() -> None:
     )
     assert calls == [(k, 5) for k in range(1, 6)]
     with pytest.raises(ParameterError, match="accuracy"):
-        simulate(set_a(), (Hold(duration=1.0),), accuracy=-1.0)
+        simulate(set_a(), (Hold(duration=1.0),), settings=DriverSettings(accuracy=-1.0))
     with pytest.raises(ParameterError, match="number of points"):
         simulate(set_a(mu_s=[0.5, 0.6]), (Hold(duration=[1.0, 2.0, 3.0]),))
     with pytest.raises(ParameterError, match="program"):

@@ -40,6 +40,7 @@ def test_critical_stiffness_closed_forms() -> None:
     assert critical_stiffness(params, 1e-3, 0.2)[0] == pytest.approx(expected, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_quasi_static_regimes_in_one_run() -> None:
     """Soft machine at 1 mm/s: stick-slip. Just above k_c, or the soft machine at 1 m/s:
     steady sliding at mu_ss(V). Just below k_c: stick-slip. (20 m of load-point travel.)"""

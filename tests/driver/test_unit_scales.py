@@ -79,6 +79,7 @@ def run(data: dict[str, Any]) -> Any:
     return run_scenario(parse_scenario(data))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", bundled_scenarios())
 def test_the_same_run_at_other_unit_scales_gives_the_same_friction(name: str) -> None:
     data = load(name)

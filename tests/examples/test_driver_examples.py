@@ -7,10 +7,12 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
+@pytest.mark.slow
 def test_slide_hold_slide_example(tmp_path: Path) -> None:
     out = subprocess.run(
         [sys.executable, str(EXAMPLES / "slide_hold_slide.py"), str(tmp_path)],
@@ -25,6 +27,7 @@ def test_slide_hold_slide_example(tmp_path: Path) -> None:
     assert (tmp_path / "friction.png").stat().st_size > 1000
 
 
+@pytest.mark.slow
 def test_stick_slip_example(tmp_path: Path) -> None:
     out = subprocess.run(
         [sys.executable, str(EXAMPLES / "stick_slip.py"), str(tmp_path)],

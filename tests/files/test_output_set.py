@@ -136,6 +136,7 @@ _WRITER = textwrap.dedent(
 )
 
 
+@pytest.mark.slow
 def test_kill_9_at_random_moments_leaves_a_complete_set(tmp_path: Path) -> None:
     out = tmp_path / "out"
     rng = random.Random(13)

@@ -6,11 +6,13 @@ import json
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from frictionlab.benchmark import coulomb_return
 from frictionlab.cli import main
 
 
+@pytest.mark.slow
 def test_bench_writes_every_figure(tmp_path: Path) -> None:
     path = tmp_path / "bench.json"
     args = ["bench", "--points", "400", "--lattice-size", "16", "--no-first-call"]

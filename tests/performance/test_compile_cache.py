@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 import frictionlab
 from frictionlab import _compile_cache
 
@@ -33,6 +35,7 @@ def test_cache_is_written_under_the_user_cache_keyed_on_the_sources(tmp_path: Pa
     assert list(used.rglob("*g_value*.nbi"))  # the compiled function was cached there
 
 
+@pytest.mark.slow
 def test_unwritable_location_falls_back_and_user_setting_is_respected(tmp_path: Path) -> None:
     blocked = tmp_path / "file"
     blocked.write_text("not a directory")
@@ -103,10 +106,12 @@ def test_folder_without_lock_file_is_removed_only_when_old(tmp_path: Path) -> No
     assert _compile_cache.prune(tmp_path, keep="x") == [KEY_A]
 
 
-def test_import_prunes_stale_siblings(tmp_path: Path) -> None:
+def test_first_kernel_use_prunes_stale_siblings(tmp_path: Path) -> None:
+    """The set-up runs when the first kernel module is imported (import frictionlab
+    alone does not touch the cache: tests/performance/test_import.py)."""
     root = tmp_path / "frictionlab" / "numba"
     stale = _stale(root, KEY_A)
-    probe = "import frictionlab, numba.core.config as c; print(c.CACHE_DIR)"
+    probe = "import frictionlab._jit, numba.core.config as c; print(c.CACHE_DIR)"
     used = Path(_run({"XDG_CACHE_HOME": str(tmp_path), "FRICTIONLAB_CACHE_DIR": ""}, probe))
     assert used.parent == root and used.exists() and not stale.exists()
     assert (used / _compile_cache.LOCK_NAME).exists()

@@ -28,6 +28,7 @@ CASES = {
 }  # fmt: skip
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(CASES))
 def test_explicit_integration_converges_to_the_implicit_update_at_first_order(name: str) -> None:
     factory, changes, fn = CASES[name]

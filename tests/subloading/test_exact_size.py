@@ -90,6 +90,7 @@ def _law(form: str, m: float, n: float) -> SubloadingParams:
                             recovery_form=form)  # fmt: skip
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("form", "m", "n"), [("one_minus", 2.0, 0.5), ("ratio", 2.0, 0.5),
                                               ("ratio", 1.0, 1.0)])  # fmt: skip
 def test_few_large_steps_give_the_answer_of_many_small_ones(form: str, m: float, n: float) -> None:

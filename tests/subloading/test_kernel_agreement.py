@@ -71,6 +71,7 @@ def _run(kernel, params, state, du, dt, tangent: bool) -> dict[str, np.ndarray]:
     return out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(CASES))
 def test_compiled_kernels_equal_the_interpreted_definition(name: str) -> None:
     params = SubloadingParams(**CASES[name])  # type: ignore[arg-type]
@@ -94,6 +95,7 @@ def test_compiled_kernels_equal_the_interpreted_definition(name: str) -> None:
                                                err_msg=f"{name}: {key}")  # fmt: skip
 
 
+@pytest.mark.slow
 def test_update_options_give_the_same_state() -> None:
     """Parallel (large N), no tangent, and preallocated buffers: one and the same update."""
     params = SubloadingParams(**CASES["cone"])  # type: ignore[arg-type]

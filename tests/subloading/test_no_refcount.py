@@ -90,12 +90,14 @@ def test_detector_passes_a_scalar_helper():
     assert _refcount_calls(helper, (numba.float64,)) == 0
 
 
+@pytest.mark.slow
 def test_law_point_function_has_no_refcounting():
     callers = (law_kernels.step_points,)
     for sig in _signatures(law_kernels._point, _law_run, callers):
         assert _refcount_calls(law_kernels._point, sig) == 0
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "name", ["_accumulate_row", "_accumulate_lean", "_difference", "_mean_force", "_force_sum"]
 )

@@ -40,6 +40,7 @@ def read_table(out: Path) -> pd.DataFrame:
     return pd.read_csv(out / "sweep.csv", keep_default_na=False)
 
 
+@pytest.mark.slow
 def test_grid_runs_every_case_into_its_own_directory(tmp_path: Path, capsys) -> None:
     sweep = write_sweep(
         tmp_path,
@@ -100,6 +101,7 @@ def test_a_failed_case_is_recorded_and_the_sweep_goes_on(tmp_path: Path) -> None
     assert (out / "cases" / table["id"][2] / "polar.csv").is_file()
 
 
+@pytest.mark.slow
 def test_killed_sweep_resumes_without_losing_or_repeating(tmp_path: Path) -> None:
     sweep = write_sweep(
         tmp_path, '[grid]\n"program.2.duration" = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]\n', steps=1000,
@@ -239,6 +241,7 @@ def test_a_task_carries_the_base_and_the_files_it_names(tmp_path: Path) -> None:
     assert np.array_equal(history.to_numpy(), expected.to_numpy())
 
 
+@pytest.mark.slow
 def test_a_changed_table_reruns_the_cases_that_read_it(tmp_path: Path) -> None:
     sweep = _table_sweep(tmp_path, 0.05)
     out = tmp_path / "out"

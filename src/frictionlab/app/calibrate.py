@@ -27,23 +27,15 @@ from frictionlab.calibration import (
     FitResult,
     Profile,
 )
+from frictionlab.calibration.fit import parameter_unit
 from frictionlab.io.atomic import write_text_atomic
-from frictionlab.io.calibration_config import CalibrationConfig
 from frictionlab.io.config import format_toml
 from frictionlab.io.report import Report, Section, format_value
-from frictionlab.io.scenario import law_table
 from frictionlab.io.tables import write_csv_atomic
+from frictionlab.schema.calibrate import CalibrationConfig
+from frictionlab.schema.scenario import law_table
 
 __all__ = ["CALIBRATE", "CalibrationRun", "identifiability", "parameter_unit", "write_calibration"]
-
-_CONE_UNITS = {"mu_s": "-", "mu_k": "-", "u": "1/m", "kappa": "1/m", "xi": "1/s"}
-_CLOSED_UNITS = {"F_s": "Pa", "F_k": "Pa", "M": "-", "u": "1/m", "kappa": "Pa/m", "xi": "Pa/s"}
-
-
-def parameter_unit(name: str, cone: bool) -> str:
-    """The unit of a law parameter (``-`` for dimensionless ones)."""
-    table = _CONE_UNITS if cone else _CLOSED_UNITS
-    return table.get(name, "Pa/m" if name.startswith("alpha") else "-")
 
 
 @dataclass(frozen=True)
@@ -286,9 +278,9 @@ class Calibrate:
     aliases: tuple[str, ...] = ("fit.json",)
 
     def parse(self, args: argparse.Namespace, out: Path) -> tuple[CalibrationConfig, Path]:
-        from frictionlab.io.calibration_config import load_calibration
+        from frictionlab.schema.calibrate import load_calibrate
 
-        return load_calibration(args.config, args.set), Path(args.config)
+        return load_calibrate(args.config, args.set), Path(args.config)
 
     def run(self, job: Any, progress: ProgressFactory, staging: Path) -> CalibrationRun:
         from frictionlab.calibration import evaluate_columns, fit_law, profile_likelihood

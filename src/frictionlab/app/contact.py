@@ -19,11 +19,11 @@ import numpy as np
 from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
 from frictionlab.app.outputs import write_outputs
-from frictionlab.contact.history import ContactHistory, front_arrival, slip_front
+from frictionlab.contact.history import ContactHistory, front_arrival
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.driver.simulate import status_labels
-from frictionlab.io.contact_scenario import ContactScenario
 from frictionlab.io.tables import write_csv_atomic
+from frictionlab.schema.contact import ContactScenario
 
 __all__ = ["CONTACT", "contact_summary", "run_contact_scenario", "write_contact_results"]
 
@@ -31,29 +31,7 @@ __all__ = ["CONTACT", "contact_summary", "run_contact_scenario", "write_contact_
 def _global_columns(
     history: ContactHistory, ratio: float
 ) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    three = history.dim == 3
-    cols: dict[str, np.ndarray] = {"time": history.time, "stage": history.stage}
-    cols["top_displacement"] = history.top_displacement
-    if three:
-        cols["top_displacement_y"] = history.top_displacement_y
-    cols["top_shear"] = history.top_shear
-    if three:
-        cols["top_shear_y"] = history.top_shear_y
-    cols["tangential_force"] = history.tangential_force
-    if three:
-        cols["tangential_force_y"] = history.tangential_force_y
-    cols["normal_force"] = history.normal_force
-    cols["friction_ratio"] = history.friction_ratio
-    cols["slip_front"] = slip_front(history, ratio)
-    cols["iterations"] = history.iterations
-    cols["cuts"] = history.cuts
-    force = "N/m" if not three else "N"
-    units = {
-        "time": "s", "top_displacement": "m", "top_displacement_y": "m", "top_shear": "Pa",
-        "top_shear_y": "Pa", "tangential_force": force, "tangential_force_y": force,
-        "normal_force": force, "slip_front": "m",
-    }  # fmt: skip
-    return cols, {k: v for k, v in units.items() if k in cols}
+    return history.columns(ratio), history.units()
 
 
 def _interface_columns(
@@ -183,7 +161,7 @@ def run_contact_scenario(
 
     return run_contact(
         scenario.block, scenario.params, scenario.normal, scenario.program,
-        options=scenario.options, drive=scenario.drive, progress=progress,
+        settings=scenario.options, drive=scenario.drive, progress=progress,
         discretisation=discretisation, base=scenario.base,
         record_displacement=scenario.fields,
     )  # fmt: skip
@@ -213,9 +191,9 @@ class Contact:
 
     def parse(self, args: argparse.Namespace, out: Path) -> ContactScenario:
         from frictionlab.contact._fem import require_skfem
-        from frictionlab.io.contact_scenario import load_contact_scenario
+        from frictionlab.schema.contact import load_contact
 
-        scenario = load_contact_scenario(args.scenario, args.set)  # every input check is here
+        scenario = load_contact(args.scenario, args.set)  # every input check is here
         require_skfem()
         return scenario
 

@@ -1,6 +1,6 @@
 """The simulate workflow: a scenario file -> the driver -> history.csv, points.csv, plots.
 
-:func:`run_scenario` runs a parsed :class:`~frictionlab.io.scenario.Scenario`;
+:func:`run_scenario` runs a parsed :class:`~frictionlab.schema.scenario.Scenario`;
 :data:`SIMULATE` is the workflow ``frictionlab simulate`` runs
 (:func:`frictionlab.commands._pipeline.run_command`); :func:`write_results` writes a run's
 files and summary.json the same way for the demo.
@@ -17,11 +17,11 @@ from typing import Any
 from frictionlab._progress import ProgressFactory
 from frictionlab.app import simulate_files as files
 from frictionlab.app.outputs import write_outputs
-from frictionlab.driver import History, simulate, simulate_spring_slider
+from frictionlab.driver import DriverSettings, History, simulate, simulate_spring_slider
 from frictionlab.driver.healing import Healing, healing_analysis
 from frictionlab.driver.recorder import RowSink
 from frictionlab.driver.simulate import ProgressCallback
-from frictionlab.io.scenario import Scenario
+from frictionlab.schema.scenario import Scenario
 
 __all__ = ["SIMULATE", "SimulateRun", "run_scenario", "write_results"]
 
@@ -42,18 +42,19 @@ def run_scenario(
     history is written).
     """
     opts = scenario.run_options
+    settings = DriverSettings(accuracy=opts.accuracy, max_halvings=opts.max_halvings)
     if scenario.program is not None:
         return simulate(
             scenario.params, scenario.program, scenario.initial, n_points=scenario.n_points,
-            accuracy=opts.accuracy, max_halvings=opts.max_halvings, progress=progress,
+            settings=settings, progress=progress,
             recording=scenario.output.recording(sink, keep_rows, keep_points),
         )  # fmt: skip
     assert scenario.machine is not None
     m = scenario.machine
     return simulate_spring_slider(
         scenario.params, m.machine, m.duration, steps=m.steps, max_step=m.max_step,
-        initial=scenario.initial, n_points=scenario.n_points, accuracy=opts.accuracy,
-        max_halvings=opts.max_halvings, progress=progress,
+        initial=scenario.initial, n_points=scenario.n_points, settings=settings,
+        progress=progress,
     )  # fmt: skip
 
 
@@ -75,7 +76,7 @@ class Simulate:
 
     def parse(self, args: argparse.Namespace, out: Path) -> Scenario:
         from frictionlab.app.budget import check_output_space
-        from frictionlab.io.scenario import load_scenario
+        from frictionlab.schema.scenario import load_scenario
 
         scenario = load_scenario(args.scenario, args.set)  # every input check happens here
         if scenario.estimate is not None:  # and the output's size against the free disk space

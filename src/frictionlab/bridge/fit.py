@@ -30,6 +30,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import least_squares
 
 from frictionlab._arrays import readonly
+from frictionlab._frames import TableResult
 from frictionlab.bridge.steady import steady_direction
 from frictionlab.errors import ParameterError
 
@@ -109,8 +110,8 @@ class DirectionalFriction:
         return np.column_stack([self.mu_x, self.mu_y])
 
 
-@dataclass(frozen=True)
-class AnisotropyFit:
+@dataclass(frozen=True, repr=False)
+class AnisotropyFit(TableResult):
     """The law's anisotropy fitted to a friction polar (SciPy-style result).
 
     Attributes
@@ -175,6 +176,21 @@ class AnisotropyFit:
     def relative_rotation(self) -> FloatArray:
         """rho = beta / k (dimensionless)."""
         return readonly(self.rotation / self.kinetic, None)
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """One row per direction: the polar's vector, the fitted one and the misfit."""
+        return {
+            "beta_deg": self.beta_deg,
+            "data_x": self.data[:, 0],
+            "data_y": self.data[:, 1],
+            "fitted_x": self.fitted[:, 0],
+            "fitted_y": self.fitted[:, 1],
+            "misfit": self.misfit,
+        }
+
+    def units(self) -> dict[str, str]:
+        """Degrees for the direction; the polar's own units (``-``) for the rest."""
+        return {k: "deg" if k == "beta_deg" else "-" for k in self.columns()}
 
 
 def _circle_weights(theta: FloatArray) -> FloatArray:

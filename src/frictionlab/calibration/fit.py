@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import least_squares
 
+from frictionlab._frames import TableResult
 from frictionlab.calibration.model import (
     FITTABLE,
     Curve,
@@ -246,8 +247,18 @@ class Objective:
         raise AssertionError("unreachable")  # pragma: no cover
 
 
-@dataclass(frozen=True)
-class FitResult:
+_CONE_UNITS = {"mu_s": "-", "mu_k": "-", "u": "1/m", "kappa": "1/m", "xi": "1/s"}
+_CLOSED_UNITS = {"F_s": "Pa", "F_k": "Pa", "M": "-", "u": "1/m", "kappa": "Pa/m", "xi": "Pa/s"}
+
+
+def parameter_unit(name: str, cone: bool) -> str:
+    """The unit of a law parameter (``-`` for dimensionless ones)."""
+    table = _CONE_UNITS if cone else _CLOSED_UNITS
+    return table.get(name, "Pa/m" if name.startswith("alpha") else "-")
+
+
+@dataclass(frozen=True, repr=False)
+class FitResult(TableResult):
     """Outcome of :func:`fit_law`.
 
     Attributes
@@ -308,6 +319,26 @@ class FitResult:
     def relative_stderr(self) -> np.ndarray:
         with np.errstate(divide="ignore", invalid="ignore"):
             return np.abs(self.stderr / self.values)
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """One row per fitted parameter: its unit (text), start, value, stderr, relative
+        stderr (masked where infinite: the data do not identify the parameter)."""
+        cone = self.params.is_cone
+        return {
+            "parameter": np.array(self.names, dtype=object),
+            "unit": np.array([parameter_unit(n, cone) for n in self.names], dtype=object),
+            "start": np.asarray(self.start, dtype=np.float64),
+            "value": np.asarray(self.values, dtype=np.float64),
+            # an unidentified parameter's infinite stderr is undefined: masked (empty in CSV)
+            "stderr": np.ma.masked_invalid(np.asarray(self.stderr, dtype=np.float64)),
+            "relative_stderr": np.ma.masked_invalid(
+                np.asarray(self.relative_stderr, dtype=np.float64)
+            ),
+        }
+
+    def units(self) -> dict[str, str]:
+        """All ``-``: each row's unit is in the ``unit`` column."""
+        return dict.fromkeys(self.columns(), "-")
 
     def poorly_identified(self) -> list[str]:
         """Names with relative stderr > 50 % or |correlation| > 0.9 with another parameter."""

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from frictionlab.driver import History, InitialConditions, Program, simulate
+from frictionlab.driver import DriverSettings, History, InitialConditions, Program, simulate
 from frictionlab.errors import ConvergenceError, ParameterError
 from frictionlab.subloading import SubloadingParams
 
@@ -158,8 +158,7 @@ def evaluate_columns(
         curve.program,
         curve.initial,
         n_points=k,
-        accuracy=accuracy,
-        max_halvings=max_halvings,
+        settings=DriverSettings(accuracy=accuracy, max_halvings=max_halvings),
     )
     if not history.success:
         raise ConvergenceError(

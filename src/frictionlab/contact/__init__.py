@@ -18,7 +18,7 @@ from frictionlab.contact.history import ContactHistory, front_arrival, slip_fron
 from frictionlab.contact.interface import TANGENTS
 from frictionlab.contact.loading import Hold, NormalLoad, Reverse, Slide, Traction
 from frictionlab.contact.mesh import Discretisation, discretise
-from frictionlab.contact.solver import DRIVES, SolverOptions, run_contact
+from frictionlab.contact.solver import DRIVES, SolverOptions, SolverSettings, run_contact
 
 __all__ = [
     "DRIVES",
@@ -32,6 +32,7 @@ __all__ = [
     "Reverse",
     "Slide",
     "SolverOptions",
+    "SolverSettings",
     "Traction",
     "discretise",
     "front_arrival",

@@ -13,11 +13,13 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab._frames import TableResult
+
 __all__ = ["ContactHistory", "front_arrival", "slip_front"]
 
 
-@dataclass
-class ContactHistory:
+@dataclass(repr=False)
+class ContactHistory(TableResult):
     """Arrays over recorded steps S (rows) and contact points P (columns).
 
     Attributes
@@ -129,6 +131,40 @@ class ContactHistory:
     def peak_index(self) -> int:
         """Row of the largest |Q| (the static peak of a first slide)."""
         return int(np.argmax(np.hypot(self.tangential_force, self.tangential_force_y)))
+
+    def columns(self, front_ratio: float = 0.99) -> dict[str, np.ndarray]:
+        """The global table (global.csv), one row per recorded step; the slip front is
+        :func:`slip_front` at ``front_ratio``; the ``_y`` columns only for a 3-D block."""
+        three = self.dim == 3
+        cols: dict[str, np.ndarray] = {"time": self.time, "stage": self.stage}
+        cols["top_displacement"] = self.top_displacement
+        if three:
+            cols["top_displacement_y"] = self.top_displacement_y
+        cols["top_shear"] = self.top_shear
+        if three:
+            cols["top_shear_y"] = self.top_shear_y
+        cols["tangential_force"] = self.tangential_force
+        if three:
+            cols["tangential_force_y"] = self.tangential_force_y
+        cols["normal_force"] = self.normal_force
+        cols["friction_ratio"] = self.friction_ratio
+        cols["slip_front"] = slip_front(self, front_ratio)
+        cols["iterations"] = self.iterations
+        cols["cuts"] = self.cuts
+        return cols
+
+    def units(self) -> dict[str, str]:
+        """Units of :meth:`columns` (forces per unit depth, N/m, in 2-D; N in 3-D)."""
+        force = "N/m" if self.dim == 2 else "N"
+        units = {
+            "time": "s", "stage": "-", "top_displacement": "m", "top_displacement_y": "m",
+            "top_shear": "Pa", "top_shear_y": "Pa", "tangential_force": force,
+            "tangential_force_y": force, "normal_force": force, "friction_ratio": "-",
+            "slip_front": "m", "iterations": "-", "cuts": "-",
+        }  # fmt: skip
+        if self.dim == 2:
+            return {k: v for k, v in units.items() if not k.endswith("_y")}
+        return units
 
 
 def slip_front(history: ContactHistory, ratio: float = 0.99) -> np.ndarray:

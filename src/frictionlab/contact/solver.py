@@ -27,7 +27,7 @@ from frictionlab.contact.shapes import Base
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import ContactState, SubloadingParams, check_snap_back
 
-__all__ = ["DRIVES", "SolverOptions", "check_memory", "run_contact"]
+__all__ = ["DRIVES", "SolverOptions", "SolverSettings", "check_memory", "run_contact"]
 
 #: How the tangential displacement is imposed: on the top edge (default), or on every
 #: node (a rigidly translated block: a verification case that isolates the interface).
@@ -209,18 +209,24 @@ def check_memory(block: Block, options: SolverOptions) -> None:
         )
 
 
+#: Newton and step control, the ``settings=`` of :func:`run_contact` (one name for solver
+#: settings across frictionlab); :class:`SolverOptions` is the same class.
+SolverSettings = SolverOptions
+
+
 def run_contact(
     block: Block,
     params: SubloadingParams | Frictionless,
     normal: NormalLoad,
     program: Sequence[Segment],
     *,
-    options: SolverOptions | None = None,
+    settings: SolverOptions | None = None,
     drive: str = "top",
     progress: ProgressCallback | None = None,
     discretisation: Discretisation | None = None,
     base: Base | None = None,
     record_displacement: bool = False,
+    options: SolverOptions | None = None,
 ) -> ContactHistory:
     """Press the block on the base, then run the tangential programme.
 
@@ -230,8 +236,9 @@ def run_contact(
         The elastic block and the interface law (shared by all contact points).
     normal, program:
         The normal phase and the tangential segments (:mod:`~frictionlab.contact.loading`).
-    options:
-        Newton and step control (:class:`SolverOptions`).
+    settings:
+        Newton and step control (:class:`SolverSettings`, also named
+        :class:`SolverOptions`); ``options=`` is its deprecated name (one release).
     drive:
         ``"top"`` (default) or ``"rigid"`` (every node moved along x; displacement
         control only) — see :data:`DRIVES`.
@@ -252,6 +259,17 @@ def run_contact(
     ContactHistory
         ``success`` False with a ``message`` when a step failed; the rows before it kept.
     """
+    if options is not None:
+        if settings is not None:
+            raise ParameterError("options", options, "settings= alone (options= is its old name)")
+        import warnings
+
+        warnings.warn(
+            "run_contact(options=) is deprecated: pass settings=SolverSettings(...)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+    options = settings if settings is not None else options
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # pragma: no cover - part of the extra `fem`; only slower without

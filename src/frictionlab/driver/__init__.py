@@ -30,6 +30,7 @@ from frictionlab.driver.program import (
     slide_hold_slide,
 )
 from frictionlab.driver.simulate import (
+    DriverSettings,
     History,
     InitialConditions,
     Recording,
@@ -50,6 +51,7 @@ __all__ = [
     "SEGMENT_KINDS",
     "Control",
     "Cycle",
+    "DriverSettings",
     "History",
     "Hold",
     "InitialConditions",

@@ -13,7 +13,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from frictionlab._jit import njit
 
 __all__ = ["accumulate", "accumulate_row", "slip_lengths"]
 

@@ -46,6 +46,7 @@ from frictionlab.subloading.state import _snap_back_failures
 
 __all__ = [
     "STATUS_INITIAL",
+    "DriverSettings",
     "History",
     "InitialConditions",
     "ProgressCallback",
@@ -374,16 +375,63 @@ def _check_accuracy(accuracy: float | None, max_halvings: int) -> None:
         raise ParameterError("max_halvings", max_halvings, "an integer >= 0")
 
 
+@dataclass(frozen=True)
+class DriverSettings:
+    """How the driver integrates a programme (``settings=`` of :func:`simulate` and
+    :func:`~frictionlab.driver.simulate_spring_slider`).
+
+    ``accuracy``: when given, a step is accepted only when one full step and two half
+    steps agree to within it (friction-ratio units for tractions, and for R and F/F_s;
+    :func:`~frictionlab.driver.stepping.step_error`); ``max_halvings``: the deepest
+    substepping, at most ``2**max_halvings`` substeps per step.
+    """
+
+    accuracy: float | None = None
+    max_halvings: int = 10
+
+    def __post_init__(self) -> None:
+        _check_accuracy(self.accuracy, self.max_halvings)
+
+
+#: Marks a deprecated keyword that was not passed.
+_UNSET: Any = object()
+
+
+def driver_settings(
+    settings: DriverSettings | None, accuracy: Any, max_halvings: Any, where: str
+) -> DriverSettings:
+    """``settings``, or one built from the deprecated ``accuracy=``/``max_halvings=``
+    keywords (a DeprecationWarning; passing both forms is an error)."""
+    given = {k: v for k, v in (("accuracy", accuracy), ("max_halvings", max_halvings))
+             if v is not _UNSET}  # fmt: skip
+    if not given:
+        return settings if settings is not None else DriverSettings()
+    if settings is not None:
+        raise ParameterError(
+            f"{where}: {', '.join(given)}", list(given.values()), "settings= alone"
+        )
+    import warnings
+
+    warnings.warn(
+        f"{where}({', '.join(f'{k}=' for k in given)}) is deprecated: pass "
+        f"settings=DriverSettings({', '.join(f'{k}=...' for k in given)})",
+        DeprecationWarning,
+        stacklevel=3,
+    )
+    return DriverSettings(**given)
+
+
 def simulate(
     params: SubloadingParams,
     program: Sequence[Segment],
     initial: InitialConditions | ContactState | None = None,
     *,
     n_points: int | None = None,
-    accuracy: float | None = None,
-    max_halvings: int = 10,
+    settings: DriverSettings | None = None,
     progress: ProgressCallback | None = None,
     recording: Recording | None = None,
+    accuracy: Any = _UNSET,
+    max_halvings: Any = _UNSET,
 ) -> History:
     """Run ``program`` for N contact points and record its steps.
 
@@ -398,12 +446,11 @@ def simulate(
         :class:`~frictionlab.subloading.ContactState` to continue from.
     n_points:
         N, when it does not follow from per-point inputs.
-    accuracy:
-        When given, accept a step only when one full step and two half steps agree to
-        within it (friction-ratio units for tractions, and for R and F/F_s; see
-        :func:`~frictionlab.driver.stepping.step_error`); refine otherwise.
-    max_halvings:
-        Deepest substepping: a step is cut into at most ``2**max_halvings`` substeps.
+    settings:
+        :class:`DriverSettings` (accuracy control, deepest substepping); default
+        ``DriverSettings()``.
+    accuracy, max_halvings:
+        Deprecated (one release): use ``settings=DriverSettings(...)``.
     progress:
         ``progress(done, total)`` after every step.
     recording:
@@ -418,7 +465,8 @@ def simulate(
         the deepest substepping; the history then holds every step completed before it.
         Invalid inputs raise :class:`~frictionlab.errors.ParameterError` before any step.
     """
-    _check_accuracy(accuracy, max_halvings)
+    chosen = driver_settings(settings, accuracy, max_halvings, "simulate")
+    accuracy, max_halvings = chosen.accuracy, chosen.max_halvings
     init = InitialConditions() if initial is None else initial
     n = count_points(params, program, init, n_points)
     state = init if isinstance(init, ContactState) else init.state(params, n)

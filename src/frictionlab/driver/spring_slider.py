@@ -36,13 +36,15 @@ from scipy.optimize import brentq
 
 from frictionlab.driver.program import _checked, _count, _max_step, _steps
 from frictionlab.driver.simulate import (
+    _UNSET,
+    DriverSettings,
     History,
     InitialConditions,
     ProgressCallback,
     SegmentRecord,
-    _check_accuracy,
     _count_work,
     count_points,
+    driver_settings,
 )
 from frictionlab.driver.stepping import StepWork, substep
 from frictionlab.errors import ParameterError
@@ -337,9 +339,10 @@ def simulate_spring_slider(
     max_step: float | None = None,
     initial: InitialConditions | ContactState | None = None,
     n_points: int | None = None,
-    accuracy: float | None = None,
-    max_halvings: int = 10,
+    settings: DriverSettings | None = None,
     progress: ProgressCallback | None = None,
+    accuracy: Any = _UNSET,
+    max_halvings: Any = _UNSET,
 ) -> History:
     """Pull the slider for ``duration`` [s] (scalar or per point) and record every step.
 
@@ -347,10 +350,13 @@ def simulate_spring_slider(
     The slider starts at rest with the spring relaxed on the initial contact (zero
     tangential traction by default). Returns a :class:`~frictionlab.driver.History`
     whose ``extra`` holds ``load_point`` [m], ``velocity`` (slider) [m/s] and
-    ``spring_force`` k (V t - x) [Pa]; the slip is ``x e``. Substepping and
-    ``accuracy`` work as in :func:`~frictionlab.driver.simulate`.
+    ``spring_force`` k (V t - x) [Pa]; the slip is ``x e``. ``settings``
+    (:class:`~frictionlab.driver.simulate.DriverSettings`: substepping and accuracy) works
+    as in :func:`~frictionlab.driver.simulate`; ``accuracy=`` and ``max_halvings=`` are
+    deprecated (one release).
     """
-    _check_accuracy(accuracy, max_halvings)
+    chosen = driver_settings(settings, accuracy, max_halvings, "simulate_spring_slider")
+    accuracy, max_halvings = chosen.accuracy, chosen.max_halvings
     total_time = _checked("duration", duration, ">0")
     init = InitialConditions() if initial is None else initial
     sizes = machine.sizes() | ({total_time.shape[0]} if total_time.ndim == 1 else set())

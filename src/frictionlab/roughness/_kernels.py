@@ -24,8 +24,9 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
+
+from frictionlab._jit import numba
 
 MODE_FULL = 0
 MODE_LOAD = 1

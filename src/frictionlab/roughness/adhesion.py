@@ -38,7 +38,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab._arrays import readonly as _ro
-from frictionlab._frames import short_repr, to_dataframe
+from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.lattice import LatticeSettings, friction_polar
 from frictionlab.roughness.surface import Surface
@@ -59,8 +59,8 @@ def _masked(values: FloatArray, undefined: NDArray[np.bool_]) -> np.ma.MaskedArr
     return out
 
 
-@dataclass(frozen=True)
-class AdhesionSweep:
+@dataclass(frozen=True, repr=False)
+class AdhesionSweep(TableResult):
     """The outcome of a normal-load sweep with tensile springs (arrays (loads, directions)).
 
     Attributes
@@ -112,16 +112,6 @@ class AdhesionSweep:
     def mu_apparent_defined(self) -> NDArray[np.bool_]:
         """False where Eq 22 is undefined (L = 0)."""
         return np.asarray(~np.ma.getmaskarray(self.mu_apparent))
-
-    def __repr__(self) -> str:
-        return short_repr(self, self.columns())
-
-    def to_dataframe(self) -> Any:
-        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
-
-        Undefined (masked) values become NaN; pandas is imported on call.
-        """
-        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """A long table, one row per (load, beta), load-major; undefined values masked."""

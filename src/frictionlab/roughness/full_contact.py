@@ -27,10 +27,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from frictionlab._jit import numba
 from frictionlab.roughness._kernels import _FAST, multipliers_np
 
 __all__ = ["FullContactSums", "full_contact_sums"]

@@ -45,7 +45,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab._arrays import readonly as _ro
-from frictionlab._frames import short_repr, to_dataframe
+from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import scaled
@@ -160,8 +160,8 @@ def _masked(values: FloatArray, undefined: NDArray[np.bool_]) -> np.ma.MaskedArr
     return out
 
 
-@dataclass(frozen=True)
-class HierarchyResult:
+@dataclass(frozen=True, repr=False)
+class HierarchyResult(TableResult):
     """mu_i of every level (rows i = 0 ... n; row 0 is the local mu0) per direction.
 
     ``mu`` is the scalar passed upward (option ``mu_passed``); ``mu_x``, ``mu_y`` the
@@ -186,16 +186,6 @@ class HierarchyResult:
     @property
     def success(self) -> bool:
         return bool(np.all(self.valid))
-
-    def __repr__(self) -> str:
-        return short_repr(self, self.columns())
-
-    def to_dataframe(self) -> Any:
-        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
-
-        Undefined (masked) values become NaN; pandas is imported on call.
-        """
-        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """A long table, one row per (level, beta), level-major; invalid entries masked."""
@@ -373,8 +363,8 @@ def wedge_hierarchy(
     return _recursion([level_map] * int(n), m0, check_betas(beta_deg), mu_passed, on_invalid)
 
 
-@dataclass(frozen=True)
-class HierarchyWearHistory:
+@dataclass(frozen=True, repr=False)
+class HierarchyWearHistory(TableResult):
     """mu_i(t) of every level of a wearing hierarchy (innermost level first).
 
     Attributes
@@ -416,16 +406,6 @@ class HierarchyWearHistory:
     @property
     def n_levels(self) -> int:
         return int(self.wear_time.size)
-
-    def __repr__(self) -> str:
-        return short_repr(self, self.columns())
-
-    def to_dataframe(self) -> Any:
-        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
-
-        Undefined (masked) values become NaN; pandas is imported on call.
-        """
-        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """A long table, one row per (time, beta): B_i and mu_i of every level."""

@@ -41,12 +41,12 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, fields, replace
 from typing import Any
 
-import numba
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab._arrays import readonly
-from frictionlab._frames import short_repr, to_dataframe
+from frictionlab._frames import TableResult
+from frictionlab._jit import numba
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness import _kernels
 from frictionlab.roughness.closed_forms import max_mu0
@@ -361,8 +361,8 @@ def lattice_geometry(
     return LatticeGeometry(dimension, (lx, ly), shape)
 
 
-@dataclass(frozen=True)
-class FrictionPolar:
+@dataclass(frozen=True, repr=False)
+class FrictionPolar(TableResult):
     """Friction coefficients of a surface pair over sliding directions (SciPy-style result).
 
     Arrays are indexed like ``beta_deg``. ``mu`` follows ``settings.mu_definition``;
@@ -428,20 +428,10 @@ class FrictionPolar:
         """|R_xy^(c)|: magnitude of the resisting force of the compressed springs (N/spring)."""
         return np.asarray(np.hypot(self.force_x, self.force_y), dtype=np.float64)
 
-    def __repr__(self) -> str:
-        return short_repr(self, self.columns())
-
     def units(self) -> dict[str, str]:
         """Units of :meth:`columns` (``-`` for dimensionless ones)."""
         force = {"tangential_force": "N", "compressed_force": "N"}
         return {k: "deg" if k == "beta_deg" else force.get(k, "-") for k in self.columns()}
-
-    def to_dataframe(self) -> Any:
-        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
-
-        Undefined (masked) values become NaN; pandas is imported on call.
-        """
-        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """The per-direction arrays as named columns (for tables).

@@ -32,13 +32,12 @@ import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab._arrays import readonly
-from frictionlab._frames import short_repr, to_dataframe
+from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.full_contact import full_contact_sums
 from frictionlab.roughness.generators import from_array
@@ -139,8 +138,8 @@ def bands_hierarchy(
     return mu, mu_x, mu_y, valid
 
 
-@dataclass(frozen=True)
-class MultiscaleResult:
+@dataclass(frozen=True, repr=False)
+class MultiscaleResult(TableResult):
     """mu(beta) against the shortest wavelength retained.
 
     ``cutoff_m`` (rows, descending): the shortest wavelength retained, the last row the
@@ -158,16 +157,6 @@ class MultiscaleResult:
     band_rms_slope: FloatArray
     mu0: float
     mu_passed: str
-
-    def __repr__(self) -> str:
-        return short_repr(self, self.columns())
-
-    def to_dataframe(self) -> Any:
-        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
-
-        Undefined (masked) values become NaN; pandas is imported on call.
-        """
-        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """Long table: one row per (cutoff, direction); invalid values masked."""

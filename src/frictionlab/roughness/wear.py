@@ -37,7 +37,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab._arrays import readonly as _ro
-from frictionlab._frames import short_repr, to_dataframe
+from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import (
@@ -311,8 +311,8 @@ def _wedge_angles(surface: Surface) -> tuple[float, float]:
     return (0.0, 0.0)
 
 
-@dataclass(frozen=True)
-class WearHistory:
+@dataclass(frozen=True, repr=False)
+class WearHistory(TableResult):
     """mu(t) of a wearing pair (arrays (times, directions) unless stated).
 
     Attributes
@@ -349,16 +349,6 @@ class WearHistory:
     mu0: float
     wear: WearSettings
     method: str
-
-    def __repr__(self) -> str:
-        return short_repr(self, self.columns())
-
-    def to_dataframe(self) -> Any:
-        """:meth:`columns` as a :class:`pandas.DataFrame`, titles ``name [unit]`` (as the CSV).
-
-        Undefined (masked) values become NaN; pandas is imported on call.
-        """
-        return to_dataframe(self.columns(), self.units())
 
     def columns(self) -> dict[str, np.ndarray]:
         """A long table, one row per (time, beta), time-major."""

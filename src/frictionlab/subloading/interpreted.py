@@ -43,7 +43,8 @@ def load() -> dict[str, Any]:
         body = []
         for node in tree.body:
             if isinstance(node, ast.ImportFrom) and (
-                node.module == "numba" or (node.module or "").startswith("frictionlab.subloading")
+                node.module in ("numba", "frictionlab._jit")
+                or (node.module or "").startswith("frictionlab.subloading")
             ):
                 continue  # numba's names are replaced below; sibling names share the namespace
             body.append(node)

@@ -28,8 +28,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
 
+from frictionlab._jit import njit, prange
 from frictionlab.subloading.evolution import (
     BACKWARD_EULER,
     U_COT,

@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab._frames import TableResult
 from frictionlab.errors import ConvergenceError, ParameterError
 from frictionlab.subloading import kernels
 from frictionlab.subloading.evolution import (
@@ -42,8 +43,8 @@ class Status(enum.IntEnum):
     FAILED = kernels.FAILED  #: the local solve failed; the point kept its old state
 
 
-@dataclass(frozen=True)
-class StepResult:
+@dataclass(frozen=True, repr=False)
+class StepResult(TableResult):
     """Result of :func:`update` for N points.
 
     Attributes
@@ -94,6 +95,31 @@ class StepResult:
         counts = {s.name.lower(): int(np.sum(self.status == s)) for s in Status}
         text = ", ".join(f"{k} {v}" for k, v in counts.items() if v)
         return ("all points converged: " if self.success else "local solve failed: ") + text
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """One row per point: tractions, plastic slip increment, dissipation, status."""
+        names = np.array([s.name.lower() for s in Status], dtype=object)
+        codes = np.array([int(s) for s in Status])
+        status = names[np.searchsorted(codes, self.status, sorter=np.argsort(codes))]
+        return {
+            "point": np.arange(1, self.traction.shape[0] + 1),
+            "traction_1": self.traction[:, 0],
+            "traction_2": self.traction[:, 1],
+            "traction_n": self.traction[:, 2],
+            "plastic_slip_increment_1": self.plastic_slip_increment[:, 0],
+            "plastic_slip_increment_2": self.plastic_slip_increment[:, 1],
+            "plastic_multiplier": self.plastic_multiplier,
+            "dissipation": self.dissipation,
+            "status": status,
+            "iterations": self.iterations,
+        }
+
+    def units(self) -> dict[str, str]:
+        """Units of :meth:`columns` (``-``: dimensionless or text)."""
+        units = {"traction_1": "Pa", "traction_2": "Pa", "traction_n": "Pa",
+                 "plastic_slip_increment_1": "m", "plastic_slip_increment_2": "m",
+                 "plastic_multiplier": "m", "dissipation": "J/m^2"}  # fmt: skip
+        return {k: units.get(k, "-") for k in self.columns()}
 
 
 #: Batches of at least this many points run on numba's threads (measured cross-over on a

@@ -17,8 +17,8 @@ from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
-from numba import njit
 
+from frictionlab._jit import njit
 from frictionlab.errors import ParameterError
 from frictionlab.subloading.params import SubloadingParams
 from frictionlab.subloading.surfaces import (

@@ -20,9 +20,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 from numpy.typing import ArrayLike
 
+from frictionlab._jit import njit
 from frictionlab.errors import ParameterError
 
 __all__ = [

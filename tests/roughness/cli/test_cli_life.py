@@ -59,6 +59,7 @@ def run_cli(tmp_path: Path, text: str) -> tuple[int, Path]:
     return main(["roughness", str(scenario), "--out", str(out)]), out
 
 
+@pytest.mark.slow
 def test_all_tables_written_beside_polar(tmp_path) -> None:
     code, out = run_cli(tmp_path, SCENARIO)
     assert code == 0

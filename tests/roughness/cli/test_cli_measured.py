@@ -13,6 +13,7 @@ import json
 from pathlib import Path
 
 import numpy as np
+import pytest
 from SurfaceTopography import Topography
 
 from frictionlab.cli import main
@@ -58,6 +59,7 @@ def run(tmp_path: Path, text: str, *extra: str) -> tuple[int, Path]:
     return main(["roughness", str(path), "--out", str(out), *extra]), out
 
 
+@pytest.mark.slow
 def test_provenance_multiscale_and_quiet(tmp_path, capsys, check_summary) -> None:
     write_map(tmp_path / "map.x3p")
     text = scenario("map.x3p", "long_cutoff = 1.0e-3") + "[multiscale]\ncutoffs = [40.0e-6]\n"

@@ -7,12 +7,14 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from frictionlab.io.tables import read_csv
 
 ROOT = Path(__file__).resolve().parents[3]
 
 
+@pytest.mark.slow
 def test_roughness_figures_example(tmp_path) -> None:
     done = subprocess.run(
         [sys.executable, str(ROOT / "examples" / "roughness_figures.py"), str(tmp_path)],
@@ -49,6 +51,7 @@ def test_roughness_figures_example(tmp_path) -> None:
     assert "A:" in done.stdout
 
 
+@pytest.mark.slow
 def test_roughness_life_example(tmp_path) -> None:
     done = subprocess.run(
         [sys.executable, str(ROOT / "examples" / "roughness_life.py"), str(tmp_path)],

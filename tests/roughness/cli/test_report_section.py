@@ -6,6 +6,7 @@ import contextlib
 import re
 
 import numpy as np
+import pytest
 
 from frictionlab.demo.roughness_figures import FOLDER, roughness_sections
 from frictionlab.io.report import Report
@@ -14,6 +15,7 @@ from frictionlab.io.tables import read_csv
 FAMILIES = ("fig6a", "fig6b", "fig7", "fig8", "fig10", "fig11", "fig12", "fig13", "fig14")
 
 
+@pytest.mark.slow
 def test_sections_generated_and_valid(tmp_path) -> None:
     calls: list[tuple[int, int]] = []
 
