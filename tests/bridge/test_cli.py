@@ -72,7 +72,8 @@ def test_bridge_writes_a_law_that_simulate_runs_as_it_is(tmp_path: Path, check_s
         summary["rotation"][0] > 0.0 and abs(summary["rotation"][1]) < 0.01 * summary["rotation"][0]
     )
     assert summary["orthotropy"][0] == 1.0 and 0.0 < summary["orthotropy"][1] < 1.0
-    assert summary["expressible"] is True and summary["note"] is None
+    # 1.4 % overall misfit, but 21 % of the anisotropic part unexplained (test_fit.py)
+    assert summary["expressible"] is False and "anisotropic part" in summary["note"]
     assert summary["rms_misfit"] <= summary["max_misfit"]
     assert summary["check"]["passed"] and summary["check"]["max_abs_difference"] < 1e-9
     assert summary["law"]["scale"] == "law"

@@ -110,6 +110,7 @@ def run_bridge(
         orthotropy_angle=float(base.orthotropy_angle),
         relative_rotation=relative_rotation_of(base, fn),
         tolerance=opts.tolerance,
+        anisotropy_tolerance=opts.anisotropy_tolerance,
     )
     t2 = time.perf_counter()
     try:
@@ -250,6 +251,11 @@ def summary(run: BridgeRun) -> dict[str, Any]:
         "beta_at_max_misfit_deg": fit.beta_at_max_misfit_deg,
         "expressible": fit.expressible,
         "note": fit.note or None,
+        "anisotropic_misfit": fit.anisotropic_misfit,
+        "forward_backward_kept": fit.forward_backward_kept,
+        "lateral_misfit": fit.lateral_misfit,
+        "beta_at_lateral_misfit_deg": fit.beta_at_lateral_misfit_deg,
+        "anisotropy_tolerance": fit.anisotropy_tolerance,
         "fit": {
             "fitted": list(fit.fitted_groups),
             "held": _held(sc.law, fit.fitted_groups),

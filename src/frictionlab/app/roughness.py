@@ -96,6 +96,7 @@ class RoughnessJob:
     path: Path
     data: dict[str, Any]
     plots: bool
+    quiet: bool = False
 
 
 @dataclass(frozen=True)
@@ -105,6 +106,7 @@ class RoughnessRun:
     polar: FrictionPolar
     plot_polar: FrictionPolar
     extensions: dict[str, Any]
+    elastic: Any = None  # ElasticPolar of [contact] model = "elastic" (all directions)
 
 
 class Roughness:
@@ -120,10 +122,12 @@ class Roughness:
         if not args.quiet:
             for text in scenario.warnings:
                 print(f"frictionlab roughness: warning: {text}", file=sys.stderr)
-        return RoughnessJob(scenario, path, data, not args.no_plots)
+        return RoughnessJob(scenario, path, data, not args.no_plots, bool(args.quiet))
 
     def run(self, job: RoughnessJob, progress: ProgressFactory, staging: Path) -> RoughnessRun:
         scenario = job.scenario
+        if scenario.contact is not None:
+            return _run_elastic(job, progress)
         try:
             with progress(f"roughness {job.path.name}") as update:
                 polar = friction_polar(
@@ -148,10 +152,14 @@ class Roughness:
 
     def files(self, job: RoughnessJob, result: RoughnessRun, out: Path, plots: bool) -> list[Path]:
         scenario = job.scenario
-        files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, result.polar, job.path)}
-        files.update(_extension_files(scenario, result.extensions, job.path, plots))
-        if plots:
-            files["polar.png"] = _png(scenario, result.plot_polar)
+        if result.elastic is not None:
+            files = _elastic_files(job, result.elastic, plots)
+        else:
+            files = {"polar.csv": _csv_text(scenario, result.polar, job.path)}
+            files.update(_extension_files(scenario, result.extensions, job.path, plots))
+            if plots:
+                files["polar.png"] = _png(scenario, result.plot_polar)
+        files.update(_statistics_outputs(scenario, plots)[0])
         written = []
         for name, content in files.items():
             if isinstance(content, bytes):
@@ -164,8 +172,15 @@ class Roughness:
         self, job: RoughnessJob, result: RoughnessRun, files: list[str], seconds: float
     ) -> dict[str, Any]:
         scenario = job.scenario
-        summary = _summary(scenario, result.polar, result.plot_polar, job.path, seconds)
-        summary.update(_extension_summary(scenario, result.extensions))
+        if result.elastic is not None:
+            summary = _elastic_summary(job, result.elastic, seconds)
+        else:
+            summary = _summary(scenario, result.polar, result.plot_polar, job.path, seconds)
+            summary["warnings"] = [*summary["warnings"], *result.polar.notes]
+            summary.update(_extension_summary(scenario, result.extensions))
+        stats = _statistics_outputs(scenario, False)[1]
+        if stats:
+            summary["statistics"] = stats
         summary["files"] = _names(files)
         return summary
 
@@ -175,16 +190,27 @@ class Roughness:
     def report(
         self, job: RoughnessJob, result: RoughnessRun, seconds: float, written: list[Path]
     ) -> None:
-        ratio = result.polar.mu_over_mu0
+        n = job.scenario.beta_deg.size
+        ratio = result.polar.mu_over_mu0[:n]
         folder = written[0].parent
         names = ", ".join(str(folder / name) for name in _names([p.name for p in written]))
+        model = (
+            ""
+            if result.elastic is None
+            else (
+                f"elastic contact ({100 * result.elastic.contact_fraction_mean:.3g} % in contact), "
+            )
+        )
         print(
-            f"frictionlab roughness: {result.polar.beta_deg.size} directions in {seconds:.3g} s, "
-            f"mu/mu0 from {np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; wrote {names}"
+            f"frictionlab roughness: {model}{n} directions in "
+            f"{seconds:.3g} s, mu/mu0 from {np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; "
+            f"wrote {names}"
         )
 
     def notes(self, job: RoughnessJob, result: RoughnessRun) -> list[str]:
-        return []
+        if job.quiet or result.elastic is not None:
+            return []
+        return [f"frictionlab roughness: note: {text}" for text in result.polar.notes]
 
     def failure(self, job: RoughnessJob, result: RoughnessRun, out: Path) -> str | None:
         return None
@@ -601,3 +627,136 @@ def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:
         title=scenario.title or None,
     )
     return figure_png_bytes(fig)
+
+
+def _run_elastic(job: RoughnessJob, progress: ProgressFactory) -> RoughnessRun:
+    """``[contact] model = "elastic"`` (roughness.elastic): one BEM solve gives every
+    direction, so the plot's full circle costs nothing extra."""
+    from frictionlab.roughness.elastic import elastic_polar
+
+    scenario = job.scenario
+    settings = scenario.contact
+    assert settings is not None
+    if scenario.adhesion or scenario.wear or scenario.hierarchy or scenario.multiscale:
+        raise InputError(
+            "[contact].model = 'elastic' is invalid with [adhesion], [wear], [hierarchy] or "
+            "[multiscale]: allowed only with model = 'lattice'"
+        )
+    requested = np.asarray(scenario.beta_deg, dtype=np.float64)
+    circle = np.arange(0.0, 360.0 - 1e-9, scenario.plot_step_deg) if job.plots else np.empty(0)
+    extra = circle[~np.isin(np.round(circle, 9), np.round(np.mod(requested, 360.0), 9))]
+    with progress(f"roughness {job.path.name}") as update:
+        whole = elastic_polar(
+            scenario.lower, scenario.upper, scenario.mu0, np.concatenate([requested, extra]),
+            settings=settings, progress=update,
+        )  # fmt: skip
+    return RoughnessRun(whole, whole, {}, whole)  # type: ignore[arg-type]
+
+
+def _elastic_files(job: RoughnessJob, whole: Any, plots: bool) -> dict[str, str | bytes]:
+    scenario, settings = job.scenario, job.scenario.contact
+    assert settings is not None
+    n = scenario.beta_deg.size
+    columns = {k: v[:n] for k, v in whole.columns().items()}
+    header = (
+        f"frictionlab {__version__} roughness: {scenario.title or job.path.name}\n"
+        f"lower = {scenario.lower.kind}, upper = {scenario.upper.kind}, mu0 = "
+        f"{scenario.mu0:g}, mu = {settings.mu_definition}, elastic contact: pressure = "
+        f"{settings.pressure:g} Pa, E* = {settings.modulus:g} Pa\n"
+        f"grid = {list(whole.geometry.shape)}, contact fraction "
+        f"{whole.contact_fraction_mean:.6g} in columns contact_fraction_*"
+    )
+    files: dict[str, str | bytes] = {"polar.csv": format_csv(columns, {"beta_deg": "deg"}, header)}
+    if plots:
+        files["polar.png"] = _png(scenario, whole)
+        files["pressure_map.png"] = _pressure_png(whole)
+    return files
+
+
+def _elastic_summary(job: RoughnessJob, whole: Any, seconds: float) -> dict[str, Any]:
+    scenario, settings = job.scenario, job.scenario.contact
+    assert settings is not None
+    n = scenario.beta_deg.size
+    mu = whole.mu[:n]
+    ratio = mu / scenario.mu0
+    return {
+        "frictionlab_version": __version__,
+        "command": "roughness",
+        "scenario_file": str(job.path),
+        "title": scenario.title,
+        "mu0": scenario.mu0,
+        "mu_definition": settings.mu_definition,
+        "lower": scenario.lower.describe(),
+        "upper": scenario.upper.describe(),
+        "sources": scenario.sources,
+        "warnings": list(scenario.warnings),
+        "contact": {**whole.summary(), "settings": settings.as_dict()},
+        "results": {
+            "mu_min": float(np.nanmin(mu)),
+            "mu_max": float(np.nanmax(mu)),
+            "mu_over_mu0_min": float(np.nanmin(ratio)),
+            "mu_over_mu0_max": float(np.nanmax(ratio)),
+            "directions_deg": scenario.beta_deg.tolist(),
+            "invalid_fraction": whole.invalid_fraction[:n].tolist(),
+        },
+        "work": {"seconds": round(seconds, 3), "plot_directions": int(whole.beta_deg.size)},
+    }
+
+
+def _pressure_png(polar: Any) -> bytes:
+    """The contact pressure of the first shift (a map, or a profile's line)."""
+    from frictionlab.plotting.roughness import figure_png_bytes, new_figure
+
+    fig = new_figure(5.5, 4.5)
+    ax = fig.add_subplot()
+    state = polar.states[0]
+    cell = [c for c in polar.geometry.cell if c is not None]
+    if state.pressure.ndim == 2 and polar.geometry.dimension == 2:
+        image = ax.imshow(
+            state.pressure.T / 1e6, origin="lower", cmap="magma",
+            extent=(0.0, cell[0] * 1e6, 0.0, cell[1] * 1e6),
+        )  # fmt: skip
+        fig.colorbar(image, ax=ax, label="contact pressure [MPa]")
+        ax.set_ylabel("y [um]")
+    else:
+        p = np.ravel(state.pressure)
+        x = (np.arange(p.size) + 0.5) * cell[0] / p.size
+        ax.plot(x * 1e6, p / 1e6, lw=1.0)
+        ax.set_ylabel("contact pressure [MPa]")
+    ax.set_xlabel("x [um]")
+    ax.set_title(
+        f"elastic contact: {polar.settings.pressure:g} Pa nominal, "
+        f"{100 * polar.contact_fraction_mean:.3g} % in contact",
+        fontsize=9,
+    )
+    return figure_png_bytes(fig)
+
+
+def _statistics_outputs(
+    scenario: RoughnessScenario, plots: bool
+) -> tuple[dict[str, str | bytes], dict[str, Any]]:
+    """``[output] statistics = true``: per sampled surface, its statistics as CSV tables
+    (``statistics_<side>_<table>.csv``) and one figure (``statistics_<side>.png``)."""
+    from frictionlab.roughness.statistics import surface_statistics
+    from frictionlab.roughness.surface import SampledHeightMap, SampledProfile
+
+    files: dict[str, str | bytes] = {}
+    summary: dict[str, Any] = {}
+    if not scenario.statistics:
+        return files, summary
+    for side, surface in (("lower", scenario.lower), ("upper", scenario.upper)):
+        if not isinstance(surface, SampledProfile | SampledHeightMap):
+            continue
+        stats = surface_statistics(surface)
+        summary[side] = stats.summary()
+        for name, columns in stats.tables().items():
+            files[f"statistics_{side}_{name}.csv"] = format_csv(
+                columns, {}, f"frictionlab {__version__} surface statistics: {side}, {name}"
+            )
+        if plots:
+            from frictionlab.plotting.roughness import figure_png_bytes, plot_statistics
+
+            files[f"statistics_{side}.png"] = figure_png_bytes(
+                plot_statistics(stats, title=f"{side} surface ({surface.kind})")
+            )
+    return files, summary

@@ -143,6 +143,20 @@ class AnisotropyFit(TableResult):
         kinetic polar (friction would oppose sliding in some direction).
     success, message, nfev, cost:
         The solver's outcome for the best start.
+    anisotropic_misfit:
+        The rms misfit over the rms of the polar's anisotropic part (the data minus its
+        circle of mean radial friction): the share of the anisotropy the law leaves
+        unexplained (0 for an isotropic polar fitted exactly).
+    forward_backward_kept:
+        Of the forward/backward difference ``mu(beta) - mu(beta + 180)`` (friction along
+        the sliding direction, over the direction pairs present), the share the fitted law
+        reproduces (projection ``sum D_fit D / sum D^2``); ``None`` without such pairs or
+        difference.
+    lateral_misfit, beta_at_lateral_misfit_deg:
+        The largest misfit across the sliding direction (a lateral force the fitted law
+        adds or misses, polar units) and where it is.
+    anisotropy_tolerance:
+        The threshold of the three checks above (see :func:`fit_anisotropy`).
     """
 
     beta_deg: FloatArray
@@ -166,6 +180,11 @@ class AnisotropyFit(TableResult):
     message: str
     nfev: int
     cost: float
+    anisotropic_misfit: float = 0.0
+    forward_backward_kept: float | None = None
+    lateral_misfit: float = 0.0
+    beta_at_lateral_misfit_deg: float = 0.0
+    anisotropy_tolerance: float = 0.1
 
     @property
     def orthotropy_angle_deg(self) -> float:
@@ -229,6 +248,7 @@ def fit_anisotropy(
     orthotropy_angle: float = 0.0,
     relative_rotation: ArrayLike = (0.0, 0.0),
     tolerance: float = 0.02,
+    anisotropy_tolerance: float = 0.1,
 ) -> AnisotropyFit:
     """Least-squares fit of the law's steady polar to friction vectors (module docstring).
 
@@ -245,6 +265,12 @@ def fit_anisotropy(
         Held rho = beta/k when the rotation is not fitted.
     tolerance:
         Largest relative rms misfit (rms over the mean |mu|) still called expressible.
+    anisotropy_tolerance:
+        Expressible also needs, where the polar is anisotropic beyond ``tolerance``: at
+        most this share of the anisotropic part unexplained, at least ``1 -
+        anisotropy_tolerance`` of the forward/backward difference kept (where that
+        difference exceeds ``tolerance`` of the mean |mu|), and no lateral misfit above
+        ``tolerance`` of the mean |mu| (``docs/bridge.md``).
     """
     data_in = (
         polar if isinstance(polar, DirectionalFriction) else DirectionalFriction.from_polar(polar)
@@ -255,6 +281,10 @@ def fit_anisotropy(
             raise ParameterError("fit", g, "groups among " + ", ".join(FIT_GROUPS))
     if not (isinstance(tolerance, int | float) and 0.0 < tolerance < 1.0):
         raise ParameterError("tolerance", tolerance, "0 < tolerance < 1 (relative rms misfit)")
+    if not (isinstance(anisotropy_tolerance, int | float) and 0.0 < anisotropy_tolerance < 1.0):
+        raise ParameterError(
+            "anisotropy_tolerance", anisotropy_tolerance, "0 < anisotropy_tolerance < 1"
+        )
     fit_o, fit_r = "orthotropy" in groups, "rotation" in groups
     C_hold = np.asarray(orthotropy, dtype=np.float64)
     rho_hold = np.asarray(relative_rotation, dtype=np.float64)
@@ -362,6 +392,33 @@ def fit_anisotropy(
             "is an ellipse (two lobes, from the orthotropy C_1/C_2) shifted by the rotation "
             "vector."
         )
+    honesty = _honesty(theta, beta_deg, data, tau, weights)
+    aniso_rms, aniso_rel, kept, d_rms, lateral, i_lat = honesty
+    # each check speaks only when the ones before passed (one reason, not a repetition)
+    if not notes and aniso_rms > tolerance * scale and aniso_rel > anisotropy_tolerance:
+        notes.append(
+            f"The law leaves {aniso_rel:.1%} of the polar's anisotropic part unexplained "
+            f"(threshold {anisotropy_tolerance:.0%}; overall rms misfit {relative:.1%} of the "
+            "mean friction coefficient): its polar is an ellipse shifted by the rotation "
+            "vector, which cannot follow this shape."
+        )
+    if (
+        not notes
+        and kept is not None
+        and d_rms > tolerance * scale
+        and kept < 1.0 - anisotropy_tolerance
+    ):
+        notes.append(
+            f"The fitted law keeps {kept:.0%} of the forward/backward difference "
+            f"mu(beta) - mu(beta + 180) (threshold {1.0 - anisotropy_tolerance:.0%}): its only "
+            "asymmetry is the constant rotation vector (a cos(beta) difference)."
+        )
+    if not notes and lateral > tolerance * scale:
+        notes.append(
+            f"The fitted law is off by a lateral force of {lateral:.3g} (across the sliding "
+            f"direction) at beta = {beta_deg[i_lat]:g} deg, above {tolerance:.1%} of the mean "
+            "friction coefficient."
+        )
     if not inside:
         notes.append(
             "The fitted rotation vector lies outside the law's kinetic polar: friction would "
@@ -389,4 +446,46 @@ def fit_anisotropy(
         message=str(best.message),
         nfev=int(best.nfev),
         cost=float(best.cost),
+        anisotropic_misfit=float(aniso_rel),
+        forward_backward_kept=kept,
+        lateral_misfit=float(lateral),
+        beta_at_lateral_misfit_deg=float(beta_deg[i_lat]),
+        anisotropy_tolerance=float(anisotropy_tolerance),
     )
+
+
+def _honesty(
+    theta: FloatArray, beta_deg: FloatArray, data: FloatArray, tau: FloatArray,
+    weights: FloatArray,
+) -> tuple[float, float, float | None, float, float, int]:  # fmt: skip
+    """What the overall misfit hides: the anisotropic part left unexplained, the share of
+    the forward/backward difference kept, and the largest lateral misfit.
+
+    Returns (rms of the data's anisotropic part, rms misfit over it, kept share or None,
+    rms forward/backward difference, largest lateral misfit, its index).
+    """
+    along = np.column_stack([np.cos(theta), np.sin(theta)])
+    across = np.column_stack([-np.sin(theta), np.cos(theta)])
+    radial = np.sum(data * along, axis=1)
+    circle = float(np.sum(weights * radial) / np.sum(weights))  # the isotropic part
+    aniso = data - circle * along
+    aniso_rms = float(np.sqrt(np.mean(np.sum(aniso**2, axis=1))))
+    diff = tau - data
+    rms = float(np.sqrt(np.mean(np.sum(diff**2, axis=1))))
+    aniso_rel = rms / aniso_rms if aniso_rms > 0.0 else (0.0 if rms == 0.0 else math.inf)
+    fitted_radial = np.sum(tau * along, axis=1)
+    ring = np.mod(beta_deg, 360.0)
+    d_data, d_fit = [], []
+    for i, b in enumerate(ring):
+        if b >= 180.0:
+            continue
+        j = np.flatnonzero(np.abs(ring - (b + 180.0)) < 1e-9)
+        if j.size:
+            d_data.append(radial[i] - radial[j[0]])
+            d_fit.append(fitted_radial[i] - fitted_radial[j[0]])
+    dd, df = np.array(d_data), np.array(d_fit)
+    d_rms = float(np.sqrt(np.mean(dd**2))) if dd.size else 0.0
+    kept = float(np.dot(df, dd) / np.dot(dd, dd)) if dd.size and np.dot(dd, dd) > 0 else None
+    lateral_all = np.abs(np.sum(diff * across, axis=1))
+    i_lat = int(np.argmax(lateral_all))
+    return aniso_rms, aniso_rel, kept, d_rms, float(lateral_all[i_lat]), i_lat

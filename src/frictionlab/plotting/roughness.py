@@ -29,6 +29,7 @@ __all__ = [
     "new_figure",
     "plot_family_lines",
     "plot_polar",
+    "plot_statistics",
     "plot_surface",
     "plot_wavelength_map",
     "radial_limits",
@@ -223,6 +224,39 @@ def scenario_figure(
     plot_surface(
         upper, ax=fig.add_subplot(grid[1, 1]), title=f"upper (sliding): {upper.kind}", length=cell
     )
+    if title:
+        fig.suptitle(title, fontsize=10)
+    return fig
+
+
+def plot_statistics(stats: Any, title: str | None = None) -> Figure:
+    """One figure of a surface's statistics (:mod:`frictionlab.roughness.statistics`):
+    PSDs, rms slope against direction, height and slope distributions."""
+    fig = new_figure(9.0, 7.0)
+    ax_psd = fig.add_subplot(2, 2, 1)
+    for pair, label in ((stats.psd_x, "along x"), (stats.psd_y, "along y")):
+        if pair is not None and len(pair[0]):
+            ax_psd.loglog(pair[0], pair[1], lw=1.2, label=f"1-D, {label} [m^3]")
+    if stats.psd_isotropic is not None:
+        ax_psd.loglog(*stats.psd_isotropic, lw=1.2, label="2-D isotropic [m^4]")
+    ax_psd.set_xlabel("wavevector q [rad/m]")
+    ax_psd.set_ylabel("PSD")
+    ax_psd.legend(fontsize=7, loc="lower left")
+    ax_dir = fig.add_subplot(2, 2, 2, projection="polar")
+    theta = np.radians(np.append(stats.theta_deg, stats.theta_deg[:1]))
+    ax_dir.plot(theta, np.append(stats.rms_slope_theta, stats.rms_slope_theta[:1]), lw=1.4)
+    ax_dir.set_title("rms slope against direction", fontsize=9)
+    ax_h = fig.add_subplot(2, 2, 3)
+    ax_h.plot(stats.height_bins * 1e6, stats.height_density * 1e-6, lw=1.2)
+    ax_h.set_xlabel("height about the mean [um]")
+    ax_h.set_ylabel("probability density [1/um]")
+    ax_s = fig.add_subplot(2, 2, 4)
+    ax_s.plot(stats.slope_bins, stats.slope_density_x, lw=1.2, label="slope along x")
+    if stats.slope_density_y is not None:
+        ax_s.plot(stats.slope_bins, stats.slope_density_y, lw=1.2, label="slope along y")
+    ax_s.set_xlabel("slope [-]")
+    ax_s.set_ylabel("probability density")
+    ax_s.legend(fontsize=7, loc="upper right")
     if title:
         fig.suptitle(title, fontsize=10)
     return fig

@@ -6,6 +6,9 @@ coefficient mu0 on the tangent plane of the surface it touches; forces are time-
 over one relative period. See ``docs/roughness.md`` for the equations, every option with
 its default, and how the uncertainties of the reconstructed equations were resolved.
 
+Elastic contact (:func:`elastic_polar`, :func:`pressure_sweep`): ContactMechanics'
+half-space supplies the load, the same friction law turns it into mu(beta).
+
 Extensions: :func:`adhesion_sweep` (tensile springs, Eqs 21-22),
 :func:`wear_history` (Archard wear, Eqs 23-28w), :func:`hierarchy_friction` and
 :func:`hierarchy_wear` (hierarchical roughness and its wear, Eqs 28-35).
@@ -37,6 +40,14 @@ from frictionlab.roughness.closed_forms import (
     wedge_friction,
     wedge_on_wedge_0deg,
     wedge_on_wedge_90deg,
+)
+from frictionlab.roughness.elastic import (
+    ContactState,
+    ElasticPolar,
+    ElasticSettings,
+    elastic_contact,
+    elastic_polar,
+    pressure_sweep,
 )
 from frictionlab.roughness.generators import (
     FlatProfile,
@@ -95,6 +106,9 @@ from frictionlab.roughness.wear import (
 
 __all__ = [
     "AdhesionSweep",
+    "ContactState",
+    "ElasticPolar",
+    "ElasticSettings",
     "FlatProfile",
     "FrictionPolar",
     "FunctionHeightMap",
@@ -118,6 +132,8 @@ __all__ = [
     "adhesion_sweep",
     "archard_volume",
     "check_nested",
+    "elastic_contact",
+    "elastic_polar",
     "flat",
     "flat_on_wedge_0deg",
     "flat_on_wedge_90deg",
@@ -136,6 +152,7 @@ __all__ = [
     "max_mu0",
     "merge_polars",
     "normal_force_factor",
+    "pressure_sweep",
     "read_surface",
     "reduction_coefficient",
     "roughness_volume",

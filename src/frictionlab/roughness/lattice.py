@@ -128,9 +128,9 @@ class LatticeSettings:
         Samples per relative period along beta (a return path crossing the cell m times
         along x and n times along y gets ``time_samples * max(|m|, |n|)``). For the
         ergodic average: about ``time_samples`` relative shifts on a grid of
-        ``ceil(sqrt(time_samples))`` per axis, raised to a divisor of the station count
-        within a factor 2 when one exists. Shifts by whole station spacings reuse the
-        upper surface evaluated once (choose counts that divide the stations for speed).
+        ``sqrt(time_samples)`` per axis, rounded to the nearest divisor of the station
+        count within a factor 2 (else raised to the next integer). Shifts by whole
+        station spacings reuse the upper surface evaluated once.
     travel:
         ``"auto"`` (default): ``"return"`` where beta is commensurate with the cell within
         ``max_return_periods``, else ``"ergodic"``. ``"return"``: one exact relative period
@@ -166,6 +166,14 @@ class LatticeSettings:
         cover one relative period uniformly). ``False``: exactly ``time_samples``.
     engine:
         ``"numba"`` (default, compiled kernels) or ``"numpy"`` (reference twin).
+    shift_invariance:
+        ``True`` (default): when either surface is flat every relative shift is the same
+        configuration (a translation of the rough surface over the periodic cell), so
+        each direction takes one time sample at the start phase (travel mode
+        ``"invariant"``). Equal to the time-sampled average to rounding when the samples
+        are whole-station shifts (the default snapping); otherwise it differs from it
+        only by the interpolation error of the shifted samples. ``False``: sample the
+        path anyway.
     """
 
     load: float | str = "full"
@@ -184,6 +192,7 @@ class LatticeSettings:
     engine: str = "numba"
     full_contact: str = "average"
     snap_time_samples: bool = True
+    shift_invariance: bool = True
 
     def __post_init__(self) -> None:
         if self.control not in CONTROLS:
@@ -261,6 +270,8 @@ class LatticeSettings:
             )
         if not isinstance(self.snap_time_samples, bool):
             raise ParameterError("snap_time_samples", self.snap_time_samples, "true or false")
+        if not isinstance(self.shift_invariance, bool):
+            raise ParameterError("shift_invariance", self.shift_invariance, "true or false")
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready dictionary of the settings."""
@@ -375,7 +386,8 @@ class FrictionPolar(TableResult):
     the time samples (``*_min``/``*_max``: extreme sample; ``*_mean``: average over the
     period); contact is 1 in full contact. ``invalid_fraction`` is the fraction of all
     2 N contacts violating Eq 1 that ``on_invalid="drop"`` left out (time-averaged; 0
-    for the other modes, where such a direction raises or is masked).
+    for the other modes, where such a direction raises or is masked). ``notes``: sentences
+    for the user (a numeric load that compresses every spring at every sample says so).
 
     Forces are time averages per spring (N; both families, ``2 N_stations`` springs):
     ``force_x``, ``force_y`` are the resisting force R^(c) of the compressed springs
@@ -415,6 +427,7 @@ class FrictionPolar(TableResult):
     success: bool
     message: str
     invalid_messages: tuple[str, ...] = field(default=())
+    notes: tuple[str, ...] = field(default=())
 
     @property
     def mu_over_mu0(self) -> FloatArray:
@@ -499,6 +512,7 @@ def merge_polars(first: FrictionPolar, *others: FrictionPolar) -> FrictionPolar:
             merged[f.name] = tuple(values[i] for i in order)
     merged["spring_evaluations"] = sum(p.spring_evaluations for p in polars)
     merged["invalid_messages"] = tuple(m for p in polars for m in p.invalid_messages)
+    merged["notes"] = tuple(dict.fromkeys(n for p in polars for n in p.notes))
     merged["success"] = all(p.success for p in polars)
     bad = int(np.count_nonzero(~merged["valid"]))
     merged["message"] = (
@@ -590,7 +604,7 @@ def _sliding_path(geometry: LatticeGeometry, beta_deg: float, settings: LatticeS
                 f"vector (m Lx, n Ly) with |m|, |n| <= {settings.max_return_periods}; use "
                 "travel='ergodic' or a travel length",
             )
-    target = math.ceil(math.sqrt(nt))
+    target = math.sqrt(nt)
     na = _ergodic_count(target, geometry.shape[0])
     nb = _ergodic_count(target, geometry.shape[1])
     a, b = np.meshgrid(np.arange(na) / na, np.arange(nb) / nb, indexing="ij")
@@ -619,13 +633,16 @@ def snap_count(count: int, stations: int) -> int:
 _snap = snap_count
 
 
-def _ergodic_count(target: int, stations: int) -> int:
-    """Shifts per axis of the ergodic grid: ``target``, raised to a divisor of the station
-    count when one lies in [target, 2 target] (whole-station shifts need no re-evaluation)."""
-    for d in range(target, 2 * target + 1):
-        if stations % d == 0:
-            return d
-    return target
+def _ergodic_count(target: float, stations: int) -> int:
+    """Shifts per axis of the ergodic grid: the divisor of the station count nearest to
+    ``target`` (ratio scale) within a factor 2, so every shift is whole stations and the
+    upper surface is read rolled, not re-evaluated; ``ceil(target)`` when there is none."""
+    best, best_err = math.ceil(target), math.inf
+    for d in range(max(1, math.ceil(target / 2.0)), math.floor(2.0 * target) + 1):
+        err = abs(math.log(d / target))
+        if stations % d == 0 and err < best_err - 1e-12:
+            best, best_err = d, err
+    return best
 
 
 def _check_mu0(mu0: Any) -> float:
@@ -706,6 +723,13 @@ def friction_polar(
     mu_proj = mu_x * cos_b + mu_y * sin_b
     messages = tuple(r.invalid for r in results if r.invalid is not None)
     n_bad = len(messages)
+    notes: tuple[str, ...] = ()
+    if lattice.mode == _kernels.MODE_LOAD and all(r.contact_min == 1.0 for r in results):
+        notes = (
+            f"load = {settings.load:g} N per spring compresses every spring at every time "
+            "sample (full contact): mu differs from the limit load = 'full' only through "
+            "the unequal spring forces; load = 'full' computes that limit in one pass",
+        )
     return FrictionPolar(
         beta_deg=readonly(betas, None),
         mu_x=readonly(mu_x, None),
@@ -739,6 +763,7 @@ def friction_polar(
         success=n_bad == 0,
         message="ok" if n_bad == 0 else f"{n_bad} of {betas.size} directions violate Eq 1's bound",
         invalid_messages=messages,
+        notes=notes,
     )
 
 
@@ -758,9 +783,12 @@ def _all_directions(
     progress: Callable[[int, int], None] | None,
 ) -> list[_Direction]:
     """:func:`_direction` for every direction, in order (the threads work inside a sample)."""
-    results = []
+    results: list[_Direction] = []
     for i, b in enumerate(betas):
-        results.append(_direction(lattice, lower, upper, mu0, float(b), settings))
+        # shift-invariant (one sample, the same gaps in every direction): the load balance's
+        # root is the same, so the previous direction's offset starts Newton at it
+        start = results[-1].offset if lattice.invariant and results else math.nan
+        results.append(_direction(lattice, lower, upper, mu0, float(b), settings, start))
         if progress is not None:
             progress(i + 1, betas.size)
     return results
@@ -782,6 +810,7 @@ class _Lattice:
     spacing: tuple[float, float]
     mode: int
     load: float
+    invariant: bool = False
 
 
 @dataclass(frozen=True)
@@ -805,6 +834,7 @@ class _Direction:
     travel: float | None
     invalid: str | None
     invalid_fraction: float = 0.0
+    offset: float = math.nan  # c of the last time sample (load control)
 
 
 def _average_directions(
@@ -891,6 +921,7 @@ def _prepare(lower: Surface, upper: Surface, settings: LatticeSettings) -> _Latt
         spacing=(lx / nx, (ly / ny) if ly is not None else math.inf),
         mode=mode,
         load=settings.load if isinstance(settings.load, float) else 0.0,
+        invariant=settings.shift_invariance and (lower.is_flat or upper.is_flat),
     )
 
 
@@ -901,10 +932,17 @@ def _direction(
     mu0: float,
     beta: float,
     settings: LatticeSettings,
+    c_start: float = math.nan,
 ) -> _Direction:
-    """Time average over the sliding path of one direction (Eqs 5-9 and 21-22, time-averaged)."""
-    path = _sliding_path(lat.geometry, beta, settings)
-    results = _samples(lat, upper, mu0, beta, path.shifts, settings)
+    """Time average over the sliding path of one direction (Eqs 5-9 and 21-22, time-averaged).
+
+    ``c_start``: a warm start of the first sample's load balance (load control).
+    """
+    if lat.invariant:  # a flat face: every shift is the same configuration
+        path = _Path(np.array([settings.phase], dtype=np.float64), "invariant", None)
+    else:
+        path = _sliding_path(lat.geometry, beta, settings)
+    results = _samples(lat, upper, mu0, beta, path.shifts, settings, c_start)
     n_st = lat.geometry.n_stations
     f_sum = x_sum = y_sum = f_tot = 0.0
     fractions = np.empty(path.shifts.shape[0])
@@ -959,6 +997,7 @@ def _direction(
         travel=path.travel,
         invalid=None,
         invalid_fraction=dropped / n_samples if drop else 0.0,
+        offset=float(results[-1][0]) if results else math.nan,
     )
     if first_invalid is not None:
         message = _invalid_message(
@@ -1012,8 +1051,12 @@ def _samples(
     beta: float,
     shifts: FloatArray,
     settings: LatticeSettings,
+    c_start: float = math.nan,
 ) -> list[tuple[Any, ...]]:
     """The kernel's outcome (``SAMPLE_FIELDS``) of every time sample of one direction, in order.
+
+    ``c_start`` warm-starts the first load balance (load control without detachment,
+    whose balance has several roots).
 
     A block stops early at a sample that ends the computation (a load above the pull-off
     load, or a contact violating Eq 1 with ``on_invalid="raise"``): the caller raises at
@@ -1033,6 +1076,8 @@ def _samples(
     drop = settings.on_invalid == "drop"
     stop_invalid = settings.on_invalid == "raise"
     c_cold = math.nan  # load control: no warm start
+    if lat.mode == _kernels.MODE_LOAD and settings.detachment is None:
+        c_cold = c_start
     if lat.mode == _kernels.MODE_SEPARATION and settings.separation is not None:
         c_cold = settings.separation
 

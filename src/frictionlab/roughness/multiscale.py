@@ -43,7 +43,7 @@ from frictionlab.roughness.full_contact import full_contact_sums
 from frictionlab.roughness.generators import from_array
 from frictionlab.roughness.lattice import _cos_sin_deg, check_betas, lattice_geometry
 from frictionlab.roughness.surface import SampledHeightMap, SampledProfile, Surface
-from frictionlab.roughness.topography import band_filter
+from frictionlab.roughness.topography import band_filter, resolvable_range
 
 __all__ = [
     "MU_PASSED",
@@ -79,6 +79,15 @@ def band_surfaces(surface: Surface, cutoffs: Sequence[float]) -> list[Surface]:
         sizes: list[float] = list(surface.physical_sizes)
     else:
         sizes = [surface.size]
+    lo, hi = resolvable_range(sizes, heights.shape)
+    outside = [c for c in values if not (lo <= c <= hi)]
+    if outside:
+        raise ParameterError(
+            "cutoffs",
+            values,
+            f"wavelengths in the surface's resolvable range {lo:.4g} m (twice the pixel) to "
+            f"{hi:.4g} m (the period); {outside} lie outside it (their bands would be empty)",
+        )
     kept = [band_filter(heights, sizes, c, None) for c in values]  # S(c_1), ..., S(c_k)
     parts = [kept[0]]
     parts += [kept[i + 1] - kept[i] for i in range(len(values) - 1)]

@@ -57,6 +57,7 @@ import hashlib
 import math
 import os
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -129,6 +130,8 @@ def prepare_topography(
     window: str | None = None,
     short_cutoff: float | None = None,
     long_cutoff: float | None = None,
+    allow_flattening: bool = False,
+    resample: str | int | None = None,
 ) -> PreparedSurface:
     """Crop, fill, detrend, window, make periodic and filter a topography (module docstring).
 
@@ -151,7 +154,17 @@ def prepare_topography(
     window:
         A SurfaceTopography window name (``"hann"``, ...), applied after detrending.
     short_cutoff, long_cutoff:
-        Shortest and longest wavelength kept (m), ``short_cutoff < long_cutoff``.
+        Shortest and longest wavelength kept (m), ``short_cutoff < long_cutoff``; each
+        must lie in the scan's resolvable range (:func:`resolvable_range`), else an error
+        naming the key and the range.
+    allow_flattening:
+        The window and the filters must keep at least 1 % of the rms height and of the rms
+        slope of the detrended data (:data:`FLATTENING_LIMIT`); ``True`` accepts less.
+    resample:
+        How a non-uniform line scan is put on a uniform grid (SurfaceTopography's
+        ``to_uniform``, linear interpolation): ``"median"`` (pixel = the median spacing),
+        ``"finest"`` (pixel = the smallest spacing) or a number of points >= 8. ``None``
+        (default): a non-uniform scan is refused, naming this key.
     """
     if periodicity not in PERIODICITY_MODES:
         raise ParameterError("periodicity", periodicity, f"one of {PERIODICITY_MODES}")
@@ -159,10 +172,11 @@ def prepare_topography(
         raise ParameterError("detrend", detrend, f"one of {DETREND_MODES}")
     if not hasattr(topography, "heights") or not hasattr(topography, "physical_sizes"):
         raise ParameterError("topography", type(topography).__name__, "a SurfaceTopography object")
+    resampled = None
     if not getattr(topography, "is_uniform", False):
-        raise ParameterError(
-            "topography", "non-uniform line scan", "uniformly sampled data (resample it first)"
-        )
+        topography, resampled = _resample(topography, resample)
+    elif resample is not None:
+        _check_resample(resample)
     if topography.dim not in (1, 2):
         raise ParameterError("topography.dim", topography.dim, "1 (line scan) or 2 (topography)")
     for name, value in (("short_cutoff", short_cutoff), ("long_cutoff", long_cutoff)):
@@ -215,6 +229,8 @@ def prepare_topography(
         ],
         "source_points": [int(v) for v in np.ravel(topography.nb_grid_pts)],
     }
+    if resampled is not None:
+        info["resampled"] = resampled
     if crop is not None:
         topography = _crop(topography, crop, to_metres)
         info["crop_m"] = [float(v) for v in crop]
@@ -238,14 +254,33 @@ def prepare_topography(
                 "defined region instead)",
             )
         topography = topography.interpolate_undefined_data()
+    warnings: list[str] = []
+    total_points = int(np.prod(topography.nb_grid_pts))
     info["filled_points"] = n_bad
+    info["filled_fraction"] = n_bad / total_points
+    if n_bad > FILL_WARNING * total_points:
+        warnings.append(
+            f"fill_missing invented {n_bad} of {total_points} points "
+            f"({100.0 * n_bad / total_points:.1f} %, above {100 * FILL_WARNING:.0f} %) by "
+            "harmonic interpolation: they are smooth, so the friction of this map is "
+            "underestimated where they lie; crop the defined region instead"
+        )
     info["detrend"] = detrend
     if detrend != "none":
         topography = topography.detrend(detrend_mode=detrend)
+    before = _rms(np.asarray(np.ma.getdata(topography.heights()), dtype=np.float64) * to_metres,
+                  [float(s) * to_metres for s in np.ravel(topography.physical_sizes)])  # fmt: skip
     info["window"] = window
     if window is not None:
+        separable = topography.dim == 2 and _non_square(topography)
+        info["window_shape"] = "separable" if separable else "radial"
         try:
-            topography = topography.window(window=window)
+            if separable:  # a radial window would zero the corners of a long strip
+                topography = topography.window(window=window, direction="x").window(
+                    window=window, direction="y"
+                )
+            else:
+                topography = topography.window(window=window)
             topography.heights()
         except Exception as exc:
             raise ParameterError(
@@ -253,7 +288,6 @@ def prepare_topography(
             ) from None
     heights = np.array(np.ma.getdata(topography.heights()), dtype=np.float64) * to_metres
     sizes = [float(s) * to_metres for s in np.ravel(topography.physical_sizes)]
-    warnings: list[str] = []
     info["periodicity"] = periodicity
     if periodicity == "assume":
         step = _edge_steps(heights, sizes)
@@ -271,8 +305,33 @@ def prepare_topography(
             sizes[axis] *= 2.0
     info["short_cutoff_m"] = short_cutoff
     info["long_cutoff_m"] = long_cutoff
+    lo, hi = resolvable_range(sizes, heights.shape)
+    for key, value in (("short_cutoff", short_cutoff), ("long_cutoff", long_cutoff)):
+        if value is not None and not (lo <= value <= hi):
+            raise ParameterError(
+                key,
+                value,
+                f"a wavelength in the scan's resolvable range {lo:.4g} m (twice the pixel) to "
+                f"{hi:.4g} m (the period): outside it the filter removes everything or nothing",
+            )
     if short_cutoff is not None or long_cutoff is not None:
         heights = band_filter(heights, sizes, short_cutoff, long_cutoff)
+    after = _rms(heights, sizes)
+    info["rms_kept"] = {
+        k: (after[k] / before[k] if before[k] > 0.0 else 1.0) for k in ("height", "slope")
+    }
+    flattened = [k for k, v in info["rms_kept"].items() if v < FLATTENING_LIMIT]
+    if flattened:
+        text = ", ".join(f"rms {k} to {100.0 * info['rms_kept'][k]:.3g} %" for k in flattened)
+        if not allow_flattening:
+            raise ParameterError(
+                "allow_flattening",
+                False,
+                f"true to accept a preparation (window, short_cutoff, long_cutoff) that "
+                f"reduces the {text} of the detrended data (below "
+                f"{100 * FLATTENING_LIMIT:.0f} %: the surface left is not the measured one)",
+            )
+        warnings.append(f"the preparation reduced the {text} (allow_flattening = true)")
     surface = from_array(heights, sizes if heights.ndim == 2 else sizes[0], gradient=gradient)
     params = surface.parameters()
     info["physical_sizes_m"] = sizes
@@ -280,6 +339,72 @@ def prepare_topography(
     info["rms_height_m"] = params["rms_height_m"]
     info["rms_slope"] = params["rms_slope"]
     return PreparedSurface(surface, info, tuple(warnings))
+
+
+#: Fraction of filled (invented) points above which a warning is given.
+FILL_WARNING = 0.10
+#: Smallest fraction of the rms height or slope the window and filters may keep.
+FLATTENING_LIMIT = 0.01
+#: ``resample`` modes of non-uniform line scans (besides a number of points).
+RESAMPLE_MODES = ("median", "finest")
+
+
+def resolvable_range(sizes: Sequence[float], shape: Sequence[int]) -> tuple[float, float]:
+    """Wavelengths (m) a periodic scan represents: twice its finest pixel to its period.
+
+    A filter cutoff outside ``[lo, hi]`` removes all or none of the data along every axis.
+    """
+    pixels = [float(s) / int(n) for s, n in zip(sizes, shape, strict=True)]
+    return 2.0 * min(pixels), max(float(s) for s in sizes)
+
+
+def _rms(heights: FloatArray, sizes: Sequence[float]) -> dict[str, float]:
+    """rms height (about the mean) and rms slope (periodic central differences)."""
+    h = np.asarray(heights, dtype=np.float64)
+    slope2 = np.zeros(h.shape)
+    for axis in range(h.ndim):
+        d = float(sizes[axis]) / h.shape[axis]
+        slope2 += ((np.roll(h, -1, axis) - np.roll(h, 1, axis)) / (2.0 * d)) ** 2
+    return {"height": float(np.std(h)), "slope": float(np.sqrt(slope2.mean()))}
+
+
+def _non_square(topography: Any) -> bool:
+    nx, ny = (int(v) for v in topography.nb_grid_pts)
+    lx, ly = (float(v) for v in topography.physical_sizes)
+    return nx != ny or not math.isclose(lx, ly, rel_tol=1e-9)
+
+
+def _check_resample(resample: Any) -> None:
+    if isinstance(resample, str):
+        if resample not in RESAMPLE_MODES:
+            raise ParameterError("resample", resample, f"one of {RESAMPLE_MODES} or points >= 8")
+    elif isinstance(resample, bool) or not isinstance(resample, int) or resample < 8:
+        raise ParameterError("resample", resample, f"one of {RESAMPLE_MODES} or points >= 8")
+
+
+def _resample(topography: Any, resample: Any) -> tuple[Any, dict[str, Any]]:
+    """A non-uniform line scan on a uniform grid (SurfaceTopography's ``to_uniform``)."""
+    if resample is None:
+        raise ParameterError(
+            "resample",
+            None,
+            f"one of {RESAMPLE_MODES} or a number of points for this non-uniform line scan "
+            "(its points are not equally spaced; it is put on a uniform grid by linear "
+            "interpolation)",
+        )
+    _check_resample(resample)
+    x = np.asarray(topography.positions(), dtype=np.float64)
+    spacing = np.diff(x)
+    if spacing.size < 1 or not np.all(spacing > 0.0):
+        raise ParameterError("resample", resample, "a line scan with strictly increasing positions")
+    if resample == "median":
+        uniform = topography.to_uniform(pixel_size=float(np.median(spacing)))
+    elif resample == "finest":
+        uniform = topography.to_uniform(pixel_size=float(spacing.min()))
+    else:
+        uniform = topography.to_uniform(nb_points=int(resample))
+    points = int(np.ravel(uniform.nb_grid_pts)[0])
+    return uniform, {"mode": resample, "source_points": int(x.size), "points": points}
 
 
 def _length_units() -> list[str]:
@@ -427,6 +552,8 @@ def read_prepared(
     window: str | None = None,
     short_cutoff: float | None = None,
     long_cutoff: float | None = None,
+    allow_flattening: bool = False,
+    resample: str | int | None = None,
 ) -> PreparedSurface:
     """Read a measured surface file with SurfaceTopography and prepare it (file I/O here only).
 
@@ -503,6 +630,8 @@ def read_prepared(
         window=window,
         short_cutoff=short_cutoff,
         long_cutoff=long_cutoff,
+        allow_flattening=allow_flattening,
+        resample=resample,
     )
     source = {
         "file": os.path.basename(name),

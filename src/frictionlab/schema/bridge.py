@@ -25,7 +25,7 @@ from frictionlab.subloading import SubloadingParams, initial_state
 __all__ = ["BRIDGE_FILE", "BridgeOptions", "BridgeScenario", "load_bridge", "parse_bridge"]
 
 #: Roughness tables the bridge does not use (its polar is the single-level kinetic one).
-NOT_USED = ("output", "adhesion", "wear", "hierarchy")
+NOT_USED = ("output", "adhesion", "wear", "hierarchy", "contact")
 #: [law] keys that a fitted group replaces.
 _FITTED_KEYS = {
     "rotation": ("rotation",),
@@ -57,6 +57,9 @@ OPTIONS = Section("bridge", (
           allowed="1 to 100000 steps"),
     Field("check_tolerance", NUMBER, "|simulated - closed form| allowed in f_t/f_n", "",
           1.0e-6, low=0, open="low", allowed="a tolerance > 0"),
+    Field("anisotropy_tolerance", NUMBER, "largest share of the polar's anisotropic part "
+          "left unexplained", "", 0.1, low=0, high=1, open="both",
+          allowed="0 < anisotropy_tolerance < 1"),
 ), "what is fitted and how the fit is checked", "[bridge]")  # fmt: skip
 BRIDGE_FILE = Section("bridge", (
     *_TOP,
@@ -81,6 +84,7 @@ class BridgeOptions:
     distance: float | None = None
     steps: int = 400
     check_tolerance: float = 1.0e-6
+    anisotropy_tolerance: float = 0.1
 
 
 @dataclass(frozen=True)

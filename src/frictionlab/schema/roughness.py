@@ -22,6 +22,7 @@ from frictionlab.app.budget import check_grid_size
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.roughness import generators
+from frictionlab.roughness.elastic import ElasticSettings
 from frictionlab.roughness.hierarchy import (
     MU_PASSED,
     ON_INVALID,
@@ -39,7 +40,12 @@ from frictionlab.roughness.lattice import (
     lattice_geometry,
 )
 from frictionlab.roughness.surface import HeightMap, Surface
-from frictionlab.roughness.topography import DETREND_MODES, PERIODICITY_MODES, read_prepared
+from frictionlab.roughness.topography import (
+    DETREND_MODES,
+    PERIODICITY_MODES,
+    RESAMPLE_MODES,
+    read_prepared,
+)
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
 from frictionlab.schema.core import (
     BOOL,
@@ -147,6 +153,12 @@ LOADS = Kind("loads", _loads, {"oneOf": [_NUMS.json, _range_json("count", "integ
 _FULL = Kind("'full'", _full, {"type": "string", "enum": ["full"]})
 _BETA = Field("beta_deg", DIRECTIONS, "directions (default: [sliding].beta_deg)", "deg")
 _POS: dict[str, Any] = {"low": 0.0, "open": "low", "allowed": "a positive value (SI units)"}
+_RESAMPLE = Kind(
+    "mode",
+    lambda t, f: t.get(f.name, str, choices=RESAMPLE_MODES),
+    {"type": "string", "enum": list(RESAMPLE_MODES)},
+)
+CONTACT_MODELS = ("lattice", "elastic")
 _SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
 SURFACE = Section("surface", (
     Field("kind", STRING, "surface kind", "", REQUIRED, choices=SURFACE_KINDS),
@@ -174,6 +186,10 @@ SURFACE = Section("surface", (
     Field("unit", STRING, "length unit of files without one", "", None),
     Field("crop", listed(float, "number", (2, 4)), "[x0, x1, y0, y1]", "m", None),
     Field("window", STRING, "window applied before filtering (e.g. hann)", "", None),
+    Field("allow_flattening", BOOL, "accept a preparation keeping < 1 % of the rms height or "
+          "slope", "", False),
+    Field("resample", _either(_RESAMPLE, INTEGER),
+          "non-uniform line scans: median | finest | a number of points", "", None),
 ), "one rough surface", variants={
     "flat": (),
     "wedge": ("angles_deg", "wavelength"),
@@ -184,7 +200,7 @@ SURFACE = Section("surface", (
     "file": ("path", "periodicity", "detrend", "fill_missing", "gradient", "format", "channel",
              "unit", Field("physical_sizes", _SIZES.kind, "scan size along x (and y), in "
              "`unit` (files without sizes)", "unit", low=0, open="low"), "crop", "window",
-             "short_cutoff", "long_cutoff"),
+             "short_cutoff", "long_cutoff", "allow_flattening", "resample"),
 }, required_by={
     "wedge": ("angles_deg", "wavelength"), "smooth_wedge": ("angles_deg", "wavelength"),
     "sinusoid": ("amplitude", "wavelengths"),
@@ -219,13 +235,22 @@ LATTICE = Section("lattice", (
     Field("full_contact", STRING, "load = full: area average or lattice",
           choices=FULL_CONTACT_METHODS, **_L),
     Field("snap_time_samples", BOOL, "time samples moved to whole-station shifts", **_L),
+    Field("shift_invariance", BOOL, "a flat counter-face takes one time sample", **_L),
 ), "lattice settings (LatticeSettings)", "[lattice]")  # fmt: skip
 OUTPUT = Section("output", (
     Field("plot_full_circle", BOOL, "compute extra directions for the full-circle plot", "",
           True),
     Field("plot_step_deg", NUMBER, "step of those directions", "deg", 5.0, low=0, high=90,
           open="low", allowed="0 < step <= 90"),
+    Field("statistics", BOOL, "write the sampled surfaces' statistics (CSV, PNG)", "", False),
 ), "figures", "[output]")  # fmt: skip
+CONTACT = Section("contact", (
+    Field("model", STRING, "load distribution: the paper's springs or an elastic half-space",
+          "", "lattice", choices=CONTACT_MODELS),
+    Field("pressure", NUMBER, "nominal mean pressure (model = elastic)", "Pa", None, **_POS),
+    Field("modulus", NUMBER, "effective contact modulus E*", "Pa", None, **_POS),
+    Field("hardness", NUMBER, "optional cap on the local pressure", "Pa", None, **_POS),
+), "the load distribution (roughness.elastic)", "[contact]")  # fmt: skip
 ADHESION = Section("adhesion", (
     Field("loads", LOADS, "loads per spring: a list or {start, stop, count}", "N", REQUIRED),
     Field("k_t", NUMBER, "tensile spring stiffness, 0 <= k_t <= k_c (default k_c / 2)", "N/m",
@@ -299,6 +324,7 @@ ROUGHNESS_FILE = Section("roughness", (
     Field("wear", table=WEAR),
     Field("hierarchy", table=HIERARCHY),
     Field("multiscale", table=MULTISCALE),
+    Field("contact", table=CONTACT),
 ), "A roughness scenario of `frictionlab roughness`: two surfaces slid over each other on the "
    "lattice-spring model. Lengths in m, angles in degrees.")  # fmt: skip
 
@@ -362,6 +388,8 @@ class RoughnessScenario:
     sources: dict[str, dict[str, Any]] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
     multiscale: MultiscaleOptions | None = None
+    contact: ElasticSettings | None = None
+    statistics: bool = False
 
 
 def parse_roughness(
@@ -400,6 +428,7 @@ def parse_roughness(
         hierarchy = _hierarchy(top.table("hierarchy"), lower, upper, betas, base)  # type: ignore[arg-type]
     if "multiscale" in top:
         multiscale = _multiscale(top.raw("multiscale"), betas)
+    contact = _contact(CONTACT.read(top.raw("contact", {})), settings)
     try:  # the station count is checked against the surfaces now, not mid-computation
         lattice_geometry(lower, upper, settings.stations)
     except ParameterError as exc:
@@ -410,8 +439,32 @@ def parse_roughness(
         title=values["title"], plot_full_circle=output["plot_full_circle"],
         plot_step_deg=output["plot_step_deg"], adhesion=adhesion, wear=wear,
         hierarchy=hierarchy, sources={k: v for k, v in notes.items() if k in ("lower", "upper")},
-        warnings=tuple(notes.get("warnings", ())), multiscale=multiscale,
+        warnings=tuple(notes.get("warnings", ())), multiscale=multiscale, contact=contact,
+        statistics=output["statistics"],
     )  # fmt: skip
+
+
+def _contact(v: dict[str, Any], settings: LatticeSettings) -> ElasticSettings | None:
+    """``[contact]``: ``model = "elastic"`` gives the BEM settings; ``"lattice"`` None."""
+    if v["model"] == "lattice":
+        given = [k for k in ("pressure", "modulus", "hardness") if v[k] is not None]
+        if given:
+            raise InputError(
+                f"[contact].{given[0]} is invalid with model = 'lattice': allowed only with "
+                "model = 'elastic' (the lattice's load is [sliding].load, N per spring)"
+            )
+        return None
+    for key in ("pressure", "modulus"):
+        if v[key] is None:
+            raise InputError(f"[contact].{key} is missing: required with model = 'elastic'")
+    try:
+        return ElasticSettings(
+            pressure=v["pressure"], modulus=v["modulus"], hardness=v["hardness"],
+            stations=settings.stations, mu_definition=settings.mu_definition,
+            on_invalid="raise" if settings.on_invalid == "raise" else "drop",
+        )  # fmt: skip
+    except ParameterError as exc:
+        raise InputError(f"[contact].{exc}") from None
 
 
 def load_roughness(
@@ -577,6 +630,7 @@ def _build(v: dict[str, Any], where: str, base_dir: Path, info: dict[str, Any]) 
         physical_sizes=None if sizes is None else (sizes[0] if len(sizes) == 1 else tuple(sizes)),
         crop=None if crop is None else tuple(crop), window=v["window"],
         short_cutoff=v["short_cutoff"], long_cutoff=v["long_cutoff"],
+        allow_flattening=v["allow_flattening"], resample=v["resample"],
     )  # fmt: skip
     info.update(prepared.info)
     info["warnings"] = list(prepared.warnings)

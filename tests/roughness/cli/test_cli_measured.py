@@ -62,7 +62,7 @@ def run(tmp_path: Path, text: str, *extra: str) -> tuple[int, Path]:
 @pytest.mark.slow
 def test_provenance_multiscale_and_quiet(tmp_path, capsys, check_summary) -> None:
     write_map(tmp_path / "map.x3p")
-    text = scenario("map.x3p", "long_cutoff = 1.0e-3") + "[multiscale]\ncutoffs = [40.0e-6]\n"
+    text = scenario("map.x3p", "long_cutoff = 1.0e-4") + "[multiscale]\ncutoffs = [40.0e-6]\n"
     code, out = run(tmp_path, text, "--quiet")
     assert code == 0
     captured = capsys.readouterr()
@@ -78,7 +78,7 @@ def test_provenance_multiscale_and_quiet(tmp_path, capsys, check_summary) -> Non
     assert summary["provenance"]["command"][:2] == ["frictionlab", "roughness"]
     assert source["file"] == "map.x3p" and source["sha256"] == digest
     assert source["periodicity"] == "mirror" and source["detrend"] == "center"
-    assert source["long_cutoff_m"] == 1e-3 and source["short_cutoff_m"] is None
+    assert source["long_cutoff_m"] == 1e-4 and source["short_cutoff_m"] is None
     assert source["source_physical_sizes_m"] == [64e-6, 64e-6]
     assert source["physical_sizes_m"] == [128e-6, 128e-6]
     assert 0.2 < source["rms_slope"] < 0.4

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from frictionlab.errors import ParameterError
 from frictionlab.roughness import generators as gen
 from frictionlab.roughness.closed_forms import (
     hierarchy_flat_on_wedge_90deg,
@@ -30,12 +31,12 @@ def rough_map(seed: int = 5):
     )
 
 
-def test_one_band_equals_the_single_level_result() -> None:
+def test_a_cutoff_beyond_the_period_is_refused() -> None:
+    """1 m >> 0.1 mm would leave the outer band empty (only the mean): refused."""
     lower, upper = rough_map(5), rough_map(6)
-    result = multiscale_friction(lower, upper, 0.3, BETAS, [1.0])  # 1 m >> 0.1 mm
-    single = friction_polar(lower, upper, 0.3, BETAS)
-    np.testing.assert_allclose(result.mu[-1], single.mu, rtol=1e-12)
-    np.testing.assert_allclose(result.mu[0], 0.3, rtol=1e-15)  # only the mean retained
+    with pytest.raises(ParameterError, match="cutoffs"):
+        multiscale_friction(lower, upper, 0.3, BETAS, [1.0])
+    result = multiscale_friction(lower, upper, 0.3, BETAS, [1e-4])  # the period
     assert result.cutoff_m[-1] == pytest.approx(2 * 1e-4 / 64, rel=1e-12)  # Nyquist
     assert result.valid.all()
 
