@@ -65,6 +65,16 @@ def test_bundled_example_end_to_end(
         ("solver.tangent='secant'", "[solver].tangent"),
         ("solver.tolerance=0.5", "[solver].tolerance"),
         ("block.size=1", "[block].size"),
+        ("normal.force=1e5", "not pressure and force"),
+        ("block.integration='reduced'", "[block].integration"),
+        ("block.refinement.size=1e-3", "refinement.extent"),
+        ("base.center=[0.05, 0.0]", "[base].center"),
+        ("base.shape='cylinder'", "[base].radius"),
+        ("solver.linear_solver='cg'", "[solver].linear_solver"),
+        ("solver.memory_limit=1e3", "[block].element_size"),
+        ("output.fields=1", "[output].fields"),
+        ("law.mu_s=0", "mu_s (= 0.0)"),
+        ("law.mu_k=0", "[law].mu_k"),
     ],
 )
 def test_bad_input_is_one_line_naming_the_key(
@@ -181,3 +191,66 @@ def test_summary_records_the_newton_residuals_of_every_step(tmp_path: Path) -> N
     assert len(residuals) == len(solver["iterations_per_step"])
     for its, res in zip(solver["iterations_per_step"][1:], residuals[1:], strict=True):
         assert len(res) == its + 1 and res[-1] <= 1e-10  # one per iterate, the last converged
+
+
+@pytest.mark.slow
+def test_bundled_cylinder_partial_slip_runs(tmp_path: Path) -> None:
+    """The bundled Cattaneo-Mindlin example: exit 0, P = the given force, Q/(mu P) = 0.9
+    at the end, today's column names, one interface row per point per global row."""
+    out = tmp_path / "out"
+    with bundled_contact_scenario("cylinder_partial_slip") as scenario:
+        assert main(["contact", str(scenario), "--out", str(out), "--no-plots", "--quiet"]) == 0
+    g = read_csv(out / "global.csv")
+    normal, friction = g["normal_force"][-1], g["tangential_force"][-1]
+    assert normal == pytest.approx(20671.0, rel=1e-9)
+    assert friction / (0.5 * normal) == pytest.approx(0.9, rel=1e-4)  # the file rounds
+    i = read_csv(out / "interface.csv")
+    assert {"row", "x", "traction_n", "R", "status"} <= set(i.columns)
+    assert len(i["row"]) == len(g["time"]) * int(np.sum(i["row"] == 0))
+
+
+def test_output_fields_write_a_paraview_series(tmp_path: Path) -> None:
+    """[output] fields = true writes fields/block.pvd, fields/interface.pvd and one .vtu
+    per recorded row, readable by meshio, with the interface tractions summing to P."""
+    meshio = pytest.importorskip("meshio")
+    with bundled_contact_scenario("pmma_block") as path:
+        text = path.read_text()
+    scenario = tmp_path / "fields.toml"
+    scenario.write_text(text + "\n[output]\nfields = true\n")
+    out = tmp_path / "out"
+    args = ["contact", str(scenario), "--out", str(out), "--no-plots", "--quiet",
+            "--set", "block.element_size=0.0125", "--set", "program.1.steps=5"]  # fmt: skip
+    assert main([*args, "--set", "program.3.steps=5"]) == 0
+    g = read_csv(out / "global.csv")
+    assert (out / "fields" / "block.pvd").is_file()
+    last = len(g["time"]) - 1
+    face = meshio.read(out / "fields" / f"interface_{last:04d}.vtu")
+    block = meshio.read(out / "fields" / f"block_{last:04d}.vtu")
+    assert block.point_data["displacement"].shape[1] == 3
+    assert "stress" in block.cell_data
+    weights = np.full(face.points.shape[0], 0.1 / face.points.shape[0])  # uniform Gauss weights
+    assert np.sum(weights * face.point_data["traction_n"]) == pytest.approx(
+        g["normal_force"][-1], rel=1e-9
+    )
+
+
+def test_mu_zero_is_the_frictionless_interface(tmp_path: Path) -> None:
+    """[law] mu_s = mu_k = 0: no tangential force while the block slides (Q = 0 exactly),
+    the interface carries the pressure times the width; other law keys are refused."""
+    with bundled_contact_scenario("pmma_block") as path:
+        text = path.read_text()
+    head, rest = text.split("[law]")
+    law = "[law]\nalpha_n = 5.0e11\nmu_s = 0.0\nmu_k = 0.0\n\n"
+    scenario = tmp_path / "frictionless.toml"
+    scenario.write_text(head + law + "[normal]" + rest.split("[normal]")[1])
+    out = tmp_path / "run"
+    code = main(["contact", str(scenario), "--out", str(out), "--quiet", "--no-plots",
+                 "--set", "block.element_size=0.0125", "--set", "program.1.steps=3",
+                 "--set", "program.3.steps=2"])  # fmt: skip
+    assert code == 0
+    g = read_csv(out / "global.csv")
+    sliding = g["stage"] > 0
+    assert np.all(np.abs(g["tangential_force"][sliding]) <= 1e-9 * g["normal_force"][sliding])
+    np.testing.assert_allclose(g["normal_force"][sliding], 1.0e6 * 0.1, rtol=1e-8)
+    scenario.write_text(head + law + "u = 2e6\n[normal]" + rest.split("[normal]")[1])
+    assert main(["contact", str(scenario), "--out", str(tmp_path / "b"), "--quiet"]) == 2

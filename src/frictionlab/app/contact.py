@@ -20,6 +20,7 @@ from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
 from frictionlab.app.outputs import write_outputs
 from frictionlab.contact.history import ContactHistory, front_arrival
+from frictionlab.contact.mesh import Discretisation
 from frictionlab.driver.simulate import status_labels
 from frictionlab.io.tables import write_csv_atomic
 from frictionlab.schema.contact import ContactScenario
@@ -140,7 +141,7 @@ def _files(
     written = []
     cols, units = _global_columns(history, scenario.front_ratio)
     written.append(write_csv_atomic(out / "global.csv", cols, units, head))
-    cols, units = _interface_columns(history, scenario.params.is_cone)
+    cols, units = _interface_columns(history, getattr(scenario.params, "is_cone", False))
     written.append(write_csv_atomic(out / "interface.csv", cols, units, head))
     if plots and history.n_rows > 1:
         written.extend(_plots(out, scenario, history))
@@ -148,15 +149,35 @@ def _files(
 
 
 def run_contact_scenario(
-    scenario: ContactScenario, progress: Callable[[int, int], None] | None = None
+    scenario: ContactScenario,
+    progress: Callable[[int, int], None] | None = None,
+    discretisation: Discretisation | None = None,
 ) -> ContactHistory:
-    """Run a parsed contact scenario (a failed step is a history with success False)."""
+    """Run a parsed contact scenario (a failed step is a history with success False).
+
+    With ``scenario.fields`` the nodal displacement of every row is kept (field output).
+    """
     from frictionlab.contact import run_contact
 
     return run_contact(
         scenario.block, scenario.params, scenario.normal, scenario.program,
         settings=scenario.options, drive=scenario.drive, progress=progress,
+        discretisation=discretisation, base=scenario.base,
+        record_displacement=scenario.fields,
     )  # fmt: skip
+
+
+def _field_files(out: Path, history: ContactHistory, disc: Discretisation) -> list[Path]:
+    """[output] fields: fields/block.pvd and fields/interface.pvd (a .vtu per row)."""
+    from frictionlab.contact.fields import field_frames
+    from frictionlab.io.mesh_files import write_field_series
+
+    frames = field_frames(history, disc)
+    folder = out / "fields"
+    return [
+        write_field_series(folder, "block", [(f.time, f.block) for f in frames]),
+        write_field_series(folder, "interface", [(f.time, f.interface) for f in frames]),
+    ]
 
 
 class Contact:
@@ -164,6 +185,9 @@ class Contact:
 
     name = "contact"
     aliases: tuple[str, ...] = ()
+
+    def __init__(self) -> None:
+        self._meshes: dict[int, Discretisation] = {}  # a run's mesh, for its field files
 
     def parse(self, args: argparse.Namespace, out: Path) -> ContactScenario:
         from frictionlab.contact._fem import require_skfem
@@ -175,13 +199,27 @@ class Contact:
 
     def run(self, job: ContactScenario, progress: ProgressFactory, staging: Path) -> ContactHistory:
         name = Path(job.source).name if job.source else "scenario"
+        disc = None
+        if job.fields:  # the mesh is needed again for the field files
+            from frictionlab.contact import discretise
+
+            disc = discretise(job.block)
+            self._meshes[id(job)] = disc
         with progress(f"contact {name}") as update:
-            return run_contact_scenario(job, update)
+            return run_contact_scenario(job, update, disc)
 
     def files(
         self, job: ContactScenario, result: ContactHistory, out: Path, plots: bool
     ) -> list[Path]:
-        return _files(out, job, result, plots)
+        written = _files(out, job, result, plots)
+        disc = self._meshes.pop(id(job), None)
+        if job.fields:
+            if disc is None:  # written without run() (write_contact_results)
+                from frictionlab.contact import discretise
+
+                disc = discretise(job.block)
+            written.extend(_field_files(out, result, disc))
+        return written
 
     def summary(
         self, job: ContactScenario, result: ContactHistory, files: list[str], seconds: float
@@ -201,8 +239,8 @@ class Contact:
             f"iterations (at most {int(steps.max(initial=0))} in a step)"
         )
         print(
-            f"peak Q/P = {history.friction_ratio[peak]:.4f} at a top displacement of "
-            f"{history.top_displacement[peak] * 1e6:.3g} um; final Q/P = "
+            f"peak Q/P = {history.friction_ratio[peak]:.4f} at a top travel of "
+            f"{history.travel[peak] * 1e6:.3g} um; final Q/P = "
             f"{history.friction_ratio[-1]:.4f}"
         )
         arrival = front_arrival(history, job.front_ratio)

@@ -49,6 +49,9 @@ class ContactHistory(TableResult):
         The mesh, for pictures.
     displacement:
         Nodal displacement vectors kept for pictures: ``{"final": u, "peak": u}``.
+    nodal_displacement:
+        (S, n_dofs) nodal displacement of every row [m] when the run recorded it
+        (``run_contact(record_displacement=True)``, for field output), else None.
     """
 
     time: np.ndarray
@@ -84,6 +87,7 @@ class ContactHistory(TableResult):
     success: bool = True
     message: str = "completed"
     stages: list[dict[str, Any]] = field(default_factory=list)
+    nodal_displacement: np.ndarray | None = None
 
     @property
     def n_rows(self) -> int:
@@ -110,6 +114,18 @@ class ContactHistory(TableResult):
             else np.hypot(self.tangential_force, self.tangential_force_y)
         )
         return np.divide(Q, P, out=np.zeros_like(P), where=P > 0)
+
+    @property
+    def travel(self) -> np.ndarray:
+        """(S,) top displacement along the sliding direction [m]: the direction of the
+        first tangential stage (x when it has none, or in 2-D)."""
+        direction = np.array([1.0, 0.0])
+        for stage in self.stages[1:]:
+            step = np.asarray(stage["end"], dtype=np.float64) - np.asarray(stage["start"])
+            if self.dim == 3 and np.hypot(*step) > 0:
+                direction = step / np.hypot(*step)
+                break
+        return direction[0] * self.top_displacement + direction[1] * self.top_displacement_y
 
     @property
     def peak_index(self) -> int:

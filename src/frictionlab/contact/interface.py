@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from frictionlab.contact.frictionless import Frictionless, frictionless_update
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.subloading import ContactState, Status, StepResult, SubloadingParams, update
 
@@ -53,10 +54,16 @@ def slip_map(dim: int) -> np.ndarray:
     return -(np.diag([1.0, 1.0, -1.0]) @ FRAMES[dim])[:, :dim]
 
 
-def open_state(params: SubloadingParams, n_points: int, dim: int = 2) -> ContactState:
-    """The virgin interface before loading: touching, traction-free, fully recovered.
+def open_state(
+    params: SubloadingParams | Frictionless,
+    n_points: int,
+    dim: int = 2,
+    gap: np.ndarray | None = None,
+) -> ContactState:
+    """The virgin interface before loading: traction-free, fully recovered.
 
-    ``F = F_s`` (or mu_s), ``R = 0``, zero gap: the first compression closes it.
+    ``F = F_s`` (or mu_s), ``R = 0``; the gap is ``gap`` [m] (the base's shape, zero by
+    default: touching, so that the first compression closes it).
     """
     static = np.broadcast_to(np.asarray(params.static, dtype=np.float64), (n_points,))
     return ContactState(
@@ -64,7 +71,7 @@ def open_state(params: SubloadingParams, n_points: int, dim: int = 2) -> Contact
         F=static.copy(),
         R=np.zeros(n_points),
         plastic_slip=np.zeros(n_points),
-        gap=np.zeros(n_points),
+        gap=np.zeros(n_points) if gap is None else np.array(gap, dtype=np.float64),
         frame=np.broadcast_to(FRAMES[dim], (n_points, 3, 3)),
     )
 
@@ -81,7 +88,7 @@ class InterfaceResponse:
 
 def respond(
     disc: Discretisation,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     state: ContactState,
     du: np.ndarray,
     dt: float,
@@ -96,12 +103,15 @@ def respond(
     d = disc.dim
     M = slip_map(d)
     dug = np.column_stack([B @ du for B in disc.interp])  # (P, d)
-    result = update(params, state, dug @ M.T, dt, raise_on_failure=False)
+    if isinstance(params, Frictionless):
+        result = frictionless_update(params, state, dug @ M.T)
+    else:
+        result = update(params, state, dug @ M.T, dt, raise_on_failure=False)
     traction = -(result.traction @ M)  # (P, d) global components on the block
     w = disc.contact_weight
     force = sum(B.T @ (w * traction[:, a]) for a, B in enumerate(disc.interp))
     n = disc.n_points
-    alpha_t = float(np.asarray(params.alpha_t))
+    alpha_t = 0.0 if isinstance(params, Frictionless) else float(np.asarray(params.alpha_t))
     alpha_n = float(np.asarray(params.alpha_n))
     elastic = np.diag([alpha_t, alpha_t, alpha_n])
     C = np.broadcast_to(elastic, (n, 3, 3)) if tangent == "elastic" else result.tangent

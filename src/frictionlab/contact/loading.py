@@ -1,9 +1,10 @@
 """Loading of the contact model: a normal phase, then a tangential programme.
 
-The normal load acts on the top of the block: a uniform pressure [Pa] or a prescribed
-downward displacement [m] of the top edge, ramped linearly over ``duration`` and then
-held. The tangential programme uses the segment vocabulary of ``frictionlab simulate``
-where it applies:
+The normal load acts on the top of the block: a uniform pressure [Pa], a total force
+(N per metre of depth in 2-D, N in 3-D; applied as the uniform pressure force / top
+area) or a prescribed downward displacement [m] of the top edge, ramped linearly over
+``duration`` and then held. The tangential programme uses the segment vocabulary of
+``frictionlab simulate`` where it applies:
 
 * :class:`Slide` — move the top edge along x at ``velocity`` [m/s] (negative: -x) for a
   ``distance`` [m] or a ``duration`` [s] (displacement control);
@@ -12,7 +13,8 @@ where it applies:
 * :class:`Hold` — keep the last tangential control value for ``duration`` [s];
 * :class:`Traction` — ramp the mean shear traction on the top edge to ``target`` [Pa]
   over ``duration`` [s] (force control; the top edge is then free in x), along x or
-  ``direction_deg``.
+  ``direction_deg``; with ``cycles = k`` it then cycles k times between ``-target``
+  and ``+target`` (each ramp over ``duration``: fretting loops).
 
 A programme is displacement- or force-controlled as a whole (Hold fits both).
 ``steps`` is the nominal number of load steps of a segment; the solver cuts a step on
@@ -58,20 +60,27 @@ def _steps(value: Any) -> int:
 
 @dataclass(frozen=True)
 class NormalLoad:
-    """Normal phase: ``pressure`` [Pa] or top ``displacement`` [m, downward], one of them."""
+    """Normal phase: ``pressure`` [Pa], ``force`` [N/m in 2-D, N in 3-D] or top
+    ``displacement`` [m, downward], exactly one of them."""
 
     pressure: float | None = None
     displacement: float | None = None
     duration: float = 1.0
     steps: int = 5
+    force: float | None = None
 
     def __post_init__(self) -> None:
-        if (self.pressure is None) == (self.displacement is None):
+        given = [k for k in ("pressure", "displacement", "force") if getattr(self, k) is not None]
+        if len(given) != 1:
             raise ParameterError(
-                "normal", "both or neither", "exactly one of pressure or displacement"
+                "normal",
+                ", ".join(given) or "none",
+                "exactly one of pressure, displacement or force",
             )
         if self.pressure is not None:
             _real("pressure", self.pressure, "pressure > 0 [Pa]", self.pressure > 0)
+        if self.force is not None:
+            _real("force", self.force, "force > 0 [N/m in 2-D, N in 3-D]", self.force > 0)
         if self.displacement is not None:
             d = self.displacement
             _real("displacement", d, "displacement > 0 [m] (downward)", d > 0)
@@ -80,13 +89,18 @@ class NormalLoad:
 
     @property
     def control(self) -> str:
-        """``"pressure"`` or ``"displacement"``."""
-        return "pressure" if self.pressure is not None else "displacement"
+        """``"pressure"``, ``"force"`` or ``"displacement"``."""
+        if self.pressure is not None:
+            return "pressure"
+        return "force" if self.force is not None else "displacement"
 
     @property
     def value(self) -> float:
-        """The final pressure [Pa] or displacement [m]."""
-        return float(self.pressure if self.pressure is not None else self.displacement)  # type: ignore[arg-type]
+        """The final pressure [Pa], force [N/m or N] or displacement [m]."""
+        for v in (self.pressure, self.force, self.displacement):
+            if v is not None:
+                return float(v)
+        raise AssertionError("unreachable")  # pragma: no cover
 
 
 @dataclass(frozen=True)
@@ -147,8 +161,12 @@ class Traction:
     duration: float
     steps: int = 20
     direction_deg: float = 0.0
+    cycles: int = 0
 
     def __post_init__(self) -> None:
+        c = self.cycles
+        if isinstance(c, bool) or not isinstance(c, int) or not (0 <= c <= 10_000):
+            raise ParameterError("cycles", c, "an integer 0 <= cycles <= 1e4")
         _real("target", self.target, "a finite target [Pa]", True)
         _real("direction_deg", self.direction_deg, "a finite angle [deg]", True)
         _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
@@ -240,4 +258,8 @@ def plan_stages(normal: NormalLoad, program: Sequence[Segment]) -> tuple[str, li
             target = seg.target * _unit(seg.direction_deg)
             stages.append(Stage("traction", control, value, target, seg.duration, seg.steps))
             value = target
+            for _ in range(seg.cycles):
+                for end in (-target, target):
+                    stages.append(Stage("traction", control, value, end, seg.duration, seg.steps))
+                    value = end
     return control, stages

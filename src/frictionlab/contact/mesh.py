@@ -11,7 +11,8 @@ no re-assembly. The normal axis is the last one (y in 2-D, z in 3-D).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -19,7 +20,7 @@ import scipy.sparse as sp
 from frictionlab.contact._fem import require_skfem
 from frictionlab.contact.block import Block
 
-__all__ = ["Discretisation", "discretise"]
+__all__ = ["Discretisation", "assemble", "discretise"]
 
 
 @dataclass(frozen=True)
@@ -52,6 +53,8 @@ class Discretisation:
     unit_shear:
         (d - 1, n_dofs) nodal loads of a uniform shear traction of 1 Pa on the top along
         x (and y in 3-D).
+    fixed_dofs:
+        Dofs held at zero (an imported mesh's fixed surfaces; none for a block).
     """
 
     block: Block
@@ -65,6 +68,7 @@ class Discretisation:
     top_nodes: np.ndarray
     unit_pressure: np.ndarray
     unit_shear: np.ndarray
+    fixed_dofs: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
     @property
     def dim(self) -> int:
@@ -110,36 +114,43 @@ class Discretisation:
 def discretise(block: Block) -> Discretisation:
     """Mesh the block and assemble its elastic stiffness and contact operator."""
     skfem = require_skfem()
-    from skfem.models.elasticity import linear_elasticity
-
-    d = block.dim
-    sizes = (
-        [block.width, block.height]
-        if block.depth is None
-        else [block.width, block.depth, block.height]
-    )
-    axes = [np.linspace(0.0, L, n + 1) for L, n in zip(sizes, block.cells, strict=True)]
+    axes = block.axes()
     if block.element == "quad":
         mesh = skfem.MeshQuad.init_tensor(*axes)
-        element = skfem.ElementVector(skfem.ElementQuad1())
     elif block.element == "triangle":
         mesh = skfem.MeshTri.init_tensor(*axes)
-        element = skfem.ElementVector(skfem.ElementTriP1())
     else:
         mesh = skfem.MeshHex.init_tensor(*axes)
-        element = skfem.ElementVector(skfem.ElementHex1())
-    basis = skfem.Basis(mesh, element, intorder=2)
-    lam, mu = block.lame
-    stiffness = linear_elasticity(lam, mu).assemble(basis).tocsr()
-
-    normal = d - 1
+    normal = block.dim - 1
     tol = 1e-9 * block.height
     bottom = mesh.facets_satisfying(lambda x: x[normal] < tol)
     top = mesh.facets_satisfying(lambda x: x[normal] > block.height - tol)
-    fb = skfem.FacetBasis(mesh, element, facets=bottom, intorder=3)
-    interp, xy, weight = _contact_operator(fb, basis.N, d)
+    return assemble(mesh, block, bottom, top)
 
-    ft = skfem.FacetBasis(mesh, element, facets=top, intorder=3)
+
+#: scikit-fem element of each element family.
+_ELEMENTS = {"quad": "ElementQuad1", "triangle": "ElementTriP1", "hex": "ElementHex1"}
+
+
+def assemble(
+    mesh: Any,
+    block: Block,
+    contact_facets: np.ndarray,
+    loaded_facets: np.ndarray,
+    fixed_nodes: np.ndarray | None = None,
+) -> Discretisation:
+    """Assemble a scikit-fem ``mesh`` of ``block``'s material: the law on
+    ``contact_facets`` (a flat face at the lowest normal coordinate), the top loads on
+    ``loaded_facets``, every dof of ``fixed_nodes`` held at zero."""
+    skfem = require_skfem()
+    d = block.dim
+    element = skfem.ElementVector(getattr(skfem, _ELEMENTS[block.element])())
+    basis = skfem.Basis(mesh, element, intorder=2)
+    stiffness = elastic_stiffness(skfem, mesh, element, basis, block)
+    normal = d - 1
+    fb = skfem.FacetBasis(mesh, element, facets=contact_facets, intorder=3)
+    interp, xy, weight = _contact_operator(fb, basis.N, d)
+    ft = skfem.FacetBasis(mesh, element, facets=loaded_facets, intorder=3)
 
     @skfem.LinearForm
     def pressure(v, w):
@@ -154,20 +165,47 @@ def discretise(block: Block) -> Discretisation:
 
         shears.append(shear.assemble(ft))
 
-    top_nodes = np.flatnonzero(mesh.p[normal] > block.height - tol)
+    top_nodes = np.unique(mesh.facets[:, loaded_facets])
+    fixed = np.zeros(0, np.int64) if fixed_nodes is None else np.asarray(fixed_nodes, np.int64)
+    dofs = np.array(basis.nodal_dofs)
     return Discretisation(
         block=block,
         nodes=np.array(mesh.p, dtype=np.float64),
         cells=np.array(mesh.t),
         stiffness=stiffness,
-        dofs=np.array(basis.nodal_dofs),
+        dofs=dofs,
         contact_xy=xy,
         contact_weight=weight,
         interp=interp,
         top_nodes=top_nodes,
         unit_pressure=pressure.assemble(ft),
         unit_shear=np.array(shears),
+        fixed_dofs=np.sort(dofs[:, fixed].ravel()),
     )
+
+
+def elastic_stiffness(
+    skfem: Any, mesh: Any, element: Any, basis: Any, block: Block
+) -> sp.csr_matrix:
+    """Linear-elastic stiffness; with selective integration the volumetric part
+    ``lambda div u div v`` takes one Gauss point per cell (no volumetric locking)."""
+    from skfem.helpers import ddot, div, sym_grad
+    from skfem.models.elasticity import linear_elasticity
+
+    lam, mu = block.lame
+    if block.integration == "full":
+        return linear_elasticity(lam, mu).assemble(basis).tocsr()
+
+    @skfem.BilinearForm
+    def shear(u, v, w):
+        return 2.0 * mu * ddot(sym_grad(u), sym_grad(v))
+
+    @skfem.BilinearForm
+    def volume(u, v, w):
+        return lam * div(u) * div(v)
+
+    reduced = skfem.Basis(mesh, element, intorder=1)
+    return (shear.assemble(basis) + volume.assemble(reduced)).tocsr()
 
 
 def _contact_operator(

@@ -16,8 +16,9 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.linalg as sla
 
+from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.interface import InterfaceResponse, respond
-from frictionlab.contact.linear import TangentSolver
+from frictionlab.contact.linear import IterativeSolver, TangentSolver
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.subloading import ContactState, SubloadingParams
 
@@ -38,25 +39,23 @@ class NewtonOutcome:
 
 def newton_step(
     disc: Discretisation,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     state: ContactState,
     u_start: np.ndarray,
     u_guess: np.ndarray,
-    fixed: np.ndarray,
     f_ext: np.ndarray,
     dt: float,
-    solver: TangentSolver,
+    solver: TangentSolver | IterativeSolver,
     *,
     tangent: str = "consistent",
     tolerance: float = 1e-10,
     max_iterations: int = 25,
 ) -> NewtonOutcome:
     """Solve one step from ``u_start`` (state ``state``); ``u_guess`` carries the
-    prescribed values on the ``fixed`` dofs (boolean mask, the one ``solver`` was built
-    for) and the initial guess elsewhere.
+    prescribed values on the dofs ``solver`` holds fixed and the initial guess elsewhere
+    (equal values on tied dofs); the unknowns are ``solver``'s reduced coordinates.
     """
     u = u_guess.copy()
-    free = ~fixed
     K = disc.stiffness
     residuals: list[float] = []
 
@@ -65,7 +64,7 @@ def newton_step(
         Ku = K @ u_trial
         r = Ku - f_ext - resp.force
         scale = max(np.linalg.norm(f_ext), np.linalg.norm(resp.force), np.linalg.norm(Ku))
-        norm = float(np.linalg.norm(r[free]))
+        norm = float(np.linalg.norm(solver.reduce(r)))
         return resp, r, float(norm / scale) if scale > 0 else norm
 
     response, r, rel = evaluate(u)
@@ -89,7 +88,7 @@ def newton_step(
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("error")
-                delta = solver.solve(response.moduli, -r[free])
+                delta = solver.expand(solver.solve(response.moduli, -solver.reduce(r)))
         except (sla.LinAlgError, sla.LinAlgWarning, ValueError) as exc:
             return NewtonOutcome(False, u, response, it, residuals, f"singular tangent ({exc})")
         # Backtracking: the law's response has kinks (stick/slip, the slip front), where a
@@ -98,8 +97,7 @@ def newton_step(
         # the quadratic convergence near the solution is untouched.
         step = 1.0
         for _ in range(5):
-            trial = u.copy()
-            trial[free] += step * delta
+            trial = u + step * delta
             t_response, t_r, t_rel = evaluate(trial)
             if (t_response.result.success and np.isfinite(t_rel) and t_rel < rel) or step <= 0.0625:
                 break

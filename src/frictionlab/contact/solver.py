@@ -16,16 +16,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from frictionlab.contact.block import Block
+from frictionlab.contact.frictionless import Frictionless
 from frictionlab.contact.history import ContactHistory
 from frictionlab.contact.interface import TANGENTS, open_state, slip_map
-from frictionlab.contact.linear import TangentSolver
+from frictionlab.contact.linear import LINEAR_SOLVERS, estimate, make_solver
 from frictionlab.contact.loading import NormalLoad, Segment, Stage, plan_stages
 from frictionlab.contact.mesh import Discretisation, discretise
 from frictionlab.contact.newton import newton_step
+from frictionlab.contact.shapes import Base
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import ContactState, SubloadingParams, check_snap_back
 
-__all__ = ["DRIVES", "SolverOptions", "SolverSettings", "run_contact"]
+__all__ = ["DRIVES", "SolverOptions", "SolverSettings", "check_memory", "run_contact"]
 
 #: How the tangential displacement is imposed: on the top edge (default), or on every
 #: node (a rigidly translated block: a verification case that isolates the interface).
@@ -53,6 +55,12 @@ class SolverOptions:
     tangent:
         ``"consistent"`` (the law's algorithmic tangent, default) or ``"elastic"`` (its
         elastic moduli, a fixed secant-type stiffness; for comparison).
+    linear_solver:
+        ``"direct"`` (SuperLU, default) or ``"iterative"`` (GMRES + AMG, pyamg): see
+        :mod:`~frictionlab.contact.linear`.
+    memory_limit:
+        Bytes the run may use (the estimate of :func:`~frictionlab.contact.linear.estimate`
+        is checked before meshing); None: no check.
     """
 
     tolerance: float = 1e-10
@@ -61,8 +69,19 @@ class SolverOptions:
     easy_iterations: int = 4
     growth: float = 2.0
     tangent: str = "consistent"
+    linear_solver: str = "direct"
+    memory_limit: float | None = None
 
     def __post_init__(self) -> None:
+        if self.linear_solver not in LINEAR_SOLVERS:
+            raise ParameterError(
+                "linear_solver", self.linear_solver, "one of " + ", ".join(LINEAR_SOLVERS)
+            )
+        limit = self.memory_limit
+        if limit is not None and (
+            isinstance(limit, bool) or not isinstance(limit, int | float) or not limit > 0
+        ):
+            raise ParameterError("memory_limit", limit, "a number of bytes > 0")
         if not (isinstance(self.tolerance, float | int) and 1e-15 <= self.tolerance < 1e-2):
             raise ParameterError("tolerance", self.tolerance, "1e-15 <= tolerance < 1e-2")
         for name, low in (("max_iterations", 1), ("max_cuts", 0), ("easy_iterations", 0)):
@@ -84,8 +103,9 @@ _ROW_KEYS = (
 
 
 class _Recorder:
-    def __init__(self, disc: Discretisation, state: ContactState) -> None:
+    def __init__(self, disc: Discretisation, state: ContactState, keep_u: bool = False) -> None:
         self.disc = disc
+        self.u_rows: list[np.ndarray] | None = [] if keep_u else None
         self.M = slip_map(disc.dim)
         self.rows: dict[str, list[object]] = {k: [] for k in _ROW_KEYS}
         self.peak = (-1.0, np.zeros(disc.n_dofs))
@@ -137,6 +157,8 @@ class _Recorder:
         }
         for key, value in row.items():
             self.rows[key].append(value)
+        if self.u_rows is not None:
+            self.u_rows.append(u.copy())
         if float(np.hypot(Q[0], Q[1])) > self.peak[0]:
             self.peak = (float(np.hypot(Q[0], Q[1])), u.copy())
         self.last_u = u
@@ -158,6 +180,7 @@ class _Recorder:
             displacement={"final": self.last_u.copy(), "peak": self.peak[1]},
             success=success,
             message=message,
+            nodal_displacement=None if self.u_rows is None else np.array(self.u_rows),
             stages=[
                 {
                     "kind": s.kind,
@@ -172,6 +195,20 @@ class _Recorder:
         )
 
 
+def check_memory(block: Block, options: SolverOptions) -> None:
+    """Refuse ``block`` when the solver's estimated storage exceeds ``memory_limit``."""
+    if options.memory_limit is None:
+        return
+    need = estimate(block, options.linear_solver)["bytes"]
+    if need > options.memory_limit:
+        raise ParameterError(
+            "element_size",
+            block.element_size,
+            f"a mesh that fits memory_limit = {options.memory_limit:.3g} bytes (this one "
+            f"needs about {need:.3g} with the {options.linear_solver} solver)",
+        )
+
+
 #: Newton and step control, the ``settings=`` of :func:`run_contact` (one name for solver
 #: settings across frictionlab); :class:`SolverOptions` is the same class.
 SolverSettings = SolverOptions
@@ -179,7 +216,7 @@ SolverSettings = SolverOptions
 
 def run_contact(
     block: Block,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     normal: NormalLoad,
     program: Sequence[Segment],
     *,
@@ -187,6 +224,8 @@ def run_contact(
     drive: str = "top",
     progress: ProgressCallback | None = None,
     discretisation: Discretisation | None = None,
+    base: Base | None = None,
+    record_displacement: bool = False,
     options: SolverOptions | None = None,
 ) -> ContactHistory:
     """Press the block on the base, then run the tangential programme.
@@ -208,6 +247,12 @@ def run_contact(
         of the programme's time completed (the one progress convention).
     discretisation:
         A prebuilt mesh of ``block`` (else built here).
+    base:
+        The rigid base's shape (:class:`~frictionlab.contact.shapes.Base`; flat when
+        None): the law's initial gap at the contact points.
+    record_displacement:
+        Keep the nodal displacement of every recorded row (for field output; memory
+        rows x dofs x 8 bytes).
 
     Returns
     -------
@@ -228,24 +273,34 @@ def run_contact(
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # pragma: no cover - part of the extra `fem`; only slower without
-        return _run(block, params, normal, program, options, drive, progress, discretisation)
+        return _run(
+            block, params, normal, program, options, drive, progress, discretisation, base,
+            record_displacement,
+        )  # fmt: skip
     # The dense blocks are small (m x m, m = contact dofs): threaded BLAS only adds
     # overhead, and a lot of it on a loaded machine.
     with threadpool_limits(limits=1, user_api="blas"):
-        return _run(block, params, normal, program, options, drive, progress, discretisation)
+        return _run(
+            block, params, normal, program, options, drive, progress, discretisation, base,
+            record_displacement,
+        )  # fmt: skip
 
 
 def _run(
     block: Block,
-    params: SubloadingParams,
+    params: SubloadingParams | Frictionless,
     normal: NormalLoad,
     program: Sequence[Segment],
     options: SolverOptions | None,
     drive: str,
     progress: ProgressCallback | None,
     discretisation: Discretisation | None,
+    base: Base | None,
+    record_displacement: bool = False,
 ) -> ContactHistory:
     opts = options or SolverOptions()
+    base = base or Base()
+    base.check_dim(block.dim)
     if drive not in DRIVES:
         raise ParameterError("drive", drive, "one of " + ", ".join(DRIVES))
     if params.per_point:
@@ -255,15 +310,21 @@ def _run(
         raise ParameterError("drive", drive, "'top' for a force-controlled programme")
     # the snap-back bound of the law at the nominal pressure (for a prescribed
     # displacement, alpha_n d bounds the pressure from above: the block is compliant)
-    nominal_pressure = (
-        normal.value
-        if normal.control == "pressure"
-        else normal.value * float(np.asarray(params.alpha_n))
-    )
-    check_snap_back(params, nominal_pressure)
+    if discretisation is None:
+        check_memory(block, opts)
     disc = discretisation if discretisation is not None else discretise(block)
     if disc.block != block:
         raise ParameterError("discretisation", "another block", "a mesh of this block")
+    top_area = -float(np.sum(disc.unit_pressure))
+    # a total force is applied as the uniform pressure force / top area
+    to_pressure = 1.0 / top_area if normal.control == "force" else 1.0
+    nominal_pressure = (
+        normal.value * to_pressure
+        if normal.control != "displacement"
+        else normal.value * float(np.asarray(params.alpha_n))
+    )
+    if not isinstance(params, Frictionless):
+        check_snap_back(params, nominal_pressure)
 
     dim = disc.dim
     if dim == 2 and any(abs(s.end[1]) > 0.0 for s in stages[1:]):
@@ -282,15 +343,44 @@ def _run(
         fixed[dofs] = True
     if normal.control == "displacement":
         fixed[top_normal] = True
+    fixed[disc.fixed_dofs] = True
+    # A normal force acts through a rigid top plate: the top face translates as one body
+    # (its normal dofs tied; under tangential force control its in-plane dofs too, so
+    # the plate carries the shear without tilting the block).
+    ties: list[np.ndarray] = []
+    if normal.control == "force":
+        ties.append(top_normal)
+        if control == "force":
+            ties.extend(disc.dofs[a][disc.top_nodes] for a in range(dim - 1))
+    # Under tangential force control nothing but friction holds the block in-plane; as
+    # mu -> 0 the normal stage is singular. It is pinned (the in-plane rigid modes: the
+    # plate, or single top dofs), and the pins' reactions are then kept as loads.
+    if control != "force":
+        pins = np.zeros(0, dtype=np.int64)
+    elif normal.control == "force":
+        pins = np.concatenate([disc.dofs[a][disc.top_nodes] for a in range(dim - 1)])
+    else:
+        pins = _pins(disc)
+    pinned = fixed.copy()
+    pinned[pins] = True
+    pin_load = np.zeros(disc.n_dofs)
 
-    solver = TangentSolver(disc, fixed, params)
-    state = open_state(params, disc.n_points, dim)
+    solver = make_solver(opts.linear_solver, disc, pinned, params, ties)
+    middle = 0.5 * (disc.nodes.min(axis=1) + disc.nodes.max(axis=1))
+    gap0 = base.gap(disc.contact_xy, middle[: dim - 1])
+    state = open_state(params, disc.n_points, dim, gap=gap0)
     u = np.zeros(disc.n_dofs)
-    rec = _Recorder(disc, state)
+    rec = _Recorder(disc, state, record_displacement)
     total_time = sum(s.duration for s in stages)
     t = 0.0
     pressure, shear, slide = 0.0, np.zeros(2), np.zeros(2)
+    force = np.zeros(disc.n_dofs)
     for index, stage in enumerate(stages):
+        if index == 1 and pins.size:
+            f_now = _external(disc, normal, pressure * to_pressure, shear, dim)
+            r = disc.stiffness @ u - f_now - force
+            pin_load[pins] = r[pins]
+            solver = make_solver(opts.linear_solver, disc, fixed, params, ties)
         nominal = 1.0 / stage.steps
         h = nominal
         done = 0.0
@@ -310,9 +400,7 @@ def _run(
                 guess[dofs] = x_new[a]
             if normal.control == "displacement":
                 guess[top_normal] = -p_new
-            f_ext = sum(s_new[a] * disc.unit_shear[a] for a in range(dim - 1))
-            if normal.control == "pressure":
-                f_ext = f_ext + p_new * disc.unit_pressure
+            f_ext = _external(disc, normal, p_new * to_pressure, s_new, dim) + pin_load
             dt = h_try * stage.duration
             outcome = newton_step(
                 disc,
@@ -320,7 +408,6 @@ def _run(
                 state,
                 u,
                 guess,
-                fixed,
                 f_ext,
                 dt,
                 solver,
@@ -340,6 +427,7 @@ def _run(
                 continue
             assert outcome.response is not None
             state = outcome.response.result.state
+            force = outcome.response.force
             u = outcome.u
             pressure, shear, slide = p_new, s_new, x_new
             done += h_try
@@ -361,3 +449,29 @@ def _run(
             if progress is not None:
                 progress(round(1000 * min(t / total_time, 1.0)), 1000)
     return rec.history(True, "completed", stages)
+
+
+def _external(
+    disc: Discretisation, normal: NormalLoad, pressure: float, shear: np.ndarray, dim: int
+) -> np.ndarray:
+    """Nodal loads of the top pressure [Pa] (pressure or force control) and shear [Pa]."""
+    f = sum((shear[a] * disc.unit_shear[a] for a in range(dim - 1)), np.zeros(disc.n_dofs))
+    if normal.control != "displacement":
+        f = f + pressure * disc.unit_pressure
+    return f
+
+
+def _pins(disc: Discretisation) -> np.ndarray:
+    """In-plane dofs fixing the rigid in-plane modes: the top node nearest the top face's
+    centre (x, and y in 3-D), and in 3-D the y dof of the top node farthest from it
+    along x on its row (the rotation about the normal)."""
+    top = disc.top_nodes
+    xy = disc.nodes[: disc.dim - 1, top]
+    centre = 0.5 * (xy.min(axis=1) + xy.max(axis=1))
+    k = int(np.argmin(np.sum((xy - centre[:, None]) ** 2, axis=0)))
+    dofs = [disc.dofs[a][top[k]] for a in range(disc.dim - 1)]
+    if disc.dim == 3:
+        row = np.flatnonzero(np.isclose(xy[1], xy[1, k]))
+        far = row[int(np.argmax(np.abs(xy[0, row] - xy[0, k])))]
+        dofs.append(disc.dofs[1][top[far]])
+    return np.array(dofs, dtype=np.int64)

@@ -1,0 +1,137 @@
+"""A block from an FE user's own mesh (read by meshio): named groups pick its surfaces.
+
+The mesh is one family of linear elements (quads or triangles in 2-D, hexahedra in
+3-D; the z coordinate of a 2-D mesh is dropped). Three kinds of named groups (gmsh
+physical groups, Abaqus element or node sets, meshio cell or point sets) select:
+
+* ``contact`` — the face on the rigid base where the law acts: flat, at the lowest
+  normal coordinate (y in 2-D, z in 3-D), like a block's bottom face;
+* ``loaded`` — the faces that carry the normal load and the tangential programme
+  (the "top" of the block: pressure, force through a rigid plate, shear or slide);
+* ``fixed`` — faces or nodes held at zero displacement (any number of groups).
+
+A group selects the mesh facets whose nodes all belong to it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from frictionlab.contact._fem import require_skfem
+from frictionlab.contact.block import Block
+from frictionlab.contact.mesh import Discretisation, assemble
+from frictionlab.errors import ParameterError
+
+__all__ = ["MESH_CELLS", "discretise_mesh", "group_nodes"]
+
+#: meshio cell types of the volume elements, and the element family of each.
+MESH_CELLS = {"quad": "quad", "triangle": "triangle", "hexahedron": "hex"}
+_DIM = {"vertex": 0, "line": 1, "triangle": 2, "quad": 2, "tetra": 3, "hexahedron": 3}
+
+
+def group_nodes(mesh: Any, name: str, key: str) -> np.ndarray:
+    """Node indices of the named group ``name`` (the input ``key`` is named in errors)."""
+    field_data = getattr(mesh, "field_data", {}) or {}
+    physical = (getattr(mesh, "cell_data", {}) or {}).get("gmsh:physical")
+    if name in field_data and physical is not None:
+        tag, dim = (int(v) for v in np.asarray(field_data[name]).ravel()[:2])
+        nodes = [
+            block.data[np.asarray(tags) == tag].ravel()
+            for block, tags in zip(mesh.cells, physical, strict=True)
+            if _DIM.get(block.type, -1) == dim
+        ]
+        found = np.unique(np.concatenate(nodes)) if nodes else np.zeros(0, np.int64)
+    elif name in (getattr(mesh, "cell_sets", {}) or {}):
+        parts = [
+            block.data[np.asarray(idx, dtype=np.int64)].ravel()
+            for block, idx in zip(mesh.cells, mesh.cell_sets[name], strict=True)
+            if idx is not None and len(idx)
+        ]
+        found = np.unique(np.concatenate(parts)) if parts else np.zeros(0, np.int64)
+    elif name in (getattr(mesh, "point_sets", {}) or {}):
+        found = np.unique(np.asarray(mesh.point_sets[name], dtype=np.int64))
+    else:
+        names = sorted(
+            set(field_data)
+            | set(getattr(mesh, "cell_sets", {}) or {})
+            | set(getattr(mesh, "point_sets", {}) or {})
+        )
+        listed = ", ".join(names) or "none"
+        raise ParameterError(key, name, f"a named group of the mesh: {listed}")
+    if found.size == 0:
+        raise ParameterError(key, name, "a group with at least one node")
+    return found
+
+
+def discretise_mesh(
+    mesh: Any,
+    *,
+    E: float,
+    nu: float,
+    contact: str,
+    loaded: str,
+    fixed: Sequence[str] = (),
+    integration: str = "full",
+) -> Discretisation:
+    """Assemble an imported meshio mesh; its :class:`Block` describes the material and
+    the bounding box (``element_size`` is the largest extent: the block is not meshed)."""
+    skfem = require_skfem()
+    volume = [b for b in mesh.cells if b.type in MESH_CELLS]
+    types = {b.type for b in volume}
+    if len(types) != 1:
+        raise ParameterError(
+            "mesh.file", ", ".join(sorted(types)) or "no volume cells",
+            "one element family: quad, triangle (2-D) or hexahedron (3-D)",
+        )  # fmt: skip
+    kind = MESH_CELLS[types.pop()]
+    dim = 3 if kind == "hex" else 2
+    cells = np.concatenate([b.data for b in volume])
+    used = np.unique(cells)
+    points = np.asarray(mesh.points, dtype=np.float64)[:, :dim]
+    lo, hi = points[used].min(axis=0), points[used].max(axis=0)
+    extent = hi - lo
+    if np.any(extent <= 0):
+        raise ParameterError("mesh.file", "a degenerate mesh", f"a {dim}-D mesh with volume")
+    block = Block(
+        E=E, nu=nu, width=float(extent[0]), height=float(extent[-1]),
+        depth=float(extent[1]) if dim == 3 else None, element_size=float(extent.max()),
+        element=kind, integration=integration,
+    )  # fmt: skip
+    # keep only the nodes of volume cells, renumbered, with the base at the origin
+    index = np.full(points.shape[0], -1, dtype=np.int64)
+    index[used] = np.arange(used.size)
+    p = (points[used] - lo).T
+    t = index[cells].T
+    mesh_type = {"quad": skfem.MeshQuad, "triangle": skfem.MeshTri, "hex": skfem.MeshHex}[kind]
+    if kind == "hex":
+        import meshio
+        from skfem.io.meshio import from_meshio  # the VTK -> scikit-fem hexahedron order
+
+        sk = from_meshio(meshio.Mesh(p.T, [("hexahedron", t.T)]))
+    else:
+        sk = mesh_type(p, t)
+
+    def facets_of(name: str, key: str) -> tuple[np.ndarray, np.ndarray]:
+        nodes = index[group_nodes(mesh, name, key)]
+        nodes = nodes[nodes >= 0]
+        member = np.zeros(used.size, dtype=bool)
+        member[nodes] = True
+        facets = np.flatnonzero(np.all(member[sk.facets], axis=0))
+        boundary = np.intersect1d(facets, sk.boundary_facets())
+        if boundary.size == 0:
+            raise ParameterError(key, name, "a group covering at least one boundary face")
+        return boundary, nodes
+
+    contact_facets, contact_nodes = facets_of(contact, "mesh.contact")
+    normal = sk.p[dim - 1, contact_nodes]
+    if np.ptp(normal) > 1e-9 * block.height or normal.min() > 1e-9 * block.height:
+        raise ParameterError(
+            "mesh.contact", contact, "a flat face at the lowest y (2-D) or z (3-D) of the mesh"
+        )
+    loaded_facets, _ = facets_of(loaded, "mesh.loaded")
+    held = [index[group_nodes(mesh, g, "mesh.fixed")] for g in fixed]
+    held_nodes = np.unique(np.concatenate(held)) if held else np.zeros(0, np.int64)
+    return assemble(sk, block, contact_facets, loaded_facets, held_nodes[held_nodes >= 0])
