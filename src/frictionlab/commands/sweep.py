@@ -15,19 +15,18 @@ summary figures, status, error) is rewritten atomically as cases finish, and
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 import time
-from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
 from frictionlab.commands._progress import progress_bar
-from frictionlab.commands._sweep_task import Task, TaskResult, run_task
+from frictionlab.commands._sweep_task import Task
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
 from frictionlab.sweep.cases import check_key, format_overrides, override_strings
+from frictionlab.sweep.executors import probe_scheduler, run_tasks
 from frictionlab.sweep.figures import summary_figures
 from frictionlab.sweep.ledger import (
     inputs_sha256,
@@ -69,6 +68,8 @@ def run(args: argparse.Namespace) -> int:
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers = {args.workers} is invalid: allowed an integer >= 1")
     spec, command, tasks = load_spec(args.sweep, plots=not args.no_plots)
+    if args.scheduler is not None:
+        probe_scheduler(args.scheduler)  # before anything is written
     shas = {t.case_id: t.inputs_sha256 for t in tasks}
     cases_dir = out / "cases"
     records: dict[str, dict[str, Any]] = {}
@@ -88,7 +89,7 @@ def run(args: argparse.Namespace) -> int:
     started = time.perf_counter()
     with progress_bar(f"sweep {args.sweep.name}", enabled=not args.quiet) as progress:
         progress(skipped, len(spec.cases))
-        for result in _execute(todo, args.scheduler, args.workers):
+        for result in run_tasks(todo, args.scheduler, args.workers):
             case = by_id[result.case_id]
             status = "ok" if result.ok else "failed"
             record = make_record(
@@ -171,58 +172,6 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
                  tuple(files.items()), inputs_sha256(hashed))
         )  # fmt: skip
     return tasks
-
-
-def _execute(
-    tasks: Sequence[Task], scheduler: str | None, workers: int | None
-) -> Iterator[TaskResult]:
-    """Results in order of completion (a lost worker is a failed case, not a crash)."""
-    if not tasks:
-        return iter(())
-    if scheduler is not None:
-        return _on_dask(tasks, scheduler)
-    return _on_pool(tasks, workers or min(os.cpu_count() or 1, len(tasks)))
-
-
-def _on_pool(tasks: Sequence[Task], workers: int) -> Iterator[TaskResult]:
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-
-    context = multiprocessing.get_context("spawn")  # no fork of a threaded parent
-    pool = ProcessPoolExecutor(max_workers=workers, mp_context=context)
-    try:
-        futures = {pool.submit(run_task, task): task for task in tasks}
-        for future in as_completed(futures):
-            yield _result(futures[future], future.result)
-    finally:  # on Ctrl-C: drop the queued cases (a re-run does them), let running ones end
-        pool.shutdown(wait=True, cancel_futures=True)
-
-
-def _on_dask(tasks: Sequence[Task], address: str) -> Iterator[TaskResult]:
-    try:
-        from distributed import Client, as_completed
-    except ImportError:
-        raise InputError(
-            "--scheduler needs dask.distributed: pip install 'frictionlab[dask]'"
-        ) from None
-    try:
-        client = Client(address, timeout="10s")
-    except (OSError, TimeoutError, ValueError) as exc:
-        raise InputError(f"--scheduler {address}: cannot connect: {exc}") from None
-    try:
-        futures = client.map(run_task, list(tasks), key=[f"sweep-{t.case_id}" for t in tasks])
-        by_key = {f.key: t for f, t in zip(futures, tasks, strict=True)}
-        for future in as_completed(futures):
-            yield _result(by_key[future.key], future.result)
-    finally:
-        client.close()
-
-
-def _result(task: Task, get: Callable[[], TaskResult]) -> TaskResult:
-    try:
-        return get()
-    except Exception as exc:  # the worker died or the cluster lost the task
-        return TaskResult(task.case_id, False, f"worker lost: {type(exc).__name__}: {exc}", 0.0, {})
 
 
 class _TableWriter:
