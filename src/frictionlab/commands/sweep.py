@@ -25,6 +25,7 @@ from frictionlab.commands._sweep_task import Task
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
+from frictionlab.io.inputs import read_input_bytes
 from frictionlab.sweep.cases import check_key, format_overrides, override_strings
 from frictionlab.sweep.executors import probe_scheduler, run_tasks
 from frictionlab.sweep.figures import summary_figures
@@ -139,9 +140,9 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
     def content(path: Path, where: str) -> bytes:
         if path not in contents:
             try:
-                contents[path] = path.read_bytes()
-            except OSError as exc:
-                raise InputError(f"{where}: cannot read '{path}': {exc.strerror or exc}") from None
+                contents[path] = read_input_bytes(path)
+            except InputError as exc:
+                raise InputError(f"{where}: {exc}") from None
         return contents[path]
 
     base_name = spec.base.name
