@@ -64,12 +64,26 @@ def make_cases(overrides: Sequence[dict[str, Any]]) -> tuple[Case, ...]:
 
 
 def format_value(value: Any) -> str:
-    """``value`` as TOML text (what ``--set key=TEXT`` parses back to the same value)."""
+    """``value`` as inline TOML text (what ``--set key=TEXT`` parses back to the same value).
+
+    Tables, also inside arrays, are written inline (``{ a = 1 }``), so every value of a
+    sweep file has a ``--set`` form; the scenario's parser then judges it.
+    """
+    if isinstance(value, dict):
+        items = ", ".join(f"{_key(k)} = {format_value(v)}" for k, v in value.items())
+        return f"{{ {items} }}" if items else "{}"
+    if isinstance(value, list):
+        return "[" + ", ".join(format_value(v) for v in value) + "]"
     text = tomli_w.dumps({"v": value}).strip()
     text = text.removeprefix("v =").strip()
     if tomllib.loads(f"v = {text}")["v"] != value:  # pragma: no cover - a tomli_w guarantee
         raise InputError(f"cannot write {value!r} as a TOML value")
     return text
+
+
+def _key(key: str) -> str:
+    """A table key as TOML text (bare when it can be, else quoted)."""
+    return tomli_w.dumps({key: 0}).split("=", 1)[0].strip()
 
 
 def override_strings(overrides: Mapping[str, Any]) -> list[str]:
