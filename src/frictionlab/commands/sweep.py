@@ -10,22 +10,30 @@ the cases already done, so a killed sweep loses nothing and repeats nothing. A f
 case is recorded and the sweep goes on; ``DIR/sweep.csv`` (one row per case: parameters,
 summary figures, status, error) is rewritten atomically as cases finish, and
 ``DIR/sweep.png`` is drawn at the end. Exit 1 if any case failed, else 0.
+
+``DIR`` is checked like every command's ``--out`` (never the current, home or root
+directory) and must be new, empty or a sweep's folder (it holds ``sweep.csv``);
+``--overwrite`` starts any other folder afresh. A lock on ``DIR`` is held for the whole
+run, and nothing is written before every case is validated and the scheduler answered.
 """
 
 from __future__ import annotations
 
 import argparse
+import shutil
 import sys
 import time
 from pathlib import Path
 from typing import Any
 
+from frictionlab.commands._output import add_overwrite
 from frictionlab.commands._progress import progress_bar
 from frictionlab.commands._sweep_task import Task
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
 from frictionlab.io.inputs import read_input_bytes
+from frictionlab.io.output_set import check_out, lock_out
 from frictionlab.sweep.cases import check_key, format_overrides, override_strings
 from frictionlab.sweep.executors import probe_scheduler, run_tasks
 from frictionlab.sweep.figures import summary_figures
@@ -41,6 +49,8 @@ from frictionlab.sweep.table import format_table, sweep_table
 
 HELP = "run a grid or list of scenarios (local processes or a Dask cluster), resumable"
 
+#: The sweep's table, also the mark of a sweep's folder.
+TABLE = "sweep.csv"
 #: Seconds between rewrites of sweep.csv while cases finish.
 TABLE_INTERVAL = 2.0
 
@@ -59,18 +69,31 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )  # fmt: skip
     parser.add_argument("--no-plots", action="store_true", help="skip every PNG plot")
     parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out} exists and is not a directory")
+    # a sweep's folder is marked by sweep.csv; anything else needs --overwrite
+    out = check_out(args.out, args.overwrite, markers=(TABLE,))
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers = {args.workers} is invalid: allowed an integer >= 1")
     spec, command, tasks = load_spec(args.sweep, plots=not args.no_plots)
     if args.scheduler is not None:
         probe_scheduler(args.scheduler)  # before anything is written
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+    with lock_out(out):  # held for the whole run: one sweep per folder at a time
+        if args.overwrite and out.is_dir() and not (out / TABLE).is_file():
+            shutil.rmtree(out)  # --overwrite: a folder that is not a sweep's starts afresh
+        return _run(args, out, spec, command, tasks)
+
+
+def _run(
+    args: argparse.Namespace, out: Path, spec: SweepSpec, command: str, tasks: list[Task]
+) -> int:
     shas = {t.case_id: t.inputs_sha256 for t in tasks}
     cases_dir = out / "cases"
     records: dict[str, dict[str, Any]] = {}
@@ -104,7 +127,7 @@ def run(args: argparse.Namespace) -> int:
             if not result.ok and not args.quiet:
                 print(f"frictionlab sweep: case {case.id} failed: {result.error}", file=sys.stderr)
     writer.write(records, force=True)
-    paths = [out / "sweep.csv"]
+    paths = [out / TABLE]
     if not args.no_plots:
         paths.append(writer.plot())
     failed = [r for r in records.values() if r["status"] != "ok"]
@@ -192,7 +215,7 @@ class _TableWriter:
             if record["status"] == "ok" and cid not in self.figures:
                 self.figures[cid] = self._figures(cid)
         self.table = sweep_table(self.spec.cases, self.spec.keys, records, self.figures)
-        write_text_atomic(self.out / "sweep.csv", format_table(self.table))
+        write_text_atomic(self.out / TABLE, format_table(self.table))
         self.last = now
 
     def _figures(self, cid: str) -> dict[str, float | None]:

@@ -14,7 +14,16 @@ import tomli_w
 
 from frictionlab.errors import InputError
 
-__all__ = ["LINK", "Case", "case_id", "check_key", "expand_grid", "override_strings"]
+__all__ = [
+    "LINK",
+    "MAX_CASES",
+    "Case",
+    "case_id",
+    "check_case_count",
+    "check_key",
+    "expand_grid",
+    "override_strings",
+]
 
 
 @dataclass(frozen=True)
@@ -36,11 +45,31 @@ def case_id(overrides: Mapping[str, Any]) -> str:
 LINK = "+"
 
 
-def expand_grid(grid: Mapping[str, Sequence[Any]]) -> list[dict[str, Any]]:
+#: The most cases a sweep may hold unless its ``max_cases`` says more.
+MAX_CASES = 100_000
+
+
+def check_case_count(count: int, where: str, max_cases: int = MAX_CASES) -> None:
+    """Raise :class:`InputError` when ``count`` cases exceed ``max_cases`` (before expanding)."""
+    if count > max_cases:
+        raise InputError(
+            f"{where} makes {count:.6g} cases, more than max_cases = {max_cases}: allowed "
+            "fewer values, or a larger max_cases at the top of the sweep file"
+        )
+
+
+def expand_grid(
+    grid: Mapping[str, Sequence[Any]], max_cases: int = MAX_CASES
+) -> list[dict[str, Any]]:
     """Cartesian product of ``{key: [values]}``; the last key varies fastest.
 
-    A key ``"a.x+b.y"`` links keys: each value is given to all of them (one axis).
+    A key ``"a.x+b.y"`` links keys: each value is given to all of them (one axis). More
+    than ``max_cases`` cases raise :class:`InputError` before any is made.
     """
+    count = 1
+    for values in grid.values():
+        count *= len(values)
+    check_case_count(count, "[grid]", max_cases)
     keys = [key.split(LINK) for key in grid]
     return [
         {path: value for paths, value in zip(keys, combo, strict=True) for path in paths}

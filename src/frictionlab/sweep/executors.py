@@ -149,6 +149,12 @@ def probe_scheduler(address: str, timeout: float | None = None) -> None:
     within ``timeout`` s, default :data:`PROBE_TIMEOUT`; other bytes; a closed
     connection) is not a scheduler.
     """
+    try:
+        import distributed  # noqa: F401
+    except ImportError:
+        raise InputError(
+            "--scheduler needs dask.distributed: pip install 'frictionlab[dask]'"
+        ) from None
     target = _host_port(address)
     if target is None:
         return

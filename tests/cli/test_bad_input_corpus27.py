@@ -1,0 +1,227 @@
+"""Issue 27's corpus of hostile and tired-user inputs, each one line with the right key.
+
+Every case failed on the code before the fix: a traceback, a hang, a wrong key blamed,
+library noise on stderr or files written where they should not be. Runs in-process
+through :func:`frictionlab.cli.main`; the inputs are refused before any computation
+unless the case is about the run itself.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+from pathlib import Path
+
+import pytest
+from tests.sweep.support import BASE, write_sweep
+
+from frictionlab.cli import main
+from frictionlab.errors import InputError
+from frictionlab.io.config import load_toml
+from frictionlab.io.output_set import lock_out
+from frictionlab.io.tables import read_csv
+
+SIMULATE = BASE.format(steps=20)
+
+
+def _one_line(capsys: pytest.CaptureFixture[str], *words: str) -> str:
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1, err
+    for word in words:
+        assert word in err, err
+    return err
+
+
+# ------------------------------------------------------------------ files refused by type
+
+
+@pytest.fixture
+def fifo(tmp_path: Path) -> Path:
+    if not hasattr(os, "mkfifo"):
+        pytest.skip("no FIFOs here")
+    path = tmp_path / "pipe.toml"
+    os.mkfifo(path)
+    return path
+
+
+def test_a_fifo_scenario_is_refused_without_opening_it(tmp_path: Path, fifo: Path, capsys) -> None:
+    assert main(["simulate", str(fifo), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "FIFO", str(fifo))
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_directory_scenario_is_refused(tmp_path: Path, capsys) -> None:
+    assert main(["roughness", str(tmp_path), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "is a directory")
+
+
+def test_a_fifo_table_is_refused(tmp_path: Path, fifo: Path) -> None:
+    with pytest.raises(InputError, match="FIFO"):
+        read_csv(fifo)
+
+
+def test_a_fifo_tribometer_file_is_refused(fifo: Path) -> None:
+    from frictionlab.io.tribometer import read_tribometer
+
+    with pytest.raises(InputError, match="FIFO"):
+        read_tribometer(fifo)
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="no /dev/zero")
+def test_a_device_as_topography_is_refused(tmp_path: Path) -> None:
+    from frictionlab.roughness.topography import read_prepared
+
+    with pytest.raises(InputError, match="a device"):
+        read_prepared("/dev/zero", periodicity="assume", detrend="none")
+
+
+def test_a_fifo_named_by_a_sweep_is_refused(tmp_path: Path, capsys) -> None:
+    if not hasattr(os, "mkfifo"):
+        pytest.skip("no FIFOs here")
+    sweep = write_sweep(tmp_path, '[grid]\n"program.2.duration" = [1.0]\n')
+    base = tmp_path / "base.toml"
+    base.write_text(base.read_text() + '[[program]]\nkind = "table"\nfile = "slip.csv"\n')
+    os.mkfifo(tmp_path / "slip.csv")
+    out = tmp_path / "out"
+    assert main(["sweep", str(sweep), "--out", str(out)]) == 2
+    _one_line(capsys, "FIFO", "slip.csv")
+    assert not out.exists()
+
+
+# ------------------------------------------------------------------- one decoding rule
+
+BOM = b"\xef\xbb\xbf"
+
+
+def test_toml_with_a_bom_reads_like_without(tmp_path: Path) -> None:
+    plain, marked = tmp_path / "plain.toml", tmp_path / "bom.toml"
+    plain.write_text(SIMULATE)
+    marked.write_bytes(BOM + SIMULATE.encode())
+    assert load_toml(marked) == load_toml(plain)
+
+
+def test_table_csv_with_a_bom_reads_like_without(tmp_path: Path) -> None:
+    text = "time,slip_1\n0,0\n1,0.05\n"
+    plain, marked = tmp_path / "plain.csv", tmp_path / "bom.csv"
+    plain.write_text(text)
+    marked.write_bytes(BOM + text.encode())
+    a, b = read_csv(plain), read_csv(marked)
+    assert list(b.columns) == list(a.columns) == ["time", "slip_1"]
+
+
+def test_utf16_is_refused_by_name(tmp_path: Path, capsys) -> None:
+    path = tmp_path / "s.toml"
+    path.write_bytes(SIMULATE.encode("utf-16"))
+    assert main(["simulate", str(path), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "not UTF-8", "UTF-16")
+
+
+# ------------------------------------------------------------- bounds and tracebacks
+
+
+@pytest.mark.parametrize(
+    ("text", "words"),
+    [
+        ("[run]\nmax_halvings = 1000000000\n", ("max_halvings", "0 to 60")),
+        ("[run]\nmax_halvings = 61\n", ("max_halvings", "0 to 60")),
+    ],
+)
+def test_run_bounds(tmp_path: Path, capsys, text: str, words: tuple[str, ...]) -> None:
+    path = tmp_path / "s.toml"
+    path.write_text(SIMULATE + text)
+    assert main(["simulate", str(path), "--out", str(tmp_path / "out"), "--no-plots"]) == 2
+    _one_line(capsys, *words)
+
+
+def test_solver_max_cuts_is_bounded() -> None:
+    from frictionlab.contact.solver import SolverOptions
+    from frictionlab.errors import ParameterError
+
+    SolverOptions(max_cuts=60)
+    with pytest.raises(ParameterError, match="max_cuts = 2000 .* 0 to 60"):
+        SolverOptions(max_cuts=2000)
+
+
+def test_a_sweep_value_that_is_a_table_names_the_case_and_key(tmp_path: Path, capsys) -> None:
+    sweep = write_sweep(tmp_path, '[grid]\n"law.mu_s" = [{a = 1}]\n')
+    out = tmp_path / "out"
+    assert main(["sweep", str(sweep), "--out", str(out)]) == 2
+    _one_line(capsys, "sweep case 1", "[law].mu_s must be a number")
+    assert not out.exists()
+
+
+# ------------------------------------------------------------------- sweep's --out
+
+
+@pytest.fixture
+def sweep_file(tmp_path: Path) -> Path:
+    return write_sweep(tmp_path, '[grid]\n"law.mu_s" = [0.5]\n')
+
+
+def test_sweep_refuses_the_current_directory(
+    tmp_path: Path, sweep_file: Path, capsys, monkeypatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    before = sorted(p.name for p in tmp_path.iterdir())
+    assert main(["sweep", str(sweep_file), "--out", "."]) == 2
+    _one_line(capsys, "current directory")
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+
+
+def test_sweep_refuses_a_foreign_folder_and_leaves_it_alone(
+    tmp_path: Path, sweep_file: Path, capsys
+) -> None:
+    folder = tmp_path / "mine"
+    folder.mkdir()
+    (folder / "thesis.txt").write_text("four years")
+    assert main(["sweep", str(sweep_file), "--out", str(folder)]) == 2
+    _one_line(capsys, "thesis.txt", "--overwrite")
+    assert sorted(p.name for p in folder.iterdir()) == ["thesis.txt"]
+
+
+def test_sweep_refuses_a_folder_being_written(tmp_path: Path, sweep_file: Path, capsys) -> None:
+    out = tmp_path / "out"
+    with lock_out(out):  # another run holds it
+        assert main(["sweep", str(sweep_file), "--out", str(out)]) == 2
+    _one_line(capsys, "being written by another frictionlab run")
+    assert not out.exists()
+
+
+@pytest.mark.slow
+def test_sweep_overwrite_starts_a_foreign_folder_afresh(tmp_path: Path, sweep_file: Path) -> None:
+    folder = tmp_path / "mine"
+    folder.mkdir()
+    (folder / "old.txt").write_text("x")
+    argv = ["sweep", str(sweep_file), "--out", str(folder), "--quiet", "--no-plots"]
+    assert main([*argv, "--workers", "1", "--overwrite"]) == 0
+    assert not (folder / "old.txt").exists() and (folder / "sweep.csv").is_file()
+    assert main([*argv, "--workers", "1"]) == 0  # a sweep's folder: resumed, no --overwrite
+
+
+# ------------------------------------------------------------------ links as --out
+
+
+def test_a_dangling_link_as_out_is_refused_before_the_run(tmp_path: Path, capsys) -> None:
+    scenario = tmp_path / "s.toml"
+    scenario.write_text(SIMULATE)
+    link = tmp_path / "out"
+    link.symlink_to(tmp_path / "nowhere")
+    assert main(["simulate", str(scenario), "--out", str(link), "--no-plots"]) == 2
+    _one_line(capsys, "symbolic link", "nowhere")
+    assert link.is_symlink() and not (tmp_path / "nowhere").exists()
+
+
+def test_a_linked_out_is_written_where_it_points(tmp_path: Path) -> None:
+    scenario = tmp_path / "s.toml"
+    scenario.write_text(SIMULATE)
+    real = tmp_path / "real"
+    real.mkdir()
+    link = tmp_path / "out"
+    link.symlink_to(real)
+    for _ in range(2):
+        argv = ["simulate", str(scenario), "--out", str(link), "--no-plots", "--quiet"]
+        assert main(argv) == 0
+        assert link.is_symlink() and (real / "summary.json").is_file()
+    leftovers = [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
+    assert leftovers == [], leftovers
+    assert stat.S_ISDIR(os.lstat(real).st_mode)
