@@ -23,7 +23,12 @@ from frictionlab.contact.loading import NormalLoad, Segment, Stage, plan_stages
 from frictionlab.contact.mesh import Discretisation, discretise
 from frictionlab.contact.newton import newton_step
 from frictionlab.errors import ParameterError
-from frictionlab.subloading import ContactState, SubloadingParams, check_snap_back
+from frictionlab.subloading import (
+    ContactState,
+    SubloadingParams,
+    check_normal_capacity,
+    check_snap_back,
+)
 
 __all__ = ["DRIVES", "SolverOptions", "run_contact"]
 
@@ -252,6 +257,8 @@ def _run(
         else normal.value * float(np.asarray(params.alpha_n))
     )
     check_snap_back(params, nominal_pressure)
+    if normal.control == "pressure":  # the mean pressure: some points carry more
+        check_normal_capacity(params, nominal_pressure)
     disc = discretisation if discretisation is not None else discretise(block)
     if disc.block != block:
         raise ParameterError("discretisation", "another block", "a mesh of this block")
