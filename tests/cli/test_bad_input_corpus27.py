@@ -138,7 +138,7 @@ def test_solver_max_cuts_is_bounded() -> None:
     from frictionlab.errors import ParameterError
 
     SolverOptions(max_cuts=60)
-    with pytest.raises(ParameterError, match="max_cuts = 2000 .* 0 to 60"):
+    with pytest.raises(ParameterError, match=r"max_cuts = 2000 .* 0 to 60"):
         SolverOptions(max_cuts=2000)
 
 
@@ -225,3 +225,56 @@ def test_a_linked_out_is_written_where_it_points(tmp_path: Path) -> None:
     leftovers = [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
     assert leftovers == [], leftovers
     assert stat.S_ISDIR(os.lstat(real).st_mode)
+
+
+# ------------------------------------------------------------------- the right key
+
+CLOSED_LAW = """
+[law]
+surface = "modified_cam_clay"
+alpha_n = 2.0e7
+alpha_t = 1.0e12
+F_s = 2.0e4
+F_k = 1.9e4
+M = 1.0
+u = 1.0e4
+kappa = 0.0
+xi = 3000.0
+rotation = [0.4, 0.0]
+[initial]
+normal_traction = 1.8e4
+[[program]]
+kind = "slide"
+velocity = 1e-6
+distance = 1e-6
+steps = 20
+"""
+
+
+def test_a_rotation_that_puts_the_start_outside_blames_the_rotation(tmp_path: Path, capsys) -> None:
+    """f_t = 0 was never set: at f_n = 0.9 F_s, |beta| = 0.4 gives f_n g(0.4) = 1.044 F_s."""
+    path = tmp_path / "s.toml"
+    path.write_text(CLOSED_LAW)
+    assert main(["simulate", str(path), "--out", str(tmp_path / "out"), "--no-plots"]) == 2
+    err = _one_line(capsys, "[law].rotation", "R = 1.044")
+    assert "tangential_traction" not in err
+
+
+def test_a_slide_at_1e300_m_per_s_draws_its_plots(tmp_path: Path, capsys) -> None:
+    path = tmp_path / "s.toml"
+    path.write_text(
+        SIMULATE.replace("velocity = 0.1\ndistance = 0.2", "velocity = 1e300\ndistance = 0.2")
+    )
+    out = tmp_path / "out"
+    assert main(["simulate", str(path), "--out", str(out), "--quiet"]) == 0
+    assert capsys.readouterr().err == ""
+    assert (out / "friction.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_a_grid_over_max_cases_is_refused_naming_the_limit(tmp_path: Path, capsys) -> None:
+    values = ", ".join(f"{0.4 + 1e-4 * i!r}" for i in range(400))
+    sweep = write_sweep(tmp_path, f'[grid]\n"law.mu_s" = [{values}]\n"law.xi" = [{values}]\n')
+    out = tmp_path / "out"
+    assert main(["sweep", str(sweep), "--out", str(out)]) == 2
+    _one_line(capsys, "[grid] makes 160000 cases", "max_cases = 100000")
+    assert not out.exists()

@@ -196,6 +196,16 @@ def initial_state(
     traction = np.column_stack([ft, fn])
     R = ratio_of(params, traction, F0)
     if np.any(R > 1.0):
+        outside = R > 1.0
+        if not np.any(ft[outside]) and np.any(params.rotation):
+            # no tangential traction: the rotation alone put the start outside (Eq 79)
+            i = int(np.flatnonzero(outside)[0])
+            raise ParameterError(
+                "rotation",
+                np.asarray(params.rotation),
+                f"a rotation that keeps the initial traction inside the sliding-yield "
+                f"surface (with f_t = 0 and f_n = {fn[i]:.6g} Pa: R = {R[i]:.6g} > 1)",
+            )
         raise ParameterError("tangential_traction", ft, "inside the sliding-yield surface (R <= 1)")
     check_snap_back(params, fn)
     if frame is None:
