@@ -31,7 +31,7 @@ def test_example_calibration_recovers_the_true_parameters(tmp_path: Path) -> Non
     code = main(["calibrate", str(EXAMPLE / "calibrate.toml"), "--out", str(tmp_path),
                  "--quiet", "--set", "fit.profile=false"])  # fmt: skip
     assert code == 0
-    fit = json.loads((tmp_path / "fit.json").read_text())
+    fit = json.loads((tmp_path / "summary.json").read_text())
     for name, entry in fit["parameters"].items():
         if entry["stderr"] is None:
             # No standard error: the data do not constrain it at all (its Jacobian column

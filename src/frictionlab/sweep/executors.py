@@ -1,6 +1,6 @@
 """Where a sweep's cases run: a local process pool or a Dask cluster.
 
-:func:`run_tasks` yields the :class:`~frictionlab.commands._sweep_task.TaskResult` of each
+:func:`run_tasks` yields the :class:`~frictionlab.app.sweep_task.TaskResult` of each
 case as it finishes. Both executors keep the sweep's promises:
 
 * **local pool**: every worker process dies with the sweep's own process (Linux
@@ -34,7 +34,7 @@ from urllib.parse import urlsplit
 from frictionlab.errors import FrictionlabError, InputError
 
 if TYPE_CHECKING:
-    from frictionlab.commands._sweep_task import Task, TaskResult
+    from frictionlab.app.sweep_task import Task, TaskResult
 
 __all__ = ["SchedulerError", "probe_scheduler", "run_tasks"]
 
@@ -97,7 +97,7 @@ def _on_pool(tasks: Sequence[Task], workers: int) -> Iterator[TaskResult]:
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
-    from frictionlab.commands._sweep_task import run_task
+    from frictionlab.app.sweep_task import run_task
 
     context = multiprocessing.get_context("spawn")  # no fork of a threaded parent
     pool = ProcessPoolExecutor(
@@ -115,7 +115,7 @@ def _on_pool(tasks: Sequence[Task], workers: int) -> Iterator[TaskResult]:
 
 
 def _result(task: Task, get: Callable[[], TaskResult]) -> TaskResult:
-    from frictionlab.commands._sweep_task import TaskResult
+    from frictionlab.app.sweep_task import TaskResult
 
     try:
         return get()
@@ -232,7 +232,7 @@ def _on_dask(tasks: Sequence[Task], address: str) -> Iterator[TaskResult]:
 def _dask_results(tasks: Sequence[Task], address: str) -> Iterator[TaskResult]:
     from distributed import Client, as_completed
 
-    from frictionlab.commands._sweep_task import run_task
+    from frictionlab.app.sweep_task import run_task
 
     where = f"--scheduler {address}"
     try:
