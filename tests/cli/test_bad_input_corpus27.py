@@ -278,3 +278,68 @@ def test_a_grid_over_max_cases_is_refused_naming_the_limit(tmp_path: Path, capsy
     assert main(["sweep", str(sweep), "--out", str(out)]) == 2
     _one_line(capsys, "[grid] makes 160000 cases", "max_cases = 100000")
     assert not out.exists()
+
+
+# ------------------------------------------------------ sizes refused before the run
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "calibration"
+
+
+def _calibration(tmp: Path, steps: str) -> Path:
+    text = (EXAMPLES / "calibrate.toml").read_text()
+    head, _, tail = text.partition("max_step = 5.0e-6")
+    (tmp / "shs_run12.csv").write_bytes((EXAMPLES / "shs_run12.csv").read_bytes())
+    path = tmp / "calibrate.toml"
+    path.write_text(head + steps + tail)
+    return path
+
+
+@pytest.mark.parametrize(("steps", "limit"), [("1e7", "1 day"), ("1e12", "memory")])
+def test_calibration_steps_are_refused_naming_the_key(
+    tmp_path: Path, capsys, steps: str, limit: str
+) -> None:
+    path = _calibration(tmp_path, f"steps = {int(float(steps))}")
+    assert main(["calibrate", str(path), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "[[data]] #1.program #1.steps", limit)
+    assert not (tmp_path / "out").exists()
+
+
+def test_the_calibration_example_passes_its_size_check(tmp_path: Path) -> None:
+    from frictionlab.app.budget import check_calibration
+    from frictionlab.io.calibration_config import load_calibration
+
+    check_calibration(load_calibration(_calibration(tmp_path, "max_step = 5.0e-6")))
+
+
+ROUGH = """\
+mu0 = 0.3
+[lower]
+kind = "wedge"
+angles_deg = [30.0, 15.0]
+wavelength = 1.0e-3
+[upper]
+kind = "flat"
+[sliding]
+beta_deg = [0.0, 90.0]
+load = 2.0e-6
+[lattice]
+stations = 200
+time_samples = 1000000000
+"""
+
+
+def test_roughness_time_samples_are_refused_naming_the_key(tmp_path: Path, capsys) -> None:
+    path = tmp_path / "r.toml"
+    path.write_text(ROUGH)
+    assert main(["roughness", str(path), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "[lattice].time_samples = 1000000000", "memory")
+
+
+def test_a_contact_mesh_beyond_memory_is_refused_before_meshing(tmp_path: Path, capsys) -> None:
+    from importlib import resources
+
+    text = (resources.files("frictionlab") / "data" / "contact" / "pmma_block.toml").read_text()
+    path = tmp_path / "c.toml"
+    path.write_text(text.replace("element_size = 0.0025", "element_size = 0.00005"))
+    assert main(["contact", str(path), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "[block].element_size = 5e-05 m", "1.003e+06 nodes", "memory")

@@ -11,8 +11,8 @@ import time
 import numpy as np
 import pytest
 
+from frictionlab.app import budget
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io import budget
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 from frictionlab.subloading.surfaces import g_function
 from frictionlab.sweep.cases import MAX_CASES, check_case_count, expand_grid

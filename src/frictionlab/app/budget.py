@@ -25,16 +25,20 @@ import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from frictionlab.errors import InputError
 
 __all__ = [
     "RunEstimate",
+    "check_calibration",
     "check_calibration_size",
+    "check_contact",
     "check_contact_size",
     "check_grid_size",
     "check_lattice_size",
     "check_output_space",
+    "check_roughness",
     "check_run_size",
     "largest",
     "physical_memory",
@@ -371,5 +375,52 @@ def check_contact_size(
     _refuse_beyond(
         f"{key} makes a {dim}-D mesh of {nodes:.4g} nodes with {contact_nodes:.4g} on the "
         f"contact face (dense contact matrices of {contact_nodes * dim:.4g} columns)",
-        need, seconds, memory, f"allowed a larger {key.rsplit('.', 1)[-1]} or a smaller block",
+        need, seconds, memory, "allowed a larger element_size or a smaller block",
     )  # fmt: skip
+
+
+# --------------------------------------------- the estimates of each workflow's parsed input
+
+#: Function evaluations of one profile point (frictionlab.calibration.profile's max_nfev).
+PROFILE_EVALUATIONS = 30
+
+
+def check_calibration(cfg: Any, memory: int | None = None) -> None:
+    """:func:`check_calibration_size` of a parsed calibration file (``CalibrationConfig``)."""
+    from frictionlab.driver.program import plan_program
+
+    counts: list[tuple[int, str]] = []
+    for k, curve in enumerate(cfg.curves, start=1):
+        for j, (plan, seg) in enumerate(
+            zip(plan_program(curve.program, 1), curve.program, strict=True), start=1
+        ):
+            key = "max_step" if getattr(seg, "max_step", None) is not None else "steps"
+            counts.append((int(plan.estimated_steps), f"[[data]] #{k}.program #{j}.{key}"))
+    p = len(cfg.names)
+    profiled = min(cfg.profile_max, p) if cfg.profile else 0
+    profile_runs = profiled * cfg.profile_points * PROFILE_EVALUATIONS * (p + 1)
+    check_calibration_size(counts, p, cfg.max_evaluations, profile_runs, memory)
+
+
+def check_roughness(scenario: Any, memory: int | None = None) -> None:
+    """:func:`check_lattice_size` of a parsed roughness scenario (``RoughnessScenario``)."""
+    from frictionlab.roughness.lattice import lattice_geometry
+
+    settings = scenario.settings
+    if not settings.time_samples:
+        return
+    geometry = lattice_geometry(scenario.lower, scenario.upper, settings.stations)
+    check_lattice_size(
+        settings.time_samples, settings.max_return_periods, geometry.n_stations,
+        len(scenario.beta_deg), memory=memory,
+    )  # fmt: skip
+
+
+def check_contact(scenario: Any, memory: int | None = None) -> None:
+    """:func:`check_contact_size` of a parsed contact scenario (``ContactScenario``)."""
+    cells = scenario.block.cells
+    nodes = int(math.prod(c + 1 for c in cells))
+    contact = int(math.prod(c + 1 for c in cells[:-1]))  # the bottom face
+    steps = scenario.normal.steps + sum(seg.steps for seg in scenario.program)
+    key = f"[block].element_size = {scenario.block.element_size:g} m"
+    check_contact_size(nodes, contact, scenario.block.dim, steps, key, memory=memory)

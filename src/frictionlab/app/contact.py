@@ -188,10 +188,12 @@ class Contact:
     aliases: tuple[str, ...] = ()
 
     def parse(self, args: argparse.Namespace, out: Path) -> ContactScenario:
+        from frictionlab.app.budget import check_contact
         from frictionlab.contact._fem import require_skfem
         from frictionlab.io.contact_scenario import load_contact_scenario
 
         scenario = load_contact_scenario(args.scenario, args.set)  # every input check is here
+        check_contact(scenario)  # the solver's memory and time, before meshing
         require_skfem()
         return scenario
 

@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any
 
 from frictionlab._progress import ProgressFactory
+from frictionlab.app.budget import check_roughness
 from frictionlab.app.sweep_task import Task
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
@@ -161,7 +162,7 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
             if command == "simulate":
                 parse_scenario(data, base_dir=spec.base.parent, source=str(spec.base))
             else:
-                parse_roughness_scenario(data, spec.base.parent)
+                check_roughness(parse_roughness_scenario(data, spec.base.parent))
         except (InputError, ParameterError, ValidityError) as exc:
             raise InputError(f"{where}: {exc}") from None
         # the base and the files it names travel with the task (relative names, as written,
