@@ -343,3 +343,92 @@ def test_a_contact_mesh_beyond_memory_is_refused_before_meshing(tmp_path: Path, 
     path.write_text(text.replace("element_size = 0.0025", "element_size = 0.00005"))
     assert main(["contact", str(path), "--out", str(tmp_path / "out")]) == 2
     _one_line(capsys, "[block].element_size = 5e-05 m", "1.003e+06 nodes", "memory")
+
+
+def _contact(tmp: Path, old: str, new: str) -> Path:
+    from importlib import resources
+
+    text = (resources.files("frictionlab") / "data" / "contact" / "pmma_block.toml").read_text()
+    assert old in text
+    path = tmp / "c.toml"
+    path.write_text(text.replace(old, new))
+    return path
+
+
+CLOSED_CONTACT_LAW = """[law]
+surface = "modified_cam_clay"
+alpha_n = 5.0e11
+alpha_t = 5.0e11
+F_s = 2.0e6
+F_k = 0.8e6
+M = 0.6
+u = 2.0e6
+kappa = 1.0e9
+xi = 0.05
+[normal]"""
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "words"),
+    [
+        ("mu_s = 0.6", "mu_s = [0.6, 0.7]", ("[law].mu_s = [0.6, 0.7]", "one value")),
+        ("pressure = 1.0e6 ", "pressure = 1.0e30 ", ("[normal].pressure = 1e+30", "[block].E")),
+        (
+            "pressure = 1.0e6       # Pa on the top edge",
+            "displacement = 1.0",
+            ("[normal].displacement = 1 m", "[block].height"),
+        ),
+        ("steps = 20\n", "steps = 20\n[solver]\nmax_cuts = 2000\n",
+         ("[solver].max_cuts = 2000", "0 to 60")),
+    ],
+)  # fmt: skip
+def test_contact_inputs_blame_the_key_set(
+    tmp_path: Path, capsys, old: str, new: str, words: tuple[str, ...]
+) -> None:
+    path = _contact(tmp_path, old, new)
+    assert main(["contact", str(path), "--out", str(tmp_path / "out")]) == 2
+    err = _one_line(capsys, *words)
+    assert "alpha_t" not in err and "Traceback" not in err
+
+
+def test_a_closed_surface_below_the_pressure_blames_F_k(tmp_path: Path, capsys) -> None:
+    from importlib import resources
+
+    text = (resources.files("frictionlab") / "data" / "contact" / "pmma_block.toml").read_text()
+    law = text[text.index("[law]") : text.index("[normal]") + len("[normal]")]
+    path = tmp_path / "c.toml"
+    path.write_text(text.replace(law, CLOSED_CONTACT_LAW))
+    assert main(["contact", str(path), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "[law].F_k = 800000.0", "normal traction 1e+06 Pa")
+
+
+def test_a_bridge_distance_of_1e300_blames_the_distance(tmp_path: Path, capsys) -> None:
+    from importlib import resources
+
+    text = (resources.files("frictionlab") / "data" / "bridge" / "ratchet.toml").read_text()
+    path = tmp_path / "b.toml"
+    path.write_text(text + "distance = 1e300\n")
+    assert main(["bridge", str(path), "--out", str(tmp_path / "out")]) == 2
+    err = _one_line(capsys, "[bridge].distance = 1e+300 m")
+    assert "normal_traction" not in err.split("allowed")[0]
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "words"),
+    [
+        ("profile_points = 7", "profile_points = 10000000", ("profile_points", "3 to 1001")),
+    ],
+)
+def test_calibration_bounds(
+    tmp_path: Path, capsys, old: str, new: str, words: tuple[str, ...]
+) -> None:
+    path = _calibration(tmp_path, "max_step = 5.0e-6")
+    path.write_text(path.read_text().replace(old, new))
+    assert main(["calibrate", str(path), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, *words)
+
+
+def test_sweep_max_cases_is_a_key_of_the_sweep_file(tmp_path: Path, capsys) -> None:
+    sweep = write_sweep(tmp_path, 'max_cases = 2\n[grid]\n"law.mu_s" = [0.5, 0.6, 0.7]\n')
+    assert main(["sweep", str(sweep), "--out", str(tmp_path / "out")]) == 2
+    _one_line(capsys, "[grid] makes 3 cases, more than max_cases = 2")

@@ -36,7 +36,7 @@ from typing import Any
 
 import numpy as np
 
-from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient
+from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient, steady_distance
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
@@ -47,6 +47,8 @@ __all__ = ["BridgeOptions", "BridgeScenario", "parse_bridge_scenario"]
 
 #: Roughness tables the bridge does not use (its polar is the single-level kinetic one).
 _NOT_USED = ("output", "adhesion", "wear", "hierarchy")
+#: The longest [bridge].distance, in relaxation lengths of the law (steady_distance).
+MAX_DISTANCE_LENGTHS = 1e6
 #: [law] keys that a fitted group replaces.
 _FITTED_KEYS = {
     "rotation": ("rotation",),
@@ -130,6 +132,16 @@ def parse_bridge_scenario(data: dict[str, Any], base_dir: Path) -> BridgeScenari
         raise InputError(
             f"[law].{exc} (at [bridge].normal_traction = {options.normal_traction:g} Pa)"
         ) from None
+    if options.distance is not None:
+        # steady after ~25 relaxation lengths (steady_distance); far beyond, one step's
+        # slip makes a trial traction the law's solve rejects, blaming the traction
+        longest = steady_distance(law, options.normal_traction, lengths=MAX_DISTANCE_LENGTHS)
+        if options.distance > longest:
+            raise InputError(
+                f"[bridge].distance = {options.distance:g} m is invalid: allowed at most "
+                f"{longest:.3g} m ({MAX_DISTANCE_LENGTHS:g} relaxation lengths of [law] at "
+                "[bridge].normal_traction; steady sliding needs about 25)"
+            )
     circle = np.arange(0.0, 360.0 - 1e-9, options.step_deg)
     extra = np.mod(roughness.beta_deg, 360.0)
     directions = np.unique(np.round(np.concatenate([circle, extra]), 9))

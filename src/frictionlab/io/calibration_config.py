@@ -50,6 +50,10 @@ __all__ = ["END_TOLERANCE", "CalibrationConfig", "load_calibration", "parse_cali
 END_TOLERANCE = 1e-6
 
 
+#: The most grid values of one likelihood profile (each is a fit of the other parameters).
+MAX_PROFILE_POINTS = 1001
+
+
 @dataclass(frozen=True)
 class CalibrationConfig:
     """A validated calibration file."""
@@ -88,7 +92,10 @@ def _parse_fit(
         bt.finish()
     max_eval = t.get("max_evaluations", int, 100, check=lambda v: v >= 1, allowed="an integer >= 1")
     profile = t.get("profile", bool, True)
-    points = t.get("profile_points", int, 9, check=lambda v: v >= 3, allowed="an integer >= 3")
+    points = t.get(
+        "profile_points", int, 9, check=lambda v: 3 <= v <= MAX_PROFILE_POINTS,
+        allowed=f"an integer from 3 to {MAX_PROFILE_POINTS}",
+    )  # fmt: skip
     most = t.get("profile_max", int, 2, check=lambda v: v >= 0, allowed="an integer >= 0")
     t.finish()
     return names, bounds, max_eval, profile if most > 0 else False, points, most

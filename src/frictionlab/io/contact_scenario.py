@@ -34,7 +34,7 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import REQUIRED, apply_overrides, load_toml
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.scenario import parse_law_table
-from frictionlab.subloading import SubloadingParams, check_snap_back
+from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
 __all__ = ["ContactScenario", "load_contact_scenario", "parse_contact_scenario"]
 
@@ -124,6 +124,31 @@ def _parse_normal(t: TomlTable) -> tuple[NormalLoad, dict[str, Any]]:
     return _where(t.where, lambda: NormalLoad(**values)), values
 
 
+def _check_load(law: dict[str, Any], block: Block, params: SubloadingParams, normal: Any) -> None:
+    """Refuse, naming the key, a per-point law and a normal load no linear block can take."""
+    if params.per_point:
+        pairs = ("rotation", "orthotropy")  # one pair each, or per-point pairs
+        key = next(
+            (k for k, v in law.items()
+             if isinstance(v, list) and (k not in pairs or (v and isinstance(v[0], list)))),
+            "law",
+        )  # fmt: skip
+        raise InputError(
+            f"[law].{key} = {law.get(key)} is invalid: allowed one value (the contact model "
+            "has one interface law; per-point lists are for simulate)"
+        )
+    if normal.control == "pressure" and not normal.value < block.E:
+        raise InputError(
+            f"[normal].pressure = {normal.value:g} Pa is invalid: allowed a pressure below "
+            f"[block].E = {block.E:g} Pa (the linear-elastic block's strain stays below 1)"
+        )
+    if normal.control != "pressure" and not normal.value < block.height:
+        raise InputError(
+            f"[normal].displacement = {normal.value:g} m is invalid: allowed less than "
+            f"[block].height = {block.height:g} m"
+        )
+
+
 def _parse_segment(t: TomlTable) -> tuple[Segment, dict[str, Any]]:
     kind = t.get("kind", str, choices=tuple(_SEGMENTS))
     cls, keys = _SEGMENTS[kind]
@@ -197,8 +222,11 @@ def parse_contact_scenario(data: dict[str, Any], source: str = "") -> ContactSce
         )
     if drive == "rigid" and control != "slide":
         raise InputError("[solver].drive = 'rigid' needs a displacement-controlled programme")
+    _check_load(law_t.mapping(), block, params, normal)
     nominal = normal.value if normal.control == "pressure" else normal.value * float(params.alpha_n)
     _where("[law]", lambda: check_snap_back(params, nominal))
+    if normal.control == "pressure":  # the mean pressure: some points carry more
+        _where("[law]", lambda: check_normal_capacity(params, nominal))
     inputs = {
         "title": title,
         "description": description,

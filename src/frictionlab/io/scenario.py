@@ -42,7 +42,7 @@ from frictionlab.driver import (
 )
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.recorder import Recording, RowSink
-from frictionlab.driver.simulate import count_points
+from frictionlab.driver.simulate import MAX_HALVINGS, count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import REQUIRED, apply_overrides, load_toml, unknown_key
 from frictionlab.io.config import Table as TomlTable
@@ -296,7 +296,13 @@ def _parse_run(t: TomlTable | None) -> RunOptions:
     opts = RunOptions(
         n_points=_int(t, "n_points", None, 1),
         accuracy=_positive(t, "accuracy"),
-        max_halvings=_int(t, "max_halvings", 10, 0),
+        max_halvings=t.get(
+            "max_halvings",
+            int,
+            10,
+            check=lambda v: 0 <= v <= MAX_HALVINGS,
+            allowed=f"an integer from 0 to {MAX_HALVINGS}",
+        ),
         allow_large=t.get("allow_large", bool, False),
     )
     t.finish()

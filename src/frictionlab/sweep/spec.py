@@ -27,13 +27,20 @@ from pathlib import Path
 from typing import Any
 
 from frictionlab.errors import InputError
-from frictionlab.sweep.cases import LINK, Case, expand_grid, make_cases
+from frictionlab.sweep.cases import (
+    LINK,
+    MAX_CASES,
+    Case,
+    check_case_count,
+    expand_grid,
+    make_cases,
+)
 
 __all__ = ["COMMANDS", "SweepSpec", "detect_command", "named_files", "parse_sweep"]
 
 #: Scenario commands a sweep can run.
 COMMANDS = ("simulate", "roughness")
-_TOP_KEYS = ("title", "base", "command", "grid", "case")
+_TOP_KEYS = ("title", "base", "command", "max_cases", "grid", "case")
 
 
 @dataclass(frozen=True)
@@ -65,13 +72,18 @@ def parse_sweep(data: Mapping[str, Any], sweep_dir: Path) -> SweepSpec:
         raise InputError(
             f"command = {command!r} is not allowed; choose one of {', '.join(COMMANDS)}"
         )
+    max_cases = data.get("max_cases", MAX_CASES)
+    if isinstance(max_cases, bool) or not isinstance(max_cases, int) or max_cases < 1:
+        raise InputError(f"max_cases = {max_cases!r} is invalid: allowed an integer >= 1")
     if ("grid" in data) == ("case" in data):
         raise InputError("a sweep file needs exactly one of [grid] or [[case]] tables")
     if "grid" in data:
         grid = _grid(data["grid"])
         keys = tuple(grid)
-        overrides = expand_grid(grid)
+        overrides = expand_grid(grid, max_cases)
     else:
+        if isinstance(data["case"], list):
+            check_case_count(len(data["case"]), "[[case]]", max_cases)
         overrides = _case_list(data["case"])
         keys = tuple(dict.fromkeys(k for item in overrides for k in item))
     path = Path(base) if Path(base).is_absolute() else sweep_dir / base
