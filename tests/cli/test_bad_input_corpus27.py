@@ -122,8 +122,8 @@ def test_utf16_is_refused_by_name(tmp_path: Path, capsys) -> None:
 @pytest.mark.parametrize(
     ("text", "words"),
     [
-        ("[run]\nmax_halvings = 1000000000\n", ("max_halvings", "0 to 60")),
-        ("[run]\nmax_halvings = 61\n", ("max_halvings", "0 to 60")),
+        ("[run]\nmax_halvings = 1000000000\n", ("[run].max_halvings", "<= 60")),
+        ("[run]\nmax_halvings = 61\n", ("[run].max_halvings", "<= 60")),
     ],
 )
 def test_run_bounds(tmp_path: Path, capsys, text: str, words: tuple[str, ...]) -> None:
@@ -416,7 +416,7 @@ def test_a_bridge_distance_of_1e300_blames_the_distance(tmp_path: Path, capsys) 
 @pytest.mark.parametrize(
     ("old", "new", "words"),
     [
-        ("profile_points = 7", "profile_points = 10000000", ("profile_points", "3 to 1001")),
+        ("profile_points = 7", "profile_points = 10000000", ("[fit].profile_points", "<= 1001")),
     ],
 )
 def test_calibration_bounds(

@@ -13,6 +13,7 @@ from typing import Any
 import tomli_w
 
 from frictionlab.errors import InputError
+from frictionlab.schema.sweep import MAX_CASES
 
 __all__ = [
     "LINK",
@@ -43,10 +44,6 @@ def case_id(overrides: Mapping[str, Any]) -> str:
 
 #: Joins keys that take the same value together in a grid (``"a.x+b.y" = [1, 2]``).
 LINK = "+"
-
-
-#: The most cases a sweep may hold unless its ``max_cases`` says more.
-MAX_CASES = 100_000
 
 
 def check_case_count(count: int, where: str, max_cases: int = MAX_CASES) -> None:
