@@ -179,6 +179,16 @@ def test_sweep_refuses_a_foreign_folder_and_leaves_it_alone(
     assert sorted(p.name for p in folder.iterdir()) == ["thesis.txt"]
 
 
+@pytest.mark.parametrize("overwrite", [[], ["--overwrite"]])
+def test_sweep_refuses_the_folder_of_its_own_inputs(
+    tmp_path: Path, sweep_file: Path, capsys, overwrite: list[str]
+) -> None:
+    before = sorted(p.name for p in tmp_path.iterdir())
+    assert main(["sweep", str(sweep_file), "--out", str(tmp_path), *overwrite]) == 2
+    _one_line(capsys)
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+
+
 def test_sweep_refuses_a_folder_being_written(tmp_path: Path, sweep_file: Path, capsys) -> None:
     out = tmp_path / "out"
     with lock_out(out):  # another run holds it

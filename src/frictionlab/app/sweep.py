@@ -61,6 +61,13 @@ def run_sweep(args: argparse.Namespace, progress_bar: ProgressFactory) -> int:
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers = {args.workers} is invalid: allowed an integer >= 1")
     spec, command, tasks = load_spec(args.sweep, plots=not args.no_plots)
+    where = out.resolve()
+    for source in (Path(args.sweep), spec.base):
+        if where == source.resolve().parent or where in source.resolve().parents:
+            raise InputError(
+                f"--out '{args.out}' holds the sweep's own input '{source}': allowed a "
+                "folder outside the inputs' folders"
+            )
     if args.scheduler is not None:
         probe_scheduler(args.scheduler)  # before anything is written
     try:
