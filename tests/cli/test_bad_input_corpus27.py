@@ -1,4 +1,4 @@
-"""Issue 27's corpus of hostile and tired-user inputs, each one line with the right key.
+"""A second corpus of hostile and tired-user inputs, each one line with the right key.
 
 Every case failed on the code before the fix: a traceback, a hang, a wrong key blamed,
 library noise on stderr or files written where they should not be. Runs in-process

@@ -1,4 +1,4 @@
-"""Size estimates made before a run (issue 27): one line naming the key, from the sizes alone.
+"""Size estimates made before a run: one line naming the key, from the sizes alone.
 
 The figures are checked against hand counts of what the code allocates (dense arrays of
 known shapes), and the refusals against the machine size passed in explicitly.
