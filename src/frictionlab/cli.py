@@ -26,6 +26,7 @@ COMMANDS: tuple[str, ...] = (
     "example",
     "bench",
     "warmup",
+    "export",
 )
 
 EXIT_BAD_INPUT = 2

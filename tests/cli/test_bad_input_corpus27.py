@@ -316,7 +316,7 @@ def test_calibration_steps_are_refused_naming_the_key(
 
 def test_the_calibration_example_passes_its_size_check(tmp_path: Path) -> None:
     from frictionlab.app.budget import check_calibration
-    from frictionlab.io.calibration_config import load_calibration
+    from frictionlab.schema.calibrate import load_calibrate as load_calibration
 
     check_calibration(load_calibration(_calibration(tmp_path, "max_step = 5.0e-6")))
 

@@ -15,8 +15,8 @@ import frictionlab.io
 #: frictionlab modules io/ may import besides itself: errors, the version, table helpers.
 ALLOWED = ("frictionlab.io", "frictionlab.errors", "frictionlab._version", "frictionlab._frames")
 
-#: The input parsers still in io/ while they move to frictionlab.schema (issue 21 item 1):
-#: they build the physics' validated objects. Remove each entry when its module leaves io/.
+#: The old names of the input parsers, kept for one release as re-exports of
+#: frictionlab.schema (the parsers themselves live there). Remove them with the shims.
 PARSERS_MOVING = frozenset(
     {"scenario", "roughness_scenario", "bridge_scenario", "contact_scenario", "calibration_config"}
 )

@@ -41,14 +41,14 @@ def test_set_overrides_go_through_the_declarations() -> None:
     import pytest
 
     from frictionlab.errors import InputError
-    from frictionlab.schema.calibrate import CALIBRATE
+    from frictionlab.schema.calibrate import CALIBRATE_FILE
     from frictionlab.schema.core import check_overrides
-    from frictionlab.schema.scenario import SCENARIO
+    from frictionlab.schema.scenario import SCENARIO_FILE
 
-    check_overrides(SCENARIO, ["law.mu_s=0.6", "program.2.steps=50", "machine.mass=1"])
-    check_overrides(CALIBRATE, ["fit.bounds.mu_s=[0.1, 1.0]", "data.1.initial.F=0.5"])
+    check_overrides(SCENARIO_FILE, ["law.mu_s=0.6", "program.2.steps=50", "machine.mass=1"])
+    check_overrides(CALIBRATE_FILE, ["fit.bounds.mu_s=[0.1, 1.0]", "data.1.initial.F=0.5"])
     with pytest.raises(InputError, match=r"--set law.muk=1: unknown key \[law\].muk \(did you "
                        r"mean 'mu_k'\?\)"):  # fmt: skip
-        check_overrides(SCENARIO, ["law.muk=1"])
+        check_overrides(SCENARIO_FILE, ["law.muk=1"])
     with pytest.raises(InputError, match=r"unknown key \[\[program\]\] #2.velocty"):
-        check_overrides(SCENARIO, ["program.2.velocty=1"])
+        check_overrides(SCENARIO_FILE, ["program.2.velocty=1"])

@@ -36,11 +36,11 @@ from frictionlab.bridge import (
 from frictionlab.driver import History
 from frictionlab.errors import FrictionlabError, InputError, ParameterError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
-from frictionlab.io.bridge_scenario import BridgeScenario
 from frictionlab.io.config import format_toml
-from frictionlab.io.scenario import law_table, parse_scenario
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.lattice import FrictionPolar, friction_polar, merge_polars
+from frictionlab.schema.bridge import BridgeScenario
+from frictionlab.schema.scenario import law_table, parse_scenario
 from frictionlab.subloading import SubloadingParams
 
 __all__ = ["BRIDGE", "FILES", "BridgeRun", "run_bridge", "write_bridge"]
@@ -361,12 +361,9 @@ class Bridge:
     aliases: tuple[str, ...] = ("bridge.json",)
 
     def parse(self, args: argparse.Namespace, out: Path) -> tuple[BridgeScenario, Path]:
-        from frictionlab.io.bridge_scenario import parse_bridge_scenario
-        from frictionlab.io.config import apply_overrides, load_toml
+        from frictionlab.schema.bridge import load_bridge
 
-        path = Path(args.scenario)
-        data = apply_overrides(load_toml(path), args.set)
-        return parse_bridge_scenario(data, path.parent), path
+        return load_bridge(args.scenario, args.set), Path(args.scenario)
 
     def run(
         self, job: tuple[BridgeScenario, Path], progress: ProgressFactory, staging: Path

@@ -28,11 +28,11 @@ from frictionlab.calibration import (
     Profile,
 )
 from frictionlab.io.atomic import write_text_atomic
-from frictionlab.io.calibration_config import CalibrationConfig
 from frictionlab.io.config import format_toml
 from frictionlab.io.report import Report, Section, format_value
-from frictionlab.io.scenario import law_table
 from frictionlab.io.tables import write_csv_atomic
+from frictionlab.schema.calibrate import CalibrationConfig
+from frictionlab.schema.scenario import law_table
 
 __all__ = ["CALIBRATE", "CalibrationRun", "identifiability", "parameter_unit", "write_calibration"]
 
@@ -287,9 +287,9 @@ class Calibrate:
 
     def parse(self, args: argparse.Namespace, out: Path) -> tuple[CalibrationConfig, Path]:
         from frictionlab.app.budget import check_calibration
-        from frictionlab.io.calibration_config import load_calibration
+        from frictionlab.schema.calibrate import load_calibrate
 
-        cfg = load_calibration(args.config, args.set)
+        cfg = load_calibrate(args.config, args.set)
         check_calibration(cfg)  # memory and time, before the fit starts
         return cfg, Path(args.config)
 

@@ -21,8 +21,8 @@ from frictionlab._version import __version__
 from frictionlab.app.outputs import write_outputs
 from frictionlab.contact.history import ContactHistory, front_arrival, slip_front
 from frictionlab.driver.simulate import status_labels
-from frictionlab.io.contact_scenario import ContactScenario
 from frictionlab.io.tables import write_csv_atomic
+from frictionlab.schema.contact import ContactScenario
 
 __all__ = ["CONTACT", "contact_summary", "run_contact_scenario", "write_contact_results"]
 
@@ -190,9 +190,9 @@ class Contact:
     def parse(self, args: argparse.Namespace, out: Path) -> ContactScenario:
         from frictionlab.app.budget import check_contact
         from frictionlab.contact._fem import require_skfem
-        from frictionlab.io.contact_scenario import load_contact_scenario
+        from frictionlab.schema.contact import load_contact
 
-        scenario = load_contact_scenario(args.scenario, args.set)  # every input check is here
+        scenario = load_contact(args.scenario, args.set)  # every input check is here
         check_contact(scenario)  # the solver's memory and time, before meshing
         require_skfem()
         return scenario

@@ -1,6 +1,6 @@
 """The roughness workflow (``frictionlab roughness SCENARIO.toml --out DIR``): mu(beta).
 
-Reads a scenario (see :mod:`frictionlab.io.roughness_scenario`), runs the lattice-spring
+Reads a scenario (see :mod:`frictionlab.schema.roughness`), runs the lattice-spring
 model over the requested sliding directions and writes, each file atomically and only
 after everything has been computed and rendered:
 
@@ -13,7 +13,7 @@ after everything has been computed and rendered:
   ``plot_step_deg`` are computed for it unless ``plot_full_circle = false``), and both
   surfaces.
 
-Optional tables of the scenario add (see :mod:`frictionlab.io.roughness_scenario`):
+Optional tables of the scenario add (see :mod:`frictionlab.schema.roughness`):
 
 * ``[adhesion]``: ``adhesion.csv`` (one row per load and direction: tangential force,
   mu_compressed, mu_apparent (Eq 22; an empty field at L = 0 with
@@ -60,8 +60,7 @@ from frictionlab._version import __version__
 from frictionlab.app.budget import check_roughness
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
-from frictionlab.io.config import apply_overrides, load_toml
-from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
+from frictionlab.io.config import load_toml
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import wedge_friction
@@ -84,6 +83,8 @@ from frictionlab.roughness.lattice import (
 from frictionlab.roughness.multiscale import MultiscaleResult, multiscale_friction
 from frictionlab.roughness.surface import Surface
 from frictionlab.roughness.wear import WearHistory, wear_history
+from frictionlab.schema.core import override
+from frictionlab.schema.roughness import ROUGHNESS_FILE, RoughnessScenario, parse_roughness
 
 __all__ = ["ROUGHNESS", "RoughnessJob", "RoughnessRun"]
 
@@ -115,8 +116,8 @@ class Roughness:
 
     def parse(self, args: argparse.Namespace, out: Path) -> RoughnessJob:
         path = Path(args.scenario)
-        data = apply_overrides(load_toml(path), args.set)
-        scenario = parse_roughness_scenario(data, path.parent)
+        data = override(ROUGHNESS_FILE, load_toml(path), args.set)
+        scenario = parse_roughness(data, base_dir=path.parent, source=str(path))
         check_roughness(scenario)  # the lattice's memory and time, before the run
         if not args.quiet:
             for text in scenario.warnings:

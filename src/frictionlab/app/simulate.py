@@ -1,6 +1,6 @@
 """The simulate workflow: a scenario file -> the driver -> history.csv, points.csv, plots.
 
-:func:`run_scenario` runs a parsed :class:`~frictionlab.io.scenario.Scenario`;
+:func:`run_scenario` runs a parsed :class:`~frictionlab.schema.scenario.Scenario`;
 :data:`SIMULATE` is the workflow ``frictionlab simulate`` runs
 (:func:`frictionlab.commands._pipeline.run_command`); :func:`write_results` writes a run's
 files and summary.json the same way for the demo.
@@ -21,7 +21,7 @@ from frictionlab.driver import History, simulate, simulate_spring_slider
 from frictionlab.driver.healing import Healing, healing_analysis
 from frictionlab.driver.recorder import RowSink
 from frictionlab.driver.simulate import ProgressCallback
-from frictionlab.io.scenario import Scenario
+from frictionlab.schema.scenario import Scenario
 
 __all__ = ["SIMULATE", "SimulateRun", "run_scenario", "write_results"]
 
@@ -75,7 +75,7 @@ class Simulate:
 
     def parse(self, args: argparse.Namespace, out: Path) -> Scenario:
         from frictionlab.app.budget import check_output_space
-        from frictionlab.io.scenario import load_scenario
+        from frictionlab.schema.scenario import load_scenario
 
         scenario = load_scenario(args.scenario, args.set)  # every input check happens here
         if scenario.estimate is not None:  # and the output's size against the free disk space

@@ -37,8 +37,8 @@ from frictionlab.driver.table import (
 )
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import atomic_path
-from frictionlab.io.scenario import OutputOptions, Scenario
 from frictionlab.io.tables import format_csv_bytes, write_csv_atomic
+from frictionlab.schema.scenario import OutputOptions, Scenario
 
 __all__ = [
     "HISTORY_UNITS",

@@ -35,6 +35,7 @@ from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
 from frictionlab.io.inputs import read_input_bytes
 from frictionlab.io.output_set import check_out, lock_out
+from frictionlab.schema.sweep import SweepSpec, parse_sweep
 from frictionlab.sweep.cases import check_key, format_overrides, override_strings
 from frictionlab.sweep.executors import probe_scheduler, run_tasks
 from frictionlab.sweep.figures import summary_figures
@@ -45,7 +46,7 @@ from frictionlab.sweep.ledger import (
     read_record,
     write_case,
 )
-from frictionlab.sweep.spec import SweepSpec, detect_command, named_files, parse_sweep
+from frictionlab.sweep.spec import detect_command, named_files
 from frictionlab.sweep.table import format_table, sweep_table
 
 #: The sweep's table, also the mark of a sweep's folder.
@@ -136,7 +137,7 @@ def load_spec(path: Path, plots: bool = True) -> tuple[SweepSpec, str, list[Task
     Returns the parsed sweep (:class:`SweepSpec`), the command of its base scenario and the
     tasks; nothing runs and nothing is written.
     """
-    spec = parse_sweep(load_toml(path), path.parent)
+    spec = parse_sweep(load_toml(path), base_dir=path.parent, source=str(path))
     base_data = load_toml(spec.base)
     command = detect_command(base_data, spec.command)
     return spec, command, _validate(spec, command, base_data, plots)
@@ -144,8 +145,8 @@ def load_spec(path: Path, plots: bool = True) -> tuple[SweepSpec, str, list[Task
 
 def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) -> list[Task]:
     """Check every case's scenario (nothing runs): bad input names the case and the key."""
-    from frictionlab.io.roughness_scenario import parse_roughness_scenario
-    from frictionlab.io.scenario import parse_scenario
+    from frictionlab.schema.roughness import parse_roughness
+    from frictionlab.schema.scenario import parse_scenario
 
     tasks = []
     contents: dict[Path, bytes] = {}
@@ -169,7 +170,9 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
             if command == "simulate":
                 parse_scenario(data, base_dir=spec.base.parent, source=str(spec.base))
             else:
-                check_roughness(parse_roughness_scenario(data, spec.base.parent))
+                check_roughness(
+                    parse_roughness(data, base_dir=spec.base.parent, source=str(spec.base))
+                )
         except (InputError, ParameterError, ValidityError) as exc:
             raise InputError(f"{where}: {exc}") from None
         # the base and the files it names travel with the task (relative names, as written,

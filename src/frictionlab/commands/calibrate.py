@@ -1,7 +1,7 @@
 """``frictionlab calibrate CONFIG.toml --out DIR``: fit the law to tribometer curves.
 
 Reads the starting law, the fitted parameters and the measured curves with their
-programmes (:mod:`frictionlab.io.calibration_config`), fits them
+programmes (:mod:`frictionlab.schema.calibrate`), fits them
 (:func:`frictionlab.calibration.fit_law`), profiles the poorly identified parameters and
 writes ``fitted.toml``, ``summary.json`` (``fit.json``: a deprecated copy), ``curves.csv``,
 the figures and ``report.html``. The workflow is :mod:`frictionlab.app.calibrate`.

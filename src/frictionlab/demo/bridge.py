@@ -23,10 +23,9 @@ from frictionlab.app.simulate import run_scenario, write_results
 from frictionlab.demo import DemoContext
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_json_atomic, write_text_atomic
-from frictionlab.io.bridge_scenario import parse_bridge_scenario
-from frictionlab.io.config import load_toml
 from frictionlab.io.report import Section, format_value
-from frictionlab.io.scenario import load_scenario
+from frictionlab.schema.bridge import load_bridge
+from frictionlab.schema.scenario import load_scenario
 
 __all__ = ["BRIDGE_SECTIONS", "bridge_section", "bundled_bridge_scenario"]
 
@@ -65,7 +64,7 @@ def bridge_section(ctx: DemoContext) -> Section:
     out = ctx.out_dir / rel
     with bundled_bridge_scenario("ratchet") as path:
         text = path.read_text(encoding="utf-8")
-        scenario = parse_bridge_scenario(load_toml(path), path.parent)
+        scenario = load_bridge(path)
         run = run_bridge(scenario, path, ctx.progress)
     if not run.check_passed:
         raise FrictionlabError(

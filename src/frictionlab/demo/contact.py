@@ -33,7 +33,7 @@ def contact_section(ctx: DemoContext) -> Section:
     """The law in a finite-element contact model: precursor slip at the trailing edge"""
     from frictionlab.app.contact import run_contact_scenario, write_contact_results
     from frictionlab.contact import front_arrival, slip_front
-    from frictionlab.io.contact_scenario import load_contact_scenario
+    from frictionlab.schema.contact import load_contact as load_contact_scenario
 
     rel = "contact"
     out = ctx.out_dir / rel
@@ -104,7 +104,7 @@ def contact_section(ctx: DemoContext) -> Section:
 
 
 def _parameters(scenario: object) -> list[tuple[str, str, str]]:
-    from frictionlab.io.contact_scenario import ContactScenario
+    from frictionlab.schema.contact import ContactScenario
 
     assert isinstance(scenario, ContactScenario)
     b = scenario.block
@@ -121,7 +121,7 @@ def _parameters(scenario: object) -> list[tuple[str, str, str]]:
 
 def _law_rows(scenario: object) -> list[tuple[str, str, str]]:
     """The contact law's rows (the report compares them with the first law table)."""
-    from frictionlab.io.contact_scenario import ContactScenario
+    from frictionlab.schema.contact import ContactScenario
 
     assert isinstance(scenario, ContactScenario)
     p = scenario.params

@@ -26,7 +26,6 @@ from frictionlab.driver import (
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
 from frictionlab.io.report import Section, format_value
-from frictionlab.io.scenario import Scenario, load_scenario
 from frictionlab.io.tables import write_csv_atomic
 from frictionlab.plotting.law import (
     plot_friction,
@@ -37,6 +36,7 @@ from frictionlab.plotting.law import (
     plot_steady_friction,
     save_figure,
 )
+from frictionlab.schema.scenario import Scenario, load_scenario
 from frictionlab.subloading import (
     Status,
     friction_coefficient_on_yield,

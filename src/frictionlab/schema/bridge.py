@@ -22,7 +22,7 @@ from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, pa
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, initial_state
 
-__all__ = ["BRIDGE", "BridgeOptions", "BridgeScenario", "load_bridge", "parse_bridge"]
+__all__ = ["BRIDGE_FILE", "BridgeOptions", "BridgeScenario", "load_bridge", "parse_bridge"]
 
 #: Roughness tables the bridge does not use (its polar is the single-level kinetic one).
 NOT_USED = ("output", "adhesion", "wear", "hierarchy")
@@ -58,7 +58,7 @@ OPTIONS = Section("bridge", (
     Field("check_tolerance", NUMBER, "|simulated - closed form| allowed in f_t/f_n", "",
           1.0e-6, low=0, open="low", allowed="a tolerance > 0"),
 ), "what is fitted and how the fit is checked", "[bridge]")  # fmt: skip
-BRIDGE = Section("bridge", (
+BRIDGE_FILE = Section("bridge", (
     *_TOP,
     Field("multiscale", table=MULTISCALE),
     Field("law", table=LAW, doc="the law to fit (one value per key, no fitted keys)"),
@@ -103,13 +103,7 @@ def parse_bridge(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> BridgeScenario:
     """Build a :class:`BridgeScenario`; any problem is one InputError line naming the key."""
-    for key in NOT_USED:
-        if key in data:
-            raise InputError(
-                f"[{key}] is not used by frictionlab bridge (it fits the single-level kinetic "
-                "polar mu(beta)); allowed tables: [lower], [upper], [sliding], [lattice], "
-                "[law], [bridge]"
-            )
+    _refuse_not_used(data)
     rest = {k: v for k, v in data.items() if k not in ("law", "bridge")}
     if "law" not in data:
         raise InputError("missing required table [law] (the law to fit, as in simulate)")
@@ -168,7 +162,18 @@ def parse_bridge(
 
 def load_bridge(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> BridgeScenario:
     """Read, override (``section.key=value``) and validate a bridge scenario."""
-    return load(BRIDGE, parse_bridge, path, overrides)
+    _refuse_not_used({item.split(".", 1)[0].strip(): None for item in overrides})
+    return load(BRIDGE_FILE, parse_bridge, path, overrides)
+
+
+def _refuse_not_used(keys: Any) -> None:
+    for key in NOT_USED:
+        if key in keys:
+            raise InputError(
+                f"[{key}] is not used by frictionlab bridge (it fits the single-level kinetic "
+                "polar mu(beta)); allowed tables: [lower], [upper], [sliding], [lattice], "
+                "[law], [bridge]"
+            )
 
 
 def _options(data: Any) -> BridgeOptions:

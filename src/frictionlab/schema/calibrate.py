@@ -31,7 +31,7 @@ from frictionlab.schema.core import (
     Section,
     listed,
     load,
-)  # fmt: skip
+)
 from frictionlab.schema.scenario import (
     INITIAL,
     LAW,
@@ -39,10 +39,16 @@ from frictionlab.schema.scenario import (
     parse_initial_table,
     parse_law_table,
     parse_program_tables,
-)  # fmt: skip
+)
 from frictionlab.subloading import SubloadingParams
 
-__all__ = ["CALIBRATE", "END_TOLERANCE", "CalibrationConfig", "load_calibrate", "parse_calibrate"]
+__all__ = [
+    "CALIBRATE_FILE",
+    "END_TOLERANCE",
+    "CalibrationConfig",
+    "load_calibrate",
+    "parse_calibrate",
+]
 
 #: Data may run past the programme's end by this fraction of its duration (round-off of
 #: the lab's clock), and are then clipped to the end.
@@ -80,7 +86,7 @@ DATA = Section("data", (
     Field("initial", table=INITIAL, default=REQUIRED),
     Field("program", table=SEGMENT, many=True, default=REQUIRED),
 ), "one measured curve", "[[data]]")  # fmt: skip
-CALIBRATE = Section("calibrate", (
+CALIBRATE_FILE = Section("calibrate", (
     Field("title", STRING, "title of the run", "", ""),
     Field("description", STRING, "free text", "", ""),
     Field("law", table=LAW, default=REQUIRED),
@@ -172,8 +178,8 @@ def parse_calibrate(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> CalibrationConfig:
     """Validate a parsed calibration mapping (reads the data files; nothing is fitted)."""
-    root = CALIBRATE.table(data, "")
-    title = CALIBRATE.read(root)["title"]
+    root = CALIBRATE_FILE.table(data, "")
+    title = CALIBRATE_FILE.read(root)["title"]
     law = root.raw("law")
     fit = root.table("fit", required=True)
     data_tables = root.tables("data", required=True)
@@ -211,4 +217,4 @@ def load_calibrate(
     path: str | os.PathLike[str], overrides: Sequence[str] = ()
 ) -> CalibrationConfig:
     """Read, override (``section.key=value``) and validate a calibration file."""
-    return load(CALIBRATE, parse_calibrate, path, overrides)
+    return load(CALIBRATE_FILE, parse_calibrate, path, overrides)

@@ -30,7 +30,7 @@ from frictionlab.schema.core import (
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
-__all__ = ["CONTACT", "ContactScenario", "load_contact", "parse_contact"]
+__all__ = ["CONTACT_FILE", "ContactScenario", "load_contact", "parse_contact"]
 
 _B: dict[str, Any] = {"by": Block}
 BLOCK = Section("block", (
@@ -83,7 +83,7 @@ OUTPUT = Section("output", (
     Field("front_ratio", NUMBER, "|f_t| / F ratio that counts as slipping (the front)", "",
           0.99, low=0, high=1, open="low"),
 ), "what is reported", "[output]")  # fmt: skip
-CONTACT = Section("contact", (
+CONTACT_FILE = Section("contact", (
     Field("title", STRING, "title of the run", "", ""),
     Field("description", STRING, "free text", "", ""),
     Field("block", table=BLOCK, default=REQUIRED),
@@ -150,8 +150,8 @@ def parse_contact(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> ContactScenario:
     """Validate a parsed contact scenario mapping (nothing runs, nothing is meshed)."""
-    root = CONTACT.table(data, "")
-    top = CONTACT.read(root)
+    root = CONTACT_FILE.table(data, "")
+    top = CONTACT_FILE.read(root)
     block_t, law_t = root.table("block", required=True), root.table("law", required=True)
     normal_t = root.table("normal", required=True)
     program_ts = root.tables("program", required=True)
@@ -208,4 +208,4 @@ def parse_contact(
 
 def load_contact(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> ContactScenario:
     """Read, override (``section.key=value``) and validate a contact scenario file."""
-    return load(CONTACT, parse_contact, path, overrides)
+    return load(CONTACT_FILE, parse_contact, path, overrides)

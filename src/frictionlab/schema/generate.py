@@ -13,24 +13,24 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from frictionlab.schema.bridge import BRIDGE
-from frictionlab.schema.calibrate import CALIBRATE
-from frictionlab.schema.contact import CONTACT
+from frictionlab.schema.bridge import BRIDGE_FILE
+from frictionlab.schema.calibrate import CALIBRATE_FILE
+from frictionlab.schema.contact import CONTACT_FILE
 from frictionlab.schema.core import DEFS, OMIT, REQUIRED, Field, Section
-from frictionlab.schema.roughness import ROUGHNESS
-from frictionlab.schema.scenario import SCENARIO
-from frictionlab.schema.sweep import SWEEP
+from frictionlab.schema.roughness import ROUGHNESS_FILE
+from frictionlab.schema.scenario import SCENARIO_FILE
+from frictionlab.schema.sweep import SWEEP_FILE
 
 __all__ = ["INPUTS", "json_schema", "key_table", "main", "render"]
 
 #: input name -> (root declaration, title of its schema)
 INPUTS: dict[str, tuple[Section, str]] = {
-    "scenario": (SCENARIO, "frictionlab simulate scenario (TOML)"),
-    "roughness": (ROUGHNESS, "frictionlab roughness scenario (TOML)"),
-    "bridge": (BRIDGE, "frictionlab bridge scenario (TOML)"),
-    "calibrate": (CALIBRATE, "frictionlab calibrate configuration (TOML)"),
-    "contact": (CONTACT, "frictionlab contact scenario (TOML)"),
-    "sweep": (SWEEP, "frictionlab sweep file (TOML)"),
+    "scenario": (SCENARIO_FILE, "frictionlab simulate scenario (TOML)"),
+    "roughness": (ROUGHNESS_FILE, "frictionlab roughness scenario (TOML)"),
+    "bridge": (BRIDGE_FILE, "frictionlab bridge scenario (TOML)"),
+    "calibrate": (CALIBRATE_FILE, "frictionlab calibrate configuration (TOML)"),
+    "contact": (CONTACT_FILE, "frictionlab contact scenario (TOML)"),
+    "sweep": (SWEEP_FILE, "frictionlab sweep file (TOML)"),
 }
 _MARK = re.compile(r"(<!-- keys:([\w.]+) -->\n)(.*?)(<!-- /keys -->)", re.S)
 

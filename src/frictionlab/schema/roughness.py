@@ -28,7 +28,7 @@ from frictionlab.roughness.hierarchy import (
     HierarchyLevel,
     check_nested,
     self_similar_levels,
-)  # fmt: skip
+)
 from frictionlab.roughness.lattice import (
     CONTROLS,
     ENGINES,
@@ -37,7 +37,7 @@ from frictionlab.roughness.lattice import (
     TRAVEL_MODES,
     LatticeSettings,
     lattice_geometry,
-)  # fmt: skip
+)
 from frictionlab.roughness.surface import HeightMap, Surface
 from frictionlab.roughness.topography import DETREND_MODES, PERIODICITY_MODES, read_prepared
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
@@ -52,10 +52,10 @@ from frictionlab.schema.core import (
     Section,
     listed,
     load,
-)  # fmt: skip
+)
 
 __all__ = [
-    "ROUGHNESS", "SURFACE", "SURFACE_KINDS", "AdhesionOptions", "HierarchyOptions",
+    "ROUGHNESS_FILE", "SURFACE", "SURFACE_KINDS", "AdhesionOptions", "HierarchyOptions",
     "MultiscaleOptions", "RoughnessScenario", "WearOptions", "load_roughness",
     "parse_roughness",
 ]  # fmt: skip
@@ -292,7 +292,7 @@ _TOP = (
     Field("sliding", table=SLIDING, default=REQUIRED),
     Field("lattice", table=LATTICE),
 )
-ROUGHNESS = Section("roughness", (
+ROUGHNESS_FILE = Section("roughness", (
     *_TOP,
     Field("output", table=OUTPUT),
     Field("adhesion", table=ADHESION),
@@ -369,8 +369,8 @@ def parse_roughness(
 ) -> RoughnessScenario:
     """Build a :class:`RoughnessScenario`; any problem is one :class:`InputError` line."""
     base = Path(base_dir)
-    top = ROUGHNESS.table(data, "")
-    values = ROUGHNESS.read(top)
+    top = ROUGHNESS_FILE.table(data, "")
+    values = ROUGHNESS_FILE.read(top)
     notes: dict[str, Any] = {}
     lower = _surface(top.raw("lower"), "[lower]", base, notes, "lower")
     upper = _surface(top.raw("upper"), "[upper]", base, notes, "upper")
@@ -418,7 +418,7 @@ def load_roughness(
     path: str | os.PathLike[str], overrides: Sequence[str] = ()
 ) -> RoughnessScenario:
     """Read, override (``section.key=value``) and validate a roughness scenario."""
-    return load(ROUGHNESS, parse_roughness, path, overrides)
+    return load(ROUGHNESS_FILE, parse_roughness, path, overrides)
 
 
 def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:

@@ -12,9 +12,9 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -46,7 +46,7 @@ from frictionlab.schema.core import (
     listed,
     load,
     reraise,
-)  # fmt: skip
+)
 from frictionlab.subloading import SURFACES, SubloadingParams
 from frictionlab.subloading.params import (
     F_INTEGRATORS,
@@ -54,14 +54,11 @@ from frictionlab.subloading.params import (
     ORTHOTROPY_CONVENTIONS,
     RECOVERY_FORMS,
     U_LAWS,
-)  # fmt: skip
-
-if TYPE_CHECKING:
-    from frictionlab.io.scenario import Scenario
+)
 
 __all__ = [
-    "INITIAL", "LAW", "LAW_KEYS", "MACHINE", "OUTPUT", "RUN", "SCENARIO", "SEGMENT",
-    "MachineRun", "OutputOptions", "RunOptions", "law_table", "load_scenario",
+    "INITIAL", "LAW", "LAW_KEYS", "MACHINE", "OUTPUT", "RUN", "SCENARIO_FILE", "SEGMENT",
+    "MachineRun", "OutputOptions", "RunOptions", "Scenario", "law_table", "load_scenario",
     "parse_initial_table", "parse_law_table", "parse_program_tables", "parse_scenario",
 ]  # fmt: skip
 
@@ -177,7 +174,7 @@ MACHINE = Section("machine", (
     Field("max_step", NUMBER, "largest step (instead of steps)", "s", None, low=0, open="low"),
 ), "the stick-slip spring-slider (instead of [[program]])", "[machine]")  # fmt: skip
 
-SCENARIO = Section("scenario", (
+SCENARIO_FILE = Section("scenario", (
     Field("title", STRING, "title of the run", "", ""),
     Field("description", STRING, "free text", "", ""),
     Field("law", table=LAW, default=REQUIRED),
@@ -400,6 +397,31 @@ def _parse_machine(t: TomlTable) -> tuple[MachineRun, dict[str, Any]]:
 
 
 # --------------------------------------------------------------------------- scenario
+@dataclass(frozen=True)
+class Scenario:
+    """A validated scenario, ready to run (:func:`frictionlab.app.simulate.run_scenario`)."""
+
+    title: str
+    description: str
+    params: SubloadingParams
+    initial: InitialConditions
+    run_options: RunOptions
+    n_points: int
+    program: Program | None = None
+    machine: MachineRun | None = None
+    inputs: dict[str, Any] = field(default_factory=dict)
+    labels: tuple[str, ...] = ()
+    source: str = ""
+    output: OutputOptions = field(default_factory=OutputOptions)
+    #: The work estimate made while parsing (``None`` for a scenario built in Python).
+    estimate: RunEstimate | None = None
+
+    @property
+    def kind(self) -> str:
+        """``"program"`` or ``"spring_slider"``."""
+        return "program" if self.program is not None else "spring_slider"
+
+
 #: How per-point inputs are named in legends: key -> (symbol, unit).
 _LABEL_NAMES: dict[str, tuple[str, str]] = {
     "velocity": ("V", "m/s"), "distance": ("distance", "m"), "duration": ("t", "s"),
@@ -457,10 +479,8 @@ def parse_scenario(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> Scenario:
     """Validate a parsed scenario mapping and build a :class:`Scenario` (nothing runs)."""
-    from frictionlab.io.scenario import Scenario
-
-    root = SCENARIO.table(data, "")
-    top = SCENARIO.read(root)
+    root = SCENARIO_FILE.table(data, "")
+    top = SCENARIO_FILE.read(root)
     law, initial = root.table("law", required=True), root.table("initial", required=True)
     run, output_table, machine_table = (
         root.table("run"),
@@ -562,7 +582,7 @@ def _machine_steps(m: MachineRun) -> int:
 
 def load_scenario(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> Scenario:
     """Read, override (``section.key=value``) and validate a scenario file."""
-    return load(SCENARIO, parse_scenario, path, overrides)
+    return load(SCENARIO_FILE, parse_scenario, path, overrides)
 
 
 def _jsonable(obj: Any) -> Any:

@@ -20,14 +20,14 @@ from frictionlab.schema.core import INTEGER, REQUIRED, STRING, Field, Section, l
 if TYPE_CHECKING:
     from frictionlab.sweep.cases import Case
 
-__all__ = ["COMMANDS", "SWEEP", "SweepSpec", "load_sweep", "parse_sweep"]
+__all__ = ["COMMANDS", "SWEEP_FILE", "SweepSpec", "load_sweep", "parse_sweep"]
 
 #: The default most cases of a sweep (``max_cases``).
 MAX_CASES = 100_000
 #: Scenario commands a sweep can run.
 COMMANDS = ("simulate", "roughness")
 _FREE = Section("overrides", ())
-SWEEP = Section("sweep", (
+SWEEP_FILE = Section("sweep", (
     Field("title", STRING, "names the sweep in the plot", "", ""),
     Field("base", STRING, "the base scenario file (relative to the sweep file)", "", REQUIRED),
     Field("max_cases", INTEGER, "the most cases the sweep may hold (counted before a grid is "
@@ -66,9 +66,9 @@ def parse_sweep(
     )
 
     if not isinstance(data.get("base", ""), str) or not data.get("base"):
-        SWEEP.table(dict(data), "")  # an unknown key first
+        SWEEP_FILE.table(dict(data), "")  # an unknown key first
         raise InputError('base must name the base scenario file, e.g. base = "scenario.toml"')
-    values = SWEEP.read(dict(data), "")
+    values = SWEEP_FILE.read(dict(data), "")
     if ("grid" in data) == ("case" in data):
         raise InputError("a sweep file needs exactly one of [grid] or [[case]] tables")
     if "grid" in data:
@@ -87,7 +87,7 @@ def parse_sweep(
 
 def load_sweep(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> SweepSpec:
     """Read, override (``key=value``) and validate a sweep file."""
-    return load(SWEEP, parse_sweep, path, overrides)
+    return load(SWEEP_FILE, parse_sweep, path, overrides)
 
 
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:

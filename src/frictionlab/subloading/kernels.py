@@ -525,6 +525,8 @@ def _point(
         f0n = 0.0
         dfnn = alpha_n
         R_prev = R_old
+        F_path = F_old
+        dt_path = dt
     else:
         # Re-closing (theory.md, "Re-closing"): the contact forms as a virgin contact,
         # f_t = 0, at the normal traction of the end of the step; only the tangential
@@ -544,7 +546,12 @@ def _point(
         en2 = alpha_t * du2 * ds_c
         f0n = alpha_n
         dfnn = 0.0
-        R_prev = math.inf  # no memory: the virgin ratio is the start of the path
+        # No memory: the virgin ratio is the start of the path, never above the surface
+        # (R <= 1). The contact forms at the end of the step with the size the opening
+        # has recovered to, F_rec: the path starts there and recovers no further.
+        R_prev = 1.0
+        F_path = F_rec
+        dt_path = 0.0
     fh1t = f1t - fn_tr * b1
     fh2t = f2t - fn_tr * b2
     e1 = fh1t - h1
@@ -563,14 +570,14 @@ def _point(
     gRn = 0.0
     w0 = _norm(h1 / A1, h2 / A2)
     phi0, phi0_w, phi0_fn = potential(surface, tear_k, w0, fn0)
-    dF0 = _path_size_slope(F_old, 0.0, Fs, xi, n, dt, integ, rform)
+    dF0 = _path_size_slope(F_path, 0.0, Fs, xi, n, dt_path, integ, rform)
     r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, e1, e2, dfn, A1, A2,
-                            F_old, dF0)  # fmt: skip
-    dF1 = _path_size_slope(F_rec, 1.0, Fs, xi, n, dt, integ, rform)
+                            F_path, dF0)  # fmt: skip
+    dF1 = _path_size_slope(F_rec, 1.0, Fs, xi, n, dt_path, integ, rform)
     r_1, d_1 = _ratio_slope(phi_tr, phi_tr_w, phi_tr_fn, w_tr, fh1t, fh2t, e1, e2, dfn, A1,
                             A2, F_rec, dF1)  # fmt: skip
-    s_star = _path_minimum(h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old,
-                           Fs, Fk, xi, m, n, dt, integ, rform, r_0, d_0, r_1,
+    s_star = _path_minimum(h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_path,
+                           Fs, Fk, xi, m, n, dt_path, integ, rform, r_0, d_0, r_1,
                            d_1)  # fmt: skip
     if s_star == 0.0:
         rho = r_0
@@ -586,14 +593,24 @@ def _point(
     q2 = 0.0
     if 0.0 < s_star < 1.0:
         rho, _, F_s, phis_w, phis_fn, ws, q1, q2 = _path_ratio(
-            s_star, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_old, Fs, Fk,
-            xi, m, n, dt, integ, rform,
+            s_star, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_path, Fs, Fk,
+            xi, m, n, dt_path, integ, rform,
         )  # fmt: skip
+    # A re-closing path starts at the virgin point of the end-of-step normal traction: its
+    # ratio rho(0) depends on du_n, and so does R_start when the minimum is at s* = 0.
+    reclosing_start = fn <= 0.0 and s_star == 0.0
+    if reclosing_start:
+        F_s = F_path
+        phis_w = phi0_w
+        phis_fn = phi0_fn
+        ws = w0
+        q1 = h1
+        q2 = h2
     if rho < R_start:
         R_start = rho
-        if 0.0 < s_star < 1.0:
+        if 0.0 < s_star < 1.0 or reclosing_start:
             corrected = True
-            # envelope theorem: d rho(s*)/d du at fixed s* (rho'(s*) = 0)
+            # envelope theorem: d rho(s*)/d du at fixed s* (rho'(s*) = 0, or s* = 0 held)
             if ws > 0.0:
                 # q_i / ws first: |q_i / ws| <= A_i, while A_i^2 ws can underflow
                 u1 = q1 / ws / (A1 * A1)
