@@ -30,6 +30,7 @@ never stops a run.
 
 from __future__ import annotations
 
+import atexit
 import hashlib
 import os
 import re
@@ -209,6 +210,8 @@ def configure() -> str:
             break
         _writable(path)
         _held = hold(path)
+        if _held is not None:  # closed at exit: no "unclosed file" ResourceWarning
+            atexit.register(_held.close)
     if _held is not None:
         prune(path.parent, keep=path.name)
     config.CACHE_DIR = str(path)  # type: ignore[attr-defined]

@@ -115,3 +115,16 @@ def test_first_kernel_use_prunes_stale_siblings(tmp_path: Path) -> None:
     used = Path(_run({"XDG_CACHE_HOME": str(tmp_path), "FRICTIONLAB_CACHE_DIR": ""}, probe))
     assert used.parent == root and used.exists() and not stale.exists()
     assert (used / _compile_cache.LOCK_NAME).exists()
+
+
+def test_the_held_lock_file_is_closed_at_exit(tmp_path: Path) -> None:
+    """With every warning shown (-X dev), the lock file of the cache leaves no ResourceWarning."""
+    full = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    full["FRICTIONLAB_CACHE_DIR"] = str(tmp_path)
+    probe = "from frictionlab import _compile_cache as c; print(c.configure())"
+    done = subprocess.run(
+        [sys.executable, "-X", "dev", "-c", probe], env=full, capture_output=True, text=True,
+        check=True,
+    )  # fmt: skip
+    assert Path(done.stdout.strip()).parent == tmp_path
+    assert "ResourceWarning" not in done.stderr, done.stderr

@@ -133,3 +133,12 @@ def test_plotting_log_axes_have_three_labels(build, narrow: bool, tmp_path: Path
     for axis in axes:
         labels = labelled_ticks(axis)
         assert len(labels) >= 3, (build.__name__, axis.axis_name, labels)
+
+
+@pytest.mark.parametrize(("lo", "hi"), [(1e-300, 1e300), (5e-324, 1.7e308), (1e-10, 1e308)])
+def test_extreme_ranges_give_finite_ticks(lo: float, hi: float) -> None:
+    """Ranges near the float limits (a slide at 1e300 m/s) neither overflow nor lose labels."""
+    ticks = readable_tick_values(lo, hi)
+    assert np.all(np.isfinite(ticks)) and np.all(ticks > 0.0)
+    inside = ticks[(ticks >= lo) & (ticks <= hi)]
+    assert inside.size >= 3

@@ -25,13 +25,20 @@ import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from frictionlab.errors import InputError
 
 __all__ = [
     "RunEstimate",
+    "check_calibration",
+    "check_calibration_size",
+    "check_contact",
+    "check_contact_size",
     "check_grid_size",
+    "check_lattice_size",
     "check_output_space",
+    "check_roughness",
     "check_run_size",
     "largest",
     "physical_memory",
@@ -246,3 +253,174 @@ def check_grid_size(
         f"memory, beyond this machine ({_size(limit)} usable): allowed fewer points, or "
         f"{section}.allow_large = true to run it anyway"
     )
+
+
+def _refuse_beyond(what: str, need: float, seconds: float, memory: int | None, how: str) -> None:
+    """One line when ``need`` [bytes] passes half the memory or ``seconds`` :data:`TIME_LIMIT`."""
+    limit = MEMORY_FRACTION * (physical_memory() if memory is None else memory)
+    estimate = f"{what}: about {_size(need)} of memory and {_duration(seconds)} of computing"
+    if need > limit:
+        raise InputError(f"{estimate}, beyond this machine's memory ({_size(limit)} usable): {how}")
+    if seconds > TIME_LIMIT:
+        raise InputError(
+            f"{estimate}, beyond the {_duration(TIME_LIMIT)} a run may take unasked: {how}"
+        )
+
+
+#: Computing time per station and time sample of the lattice model [s] (upper end of
+#: docs/performance.md: 1.4e8 springs/s, two spring families per station).
+TIME_PER_STATION_SAMPLE = 2e-8
+#: Memory per time sample of one sliding direction [bytes]: the shifts, the per-sample
+#: results kept until the direction's average (Python tuples) and the work arrays.
+MEMORY_PER_SAMPLE = 600.0
+
+
+def check_lattice_size(
+    time_samples: int,
+    max_return_periods: int,
+    stations: int,
+    directions: int,
+    key: str = "[lattice].time_samples",
+    memory: int | None = None,
+) -> None:
+    """Raise InputError (one line, naming ``key``) for a lattice run out of reach.
+
+    A 2-D return path holds up to ``time_samples * max_return_periods`` samples per
+    direction; each sample visits every station.
+    """
+    samples = float(time_samples) * float(max(1, max_return_periods))
+    need = samples * MEMORY_PER_SAMPLE
+    seconds = samples * float(stations) * float(directions) * TIME_PER_STATION_SAMPLE
+    _refuse_beyond(
+        f"{key} = {time_samples} makes up to {samples:.4g} samples x {stations} stations x "
+        f"{directions} direction(s)",
+        need, seconds, memory, f"allowed fewer {key.rsplit('.', 1)[-1]} or stations",
+    )  # fmt: skip
+
+
+def check_calibration_size(
+    step_counts: Sequence[tuple[int, str]],
+    parameters: int,
+    max_evaluations: int,
+    profile_runs: int,
+    memory: int | None = None,
+) -> None:
+    """Raise InputError (one line) for a calibration out of reach before it starts.
+
+    ``step_counts``: the steps of every segment of every curve with its key; the fit runs
+    every curve up to ``max_evaluations * (parameters + 2)`` times (the model and its
+    finite-difference Jacobian) and the profiles ``profile_runs`` times more. Each run
+    keeps its rows in memory (:data:`MEMORY_PER_POINT_ROW` per step).
+    """
+    total = float(sum(s for s, _ in step_counts))
+    steps, key = max(step_counts, key=lambda sk: sk[0])
+    runs = float(max_evaluations) * (parameters + 2) + float(profile_runs)
+    need = MEMORY_PER_POINT + (total + 1.0) * MEMORY_PER_POINT_ROW
+    seconds = runs * total * (TIME_PER_POINT_STEP + TIME_PER_STEP)
+    _refuse_beyond(
+        f"{key} makes {steps:.4g} steps ({total:.4g} over all curves), run up to {runs:.4g} "
+        "times by the fit and its profiles",
+        need, seconds, memory,
+        "allowed fewer steps (a larger max_step), fewer [fit].max_evaluations or "
+        "[fit].profile_points",
+    )  # fmt: skip
+
+
+#: Float64 entries of SuperLU's factors per free dof of a 2-D mesh, and the factor of
+#: ``n**(1/3)`` for a 3-D one (nested-dissection fill; scipy's COLAMD ordering is near it).
+LU_FILL_2D = 60.0
+LU_FILL_3D = 25.0
+#: Bytes per factor entry (value and index) and the machine's dense rate [flop/s]
+#: (a low figure for a shared machine).
+LU_BYTES_PER_ENTRY = 12.0
+DENSE_FLOPS = 5e9
+#: Newton iterations per step assumed by the time estimate.
+NEWTON_PER_STEP = 4.0
+
+
+def contact_solver_estimate(free_dofs: int, contact_dofs: int, dim: int) -> tuple[float, float]:
+    """Memory [bytes] and time per Newton solve [s] of the contact model's linear solver.
+
+    The solver (:mod:`frictionlab.contact.linear`) factorises the elastic matrix once
+    (sparse LU) and keeps ``Z = K0^{-1} P^T``: a dense (free dofs x contact dofs) array,
+    with its identity source of the same size, and dense (contact x contact) matrices;
+    each solve is one back-substitution, a product with ``Z`` and a dense contact solve.
+    """
+    n, m = float(free_dofs), float(contact_dofs)
+    fill = LU_FILL_2D if dim == 2 else LU_FILL_3D * n ** (1.0 / 3.0)
+    lu = n * fill
+    need = lu * LU_BYTES_PER_ENTRY + 2.0 * 8.0 * n * m + 3.0 * 8.0 * m * m
+    per_solve = (2.0 * lu + 2.0 * n * m + m**3 / 3.0) / DENSE_FLOPS
+    return need, per_solve
+
+
+def check_contact_size(
+    nodes: int,
+    contact_nodes: int,
+    dim: int,
+    steps: int,
+    key: str = "[block].element_size",
+    memory: int | None = None,
+) -> None:
+    """Raise InputError (one line, naming ``key``) when the contact solver is out of reach.
+
+    ``nodes``: the mesh's nodes; ``contact_nodes``: those on the contact face; ``steps``:
+    the steps of the normal stage and the programme (each ~:data:`NEWTON_PER_STEP` solves).
+    """
+    need, per_solve = contact_solver_estimate(nodes * dim, contact_nodes * dim, dim)
+    # factorising costs about as much as a few solves; the Z columns one solve each
+    seconds = per_solve * (NEWTON_PER_STEP * steps) + 2.0 * float(contact_nodes * dim) * (
+        float(nodes * dim) * (LU_FILL_2D if dim == 2 else LU_FILL_3D) / DENSE_FLOPS
+    )
+    _refuse_beyond(
+        f"{key} makes a {dim}-D mesh of {nodes:.4g} nodes with {contact_nodes:.4g} on the "
+        f"contact face (dense contact matrices of {contact_nodes * dim:.4g} columns)",
+        need, seconds, memory, "allowed a larger element_size or a smaller block",
+    )  # fmt: skip
+
+
+# --------------------------------------------- the estimates of each workflow's parsed input
+
+#: Function evaluations of one profile point (frictionlab.calibration.profile's max_nfev).
+PROFILE_EVALUATIONS = 30
+
+
+def check_calibration(cfg: Any, memory: int | None = None) -> None:
+    """:func:`check_calibration_size` of a parsed calibration file (``CalibrationConfig``)."""
+    from frictionlab.driver.program import plan_program
+
+    counts: list[tuple[int, str]] = []
+    for k, curve in enumerate(cfg.curves, start=1):
+        for j, (plan, seg) in enumerate(
+            zip(plan_program(curve.program, 1), curve.program, strict=True), start=1
+        ):
+            key = "max_step" if getattr(seg, "max_step", None) is not None else "steps"
+            counts.append((int(plan.estimated_steps), f"[[data]] #{k}.program #{j}.{key}"))
+    p = len(cfg.names)
+    profiled = min(cfg.profile_max, p) if cfg.profile else 0
+    profile_runs = profiled * cfg.profile_points * PROFILE_EVALUATIONS * (p + 1)
+    check_calibration_size(counts, p, cfg.max_evaluations, profile_runs, memory)
+
+
+def check_roughness(scenario: Any, memory: int | None = None) -> None:
+    """:func:`check_lattice_size` of a parsed roughness scenario (``RoughnessScenario``)."""
+    from frictionlab.roughness.lattice import lattice_geometry
+
+    settings = scenario.settings
+    if not settings.time_samples:
+        return
+    geometry = lattice_geometry(scenario.lower, scenario.upper, settings.stations)
+    check_lattice_size(
+        settings.time_samples, settings.max_return_periods, geometry.n_stations,
+        len(scenario.beta_deg), memory=memory,
+    )  # fmt: skip
+
+
+def check_contact(scenario: Any, memory: int | None = None) -> None:
+    """:func:`check_contact_size` of a parsed contact scenario (``ContactScenario``)."""
+    cells = scenario.block.cells
+    nodes = int(math.prod(c + 1 for c in cells))
+    contact = int(math.prod(c + 1 for c in cells[:-1]))  # the bottom face
+    steps = scenario.normal.steps + sum(seg.steps for seg in scenario.program)
+    key = f"[block].element_size = {scenario.block.element_size:g} m"
+    check_contact_size(nodes, contact, scenario.block.dim, steps, key, memory=memory)

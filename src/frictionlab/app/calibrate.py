@@ -278,9 +278,12 @@ class Calibrate:
     aliases: tuple[str, ...] = ("fit.json",)
 
     def parse(self, args: argparse.Namespace, out: Path) -> tuple[CalibrationConfig, Path]:
+        from frictionlab.app.budget import check_calibration
         from frictionlab.schema.calibrate import load_calibrate
 
-        return load_calibrate(args.config, args.set), Path(args.config)
+        cfg = load_calibrate(args.config, args.set)
+        check_calibration(cfg)  # memory and time, before the fit starts
+        return cfg, Path(args.config)
 
     def run(self, job: Any, progress: ProgressFactory, staging: Path) -> CalibrationRun:
         from frictionlab.calibration import evaluate_columns, fit_law, profile_likelihood

@@ -190,10 +190,12 @@ class Contact:
         self._meshes: dict[int, Discretisation] = {}  # a run's mesh, for its field files
 
     def parse(self, args: argparse.Namespace, out: Path) -> ContactScenario:
+        from frictionlab.app.budget import check_contact
         from frictionlab.contact._fem import require_skfem
         from frictionlab.schema.contact import load_contact
 
         scenario = load_contact(args.scenario, args.set)  # every input check is here
+        check_contact(scenario)  # the solver's memory and time, before meshing
         require_skfem()
         return scenario
 

@@ -57,6 +57,7 @@ import numpy as np
 
 from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
+from frictionlab.app.budget import check_roughness
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
 from frictionlab.io.config import load_toml
@@ -119,6 +120,7 @@ class Roughness:
         path = Path(args.scenario)
         data = override(ROUGHNESS_FILE, load_toml(path), args.set)
         scenario = parse_roughness(data, base_dir=path.parent, source=str(path))
+        check_roughness(scenario)  # the lattice's memory and time, before the run
         if not args.quiet:
             for text in scenario.warnings:
                 print(f"frictionlab roughness: warning: {text}", file=sys.stderr)

@@ -10,25 +10,34 @@ the cases already done, so a killed sweep loses nothing and repeats nothing. A f
 case is recorded and the sweep goes on; ``DIR/sweep.csv`` (one row per case: parameters,
 summary figures, status, error) is rewritten atomically as cases finish, and
 ``DIR/sweep.png`` is drawn at the end. Exit 1 if any case failed, else 0.
+
+``DIR`` is checked like every command's ``--out`` (never the current, home or root
+directory) and must be new, empty or a sweep's folder (it holds ``sweep.csv``);
+``--overwrite`` starts any other folder afresh. A lock on ``DIR`` is held for the whole
+run, and nothing is written before every case is validated and the scheduler answered
+(:mod:`frictionlab.sweep.executors`).
 """
 
 from __future__ import annotations
 
 import argparse
-import os
+import shutil
 import sys
 import time
-from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
 from frictionlab._progress import ProgressFactory
-from frictionlab.app.sweep_task import Task, TaskResult, run_task
+from frictionlab.app.budget import check_roughness
+from frictionlab.app.sweep_task import Task
 from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
 from frictionlab.io.config import apply_overrides, load_toml
+from frictionlab.io.inputs import read_input_bytes
+from frictionlab.io.output_set import check_out, lock_out
 from frictionlab.schema.sweep import SweepSpec, parse_sweep
 from frictionlab.sweep.cases import check_key, format_overrides, override_strings
+from frictionlab.sweep.executors import probe_scheduler, run_tasks
 from frictionlab.sweep.figures import summary_figures
 from frictionlab.sweep.ledger import (
     inputs_sha256,
@@ -40,18 +49,42 @@ from frictionlab.sweep.ledger import (
 from frictionlab.sweep.spec import detect_command, named_files
 from frictionlab.sweep.table import format_table, sweep_table
 
+#: The sweep's table, also the mark of a sweep's folder.
+TABLE = "sweep.csv"
 #: Seconds between rewrites of sweep.csv while cases finish.
 TABLE_INTERVAL = 2.0
 
 
 def run_sweep(args: argparse.Namespace, progress_bar: ProgressFactory) -> int:
     """Run the sweep of ``frictionlab sweep`` (module docstring); returns the exit code."""
-    out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out} exists and is not a directory")
+    # a sweep's folder is marked by sweep.csv; anything else needs --overwrite
+    out = check_out(args.out, args.overwrite, markers=(TABLE,))
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers = {args.workers} is invalid: allowed an integer >= 1")
     spec, command, tasks = load_spec(args.sweep, plots=not args.no_plots)
+    where = out.resolve()
+    for source in (Path(args.sweep), spec.base):
+        if where == source.resolve().parent or where in source.resolve().parents:
+            raise InputError(
+                f"--out '{args.out}' holds the sweep's own input '{source}': allowed a "
+                "folder outside the inputs' folders"
+            )
+    if args.scheduler is not None:
+        probe_scheduler(args.scheduler)  # before anything is written
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+    with lock_out(out):  # held for the whole run: one sweep per folder at a time
+        if args.overwrite and out.is_dir() and not (out / TABLE).is_file():
+            shutil.rmtree(out)  # --overwrite: a folder that is not a sweep's starts afresh
+        return _run(args, progress_bar, out, spec, command, tasks)
+
+
+def _run(
+    args: argparse.Namespace, progress_bar: ProgressFactory, out: Path, spec: SweepSpec,
+    command: str, tasks: list[Task],
+) -> int:  # fmt: skip
     shas = {t.case_id: t.inputs_sha256 for t in tasks}
     cases_dir = out / "cases"
     records: dict[str, dict[str, Any]] = {}
@@ -71,7 +104,7 @@ def run_sweep(args: argparse.Namespace, progress_bar: ProgressFactory) -> int:
     started = time.perf_counter()
     with progress_bar(f"sweep {args.sweep.name}") as progress:
         progress(skipped, len(spec.cases))
-        for result in _execute(todo, args.scheduler, args.workers):
+        for result in run_tasks(todo, args.scheduler, args.workers):
             case = by_id[result.case_id]
             status = "ok" if result.ok else "failed"
             record = make_record(
@@ -85,7 +118,7 @@ def run_sweep(args: argparse.Namespace, progress_bar: ProgressFactory) -> int:
             if not result.ok and not args.quiet:
                 print(f"frictionlab sweep: case {case.id} failed: {result.error}", file=sys.stderr)
     writer.write(records, force=True)
-    paths = [out / "sweep.csv"]
+    paths = [out / TABLE]
     if not args.no_plots:
         paths.append(writer.plot())
     failed = [r for r in records.values() if r["status"] != "ok"]
@@ -121,9 +154,9 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
     def content(path: Path, where: str) -> bytes:
         if path not in contents:
             try:
-                contents[path] = path.read_bytes()
-            except OSError as exc:
-                raise InputError(f"{where}: cannot read '{path}': {exc.strerror or exc}") from None
+                contents[path] = read_input_bytes(path)
+            except InputError as exc:
+                raise InputError(f"{where}: {exc}") from None
         return contents[path]
 
     base_name = spec.base.name
@@ -137,7 +170,9 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
             if command == "simulate":
                 parse_scenario(data, base_dir=spec.base.parent, source=str(spec.base))
             else:
-                parse_roughness(data, base_dir=spec.base.parent, source=str(spec.base))
+                check_roughness(
+                    parse_roughness(data, base_dir=spec.base.parent, source=str(spec.base))
+                )
         except (InputError, ParameterError, ValidityError) as exc:
             raise InputError(f"{where}: {exc}") from None
         # the base and the files it names travel with the task (relative names, as written,
@@ -154,58 +189,6 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
                  tuple(files.items()), inputs_sha256(hashed))
         )  # fmt: skip
     return tasks
-
-
-def _execute(
-    tasks: Sequence[Task], scheduler: str | None, workers: int | None
-) -> Iterator[TaskResult]:
-    """Results in order of completion (a lost worker is a failed case, not a crash)."""
-    if not tasks:
-        return iter(())
-    if scheduler is not None:
-        return _on_dask(tasks, scheduler)
-    return _on_pool(tasks, workers or min(os.cpu_count() or 1, len(tasks)))
-
-
-def _on_pool(tasks: Sequence[Task], workers: int) -> Iterator[TaskResult]:
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-
-    context = multiprocessing.get_context("spawn")  # no fork of a threaded parent
-    pool = ProcessPoolExecutor(max_workers=workers, mp_context=context)
-    try:
-        futures = {pool.submit(run_task, task): task for task in tasks}
-        for future in as_completed(futures):
-            yield _result(futures[future], future.result)
-    finally:  # on Ctrl-C: drop the queued cases (a re-run does them), let running ones end
-        pool.shutdown(wait=True, cancel_futures=True)
-
-
-def _on_dask(tasks: Sequence[Task], address: str) -> Iterator[TaskResult]:
-    try:
-        from distributed import Client, as_completed
-    except ImportError:
-        raise InputError(
-            "--scheduler needs dask.distributed: pip install 'frictionlab[dask]'"
-        ) from None
-    try:
-        client = Client(address, timeout="10s")
-    except (OSError, TimeoutError, ValueError) as exc:
-        raise InputError(f"--scheduler {address}: cannot connect: {exc}") from None
-    try:
-        futures = client.map(run_task, list(tasks), key=[f"sweep-{t.case_id}" for t in tasks])
-        by_key = {f.key: t for f, t in zip(futures, tasks, strict=True)}
-        for future in as_completed(futures):
-            yield _result(by_key[future.key], future.result)
-    finally:
-        client.close()
-
-
-def _result(task: Task, get: Callable[[], TaskResult]) -> TaskResult:
-    try:
-        return get()
-    except Exception as exc:  # the worker died or the cluster lost the task
-        return TaskResult(task.case_id, False, f"worker lost: {type(exc).__name__}: {exc}", 0.0, {})
 
 
 class _TableWriter:
@@ -225,7 +208,7 @@ class _TableWriter:
             if record["status"] == "ok" and cid not in self.figures:
                 self.figures[cid] = self._figures(cid)
         self.table = sweep_table(self.spec.cases, self.spec.keys, records, self.figures)
-        write_text_atomic(self.out / "sweep.csv", format_table(self.table))
+        write_text_atomic(self.out / TABLE, format_table(self.table))
         self.last = now
 
     def _figures(self, cid: str) -> dict[str, float | None]:

@@ -12,6 +12,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from frictionlab.commands._output import add_overwrite
+
 HELP = "run a grid or list of scenarios (local processes or a Dask cluster), resumable"
 
 
@@ -29,6 +31,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )  # fmt: skip
     parser.add_argument("--no-plots", action="store_true", help="skip every PNG plot")
     parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    add_overwrite(parser)
     parser.set_defaults(handler=run)
 
 

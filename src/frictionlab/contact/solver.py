@@ -25,7 +25,12 @@ from frictionlab.contact.mesh import Discretisation, discretise
 from frictionlab.contact.newton import newton_step
 from frictionlab.contact.shapes import Base
 from frictionlab.errors import ParameterError
-from frictionlab.subloading import ContactState, SubloadingParams, check_snap_back
+from frictionlab.subloading import (
+    ContactState,
+    SubloadingParams,
+    check_normal_capacity,
+    check_snap_back,
+)
 
 __all__ = ["DRIVES", "SolverOptions", "SolverSettings", "check_memory", "run_contact"]
 
@@ -35,6 +40,10 @@ DRIVES: tuple[str, ...] = ("top", "rigid")
 
 #: ``progress(done, total)``: the time done, in thousandths of the programme's duration.
 ProgressCallback = Callable[[int, int], None]
+
+
+#: The most step cuts: 2**-60 of a step is below the float64 resolution of its time.
+MAX_CUTS = 60
 
 
 @dataclass(frozen=True)
@@ -48,7 +57,8 @@ class SolverOptions:
     max_iterations:
         Newton iterations per step attempt (default 25).
     max_cuts:
-        Halvings of a step below its nominal size before the run stops (default 12).
+        Halvings of a step below its nominal size before the run stops (default 12,
+        at most :data:`MAX_CUTS`).
     easy_iterations, growth:
         A step converged within ``easy_iterations`` (default 4) lets the next one grow by
         ``growth`` (default 2), up to the nominal size.
@@ -84,10 +94,16 @@ class SolverOptions:
             raise ParameterError("memory_limit", limit, "a number of bytes > 0")
         if not (isinstance(self.tolerance, float | int) and 1e-15 <= self.tolerance < 1e-2):
             raise ParameterError("tolerance", self.tolerance, "1e-15 <= tolerance < 1e-2")
-        for name, low in (("max_iterations", 1), ("max_cuts", 0), ("easy_iterations", 0)):
+        for name, low, high in (
+            ("max_iterations", 1, None),
+            ("max_cuts", 0, MAX_CUTS),
+            ("easy_iterations", 0, None),
+        ):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int) or value < low:
                 raise ParameterError(name, value, f"an integer >= {low}")
+            if high is not None and value > high:
+                raise ParameterError(name, value, f"an integer from {low} to {high}")
         if not (isinstance(self.growth, float | int) and 1.0 <= self.growth <= 10.0):
             raise ParameterError("growth", self.growth, "1 <= growth <= 10")
         if self.tangent not in TANGENTS:
@@ -325,6 +341,8 @@ def _run(
     )
     if not isinstance(params, Frictionless):
         check_snap_back(params, nominal_pressure)
+        if normal.control != "displacement":  # the mean pressure: some points carry more
+            check_normal_capacity(params, nominal_pressure)
 
     dim = disc.dim
     if dim == 2 and any(abs(s.end[1]) > 0.0 for s in stages[1:]):

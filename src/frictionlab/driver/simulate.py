@@ -368,11 +368,20 @@ def _count_work(work: dict[str, int], w: StepWork, completed: bool = True) -> No
     work["accuracy_unmet"] += int(w.accuracy_unmet)
 
 
+#: The deepest substepping: 2**-60 of a step is below the float64 resolution of its
+#: time (2**-52 relative), so deeper halvings only spend time.
+MAX_HALVINGS = 60
+
+
 def _check_accuracy(accuracy: float | None, max_halvings: int) -> None:
     if accuracy is not None and not (isinstance(accuracy, int | float) and accuracy > 0):
         raise ParameterError("accuracy", accuracy, "a number > 0 (or None: no accuracy control)")
-    if isinstance(max_halvings, bool) or not isinstance(max_halvings, int) or max_halvings < 0:
-        raise ParameterError("max_halvings", max_halvings, "an integer >= 0")
+    if (
+        isinstance(max_halvings, bool)
+        or not isinstance(max_halvings, int)
+        or not 0 <= max_halvings <= MAX_HALVINGS
+    ):
+        raise ParameterError("max_halvings", max_halvings, f"an integer from 0 to {MAX_HALVINGS}")
 
 
 @dataclass(frozen=True)

@@ -19,6 +19,7 @@ from typing import Any
 import tomli_w
 
 from frictionlab.errors import InputError
+from frictionlab.io.inputs import read_input_text
 
 __all__ = ["REQUIRED", "Table", "apply_overrides", "format_toml", "load_toml", "unknown_key"]
 
@@ -35,16 +36,15 @@ _TYPE_NAMES = {float: "a number", int: "an integer", str: "a string", bool: "tru
 
 
 def load_toml(path: str | os.PathLike[str]) -> dict[str, Any]:
-    """Read a TOML file; unreadable or malformed files raise :class:`InputError`."""
+    """Read a TOML file; unreadable or malformed files raise :class:`InputError`.
+
+    A FIFO, device or directory is refused by type; a byte-order mark is allowed
+    (:func:`frictionlab.io.inputs.decode_text`).
+    """
     p = Path(path)
+    text = read_input_text(p)
     try:
-        raw = p.read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read file '{p}': {exc.strerror or exc}") from None
-    try:
-        return tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError:
-        raise InputError(f"file '{p}' is not UTF-8 text") from None
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"file '{p}' is not valid TOML: {exc}") from None
 

@@ -38,11 +38,13 @@ from pathlib import Path
 
 from frictionlab.errors import FrictionlabError, InputError
 
-__all__ = ["SET_MARKERS", "OutputError", "OutputSet", "output_set"]
+__all__ = ["SET_MARKERS", "OutputError", "OutputSet", "check_out", "lock_out", "output_set"]
 
 #: Top-level files by which an existing directory is recognised as a frictionlab set
-#: (summary of simulate/roughness/contact, bridge, calibrate, and the demo's report).
-SET_MARKERS: tuple[str, ...] = ("summary.json", "bridge.json", "fit.json", "report.html")
+#: (summary of simulate/roughness/contact, bridge, calibrate, the demo's report, sweep).
+SET_MARKERS: tuple[str, ...] = (
+    "summary.json", "bridge.json", "fit.json", "report.html", "sweep.csv",
+)  # fmt: skip
 
 _AT_FDCWD = -100
 _RENAME_EXCHANGE = 2
@@ -74,11 +76,25 @@ def _dir_mode() -> int:
     return 0o777 & ~umask
 
 
-def check_out(out: str | os.PathLike[str], overwrite: bool = False) -> Path:
-    """Refuse an unusable ``--out`` with one line (InputError); return it as a Path."""
+def check_out(
+    out: str | os.PathLike[str], overwrite: bool = False, markers: tuple[str, ...] = SET_MARKERS
+) -> Path:
+    """Refuse an unusable ``--out`` with one line (InputError); return the path to write.
+
+    A non-empty directory is accepted when it holds one of ``markers`` at its top level
+    (or with ``overwrite``). A symbolic link is followed: the set is written where it
+    points (a link to nothing is refused).
+    """
     text = os.fspath(out)
     target = Path(text)
     shown = f"--out '{text}'"
+    if target.is_symlink():
+        if not target.exists():
+            raise InputError(
+                f"{shown} is a symbolic link to '{os.readlink(target)}', which does not "
+                "exist: allowed a directory or a link to one"
+            )
+        target = target.resolve()
     resolved = target.resolve()
     cwd = Path.cwd().resolve()
     if text.strip() == "" or resolved == cwd or resolved in cwd.parents:
@@ -95,7 +111,7 @@ def check_out(out: str | os.PathLike[str], overwrite: bool = False) -> Path:
             names = sorted(p.name for p in target.iterdir())
         except OSError as exc:
             raise InputError(f"cannot read {shown}: {exc.strerror or exc}") from None
-        if names and not any((target / m).is_file() for m in SET_MARKERS):
+        if names and not any((target / m).is_file() for m in markers):
             raise InputError(
                 f"{shown} holds files that are not a frictionlab output set (e.g. "
                 f"'{names[0]}'): allowed a new or empty directory, or pass --overwrite to "
@@ -105,8 +121,12 @@ def check_out(out: str | os.PathLike[str], overwrite: bool = False) -> Path:
 
 
 @contextlib.contextmanager
-def _lock(target: Path) -> Iterator[None]:
-    """Hold ``.NAME.lock`` beside ``target`` (flock; Unix only, a no-op elsewhere)."""
+def lock_out(target: Path) -> Iterator[None]:
+    """Hold ``.NAME.lock`` beside ``target`` (flock; Unix only, a no-op elsewhere).
+
+    A second holder is refused with :class:`InputError`; the kernel releases the lock
+    when the process dies.
+    """
     try:
         import fcntl
     except ImportError:  # pragma: no cover - Windows
@@ -191,7 +211,7 @@ def output_set(out: str | os.PathLike[str], overwrite: bool = False) -> Iterator
     target = check_out(out, overwrite)
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
-        lock = _lock(target)
+        lock = lock_out(target)
         lock.__enter__()
     except OSError as exc:
         raise InputError(f"cannot write to --out '{out}': {exc.strerror or exc}") from None

@@ -33,6 +33,7 @@ import numpy as np
 from frictionlab._frames import column_title, normalise_unit, split_title, to_dataframe
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.atomic import write_bytes_atomic
+from frictionlab.io.inputs import read_input_text
 
 __all__ = ["CsvTable", "format_csv", "format_csv_bytes", "read_csv", "write_csv_atomic"]
 
@@ -196,12 +197,7 @@ def read_csv(path: str | os.PathLike[str]) -> CsvTable:
     the file and the line.
     """
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read table '{p}': {exc.strerror or exc}") from None
-    except UnicodeDecodeError:
-        raise InputError(f"table '{p}' is not UTF-8 text") from None
+    text = read_input_text(p, "table")
     comments: list[str] = []
     units: dict[str, str] = {}
     body: list[tuple[int, list[str]]] = []

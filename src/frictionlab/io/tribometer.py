@@ -15,6 +15,7 @@ time not strictly increasing, a negative friction ratio.
 
 from __future__ import annotations
 
+import io
 import os
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -23,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from frictionlab.errors import InputError
+from frictionlab.io.inputs import read_input_text
 
 __all__ = [
     "MIN_SAMPLES",
@@ -95,13 +97,18 @@ def read_tribometer(
     mapping = {"time": "time", "slip": "slip", "friction_ratio": "friction_ratio"}
     mapping.update(columns or {})
     slip_required = bool(columns and "slip" in columns)
+    if not p.exists() and not p.is_symlink():
+        raise InputError(f"{where}: file not found")
     try:
-        header = pd.read_csv(p, comment="#", header=None, nrows=1, dtype=str)
-        frame = pd.read_csv(p, comment="#", dtype=str, skipinitialspace=True, keep_default_na=False)
-    except FileNotFoundError:
-        raise InputError(f"{where}: file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{where}: cannot read the file ({exc})") from None
+        text = read_input_text(p)
+    except InputError as exc:
+        raise InputError(f"{where}: {exc}") from None
+    try:
+        header = pd.read_csv(io.StringIO(text), comment="#", header=None, nrows=1, dtype=str)
+        frame = pd.read_csv(
+            io.StringIO(text), comment="#", dtype=str, skipinitialspace=True,
+            keep_default_na=False,
+        )  # fmt: skip
     except pd.errors.EmptyDataError:
         raise InputError(f"{where}: the file holds no table") from None
     except pd.errors.ParserError as exc:

@@ -35,6 +35,7 @@ def readable_tick_values(vmin: float, vmax: float, minimum: int = MIN_LABELS) ->
     first, last = math.floor(math.log10(lo)) - 1, math.ceil(math.log10(hi)) + 1
     for subs in _STEPS:
         ticks = np.array([float(f"{s:g}e{e}") for e in range(first, last + 1) for s in subs])
+        ticks = ticks[np.isfinite(ticks) & (ticks > 0.0)]  # 1e309 overflows, 1e-330 is 0
         inside = ticks[(ticks >= lo * (1 - 1e-12)) & (ticks <= hi * (1 + 1e-12))]
         if inside.size >= minimum:
             return ticks if subs != _STEPS[0] or inside.size < 12 else _thin(ticks, lo, hi)
@@ -52,7 +53,7 @@ def readable_tick_values(vmin: float, vmax: float, minimum: int = MIN_LABELS) ->
 
 def _thin(ticks: np.ndarray, lo: float, hi: float) -> np.ndarray:
     """Every k-th power of ten when many decades are in view (about 6 to 11 labels)."""
-    decades = math.log10(hi / lo)
+    decades = math.log10(hi) - math.log10(lo)  # hi / lo may overflow
     step = max(1, math.ceil(decades / 10))
     exps = np.round(np.log10(ticks)).astype(int)
     return ticks[exps % step == 0]

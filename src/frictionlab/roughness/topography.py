@@ -65,6 +65,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from frictionlab.errors import InputError, ParameterError
+from frictionlab.io.inputs import check_input_file
 from frictionlab.roughness.generators import from_array
 from frictionlab.roughness.surface import SampledHeightMap, SampledProfile
 
@@ -569,6 +570,7 @@ def read_prepared(
     from SurfaceTopography import open_topography
 
     name = os.fspath(path)
+    check_input_file(name, "surface file")  # a FIFO or device would block the reads below
     try:
         with open(name, "rb") as handle:
             digest = hashlib.file_digest(handle, "sha256").hexdigest()

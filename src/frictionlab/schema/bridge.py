@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient
+from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient, steady_distance
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.schema.core import INTEGER, NUMBER, STRING, Field, Section, listed, load
 from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, parse_roughness
@@ -69,6 +69,10 @@ BRIDGE_FILE = Section("bridge", (
 ), "A bridge scenario of `frictionlab bridge`: a roughness scenario whose kinetic polar "
    "mu(beta) is fitted by the subloading-friction [law].", extra={"required": ["mu0", "lower",
    "upper", "sliding", "law"]})  # fmt: skip
+
+
+#: The longest [bridge].distance, in relaxation lengths of the law (steady_distance).
+MAX_DISTANCE_LENGTHS = 1e6
 
 
 @dataclass(frozen=True)
@@ -144,6 +148,16 @@ def parse_bridge(
         raise InputError(
             f"[law].{exc} (at [bridge].normal_traction = {options.normal_traction:g} Pa)"
         ) from None
+    if options.distance is not None:
+        # steady after ~25 relaxation lengths (steady_distance); far beyond, one step's
+        # slip makes a trial traction the law's solve rejects, blaming the traction
+        longest = steady_distance(law, options.normal_traction, lengths=MAX_DISTANCE_LENGTHS)
+        if options.distance > longest:
+            raise InputError(
+                f"[bridge].distance = {options.distance:g} m is invalid: allowed at most "
+                f"{longest:.3g} m ({MAX_DISTANCE_LENGTHS:g} relaxation lengths of [law] at "
+                "[bridge].normal_traction; steady sliding needs about 25)"
+            )
     circle = np.arange(0.0, 360.0 - 1e-9, options.step_deg)
     extra = np.mod(roughness.beta_deg, 360.0)
     directions = np.unique(np.round(np.concatenate([circle, extra]), 9))

@@ -55,6 +55,8 @@ __all__ = [
 END_TOLERANCE = 1e-6
 
 _PAIR = listed(float, "number", 2)
+#: The most grid values of one likelihood profile (each is a fit of the other parameters).
+MAX_PROFILE_POINTS = 1001
 FIT = Section("fit", (
     Field("parameters", listed(str, "string"), "the [law] keys to fit (the rest stay fixed)",
           default=REQUIRED, choices=tuple(FITTABLE),
@@ -63,7 +65,8 @@ FIT = Section("fit", (
           json={"type": "object", "additionalProperties": _PAIR.json}),
     Field("max_evaluations", INTEGER, "least-squares function evaluations", "", 100, low=1),
     Field("profile", BOOL, "profile likelihood of poorly identified parameters", "", True),
-    Field("profile_points", INTEGER, "grid values per profile", "", 9, low=3),
+    Field("profile_points", INTEGER, "grid values per profile", "", 9, low=3,
+          high=MAX_PROFILE_POINTS),
     Field("profile_max", INTEGER, "profile at most this many (worst first)", "", 2, low=0),
 ), "what to fit", "[fit]")  # fmt: skip
 COLUMNS = Section(

@@ -33,7 +33,7 @@ from frictionlab.schema.core import (
     reraise,
 )
 from frictionlab.schema.scenario import LAW, parse_law_table
-from frictionlab.subloading import SubloadingParams, check_snap_back
+from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
 __all__ = ["CONTACT_FILE", "ContactScenario", "load_contact", "parse_contact"]
 
@@ -206,6 +206,43 @@ def _normal(t: Any) -> tuple[NormalLoad, dict[str, Any]]:
     return reraise("[normal]", lambda: NormalLoad(**echo)), echo
 
 
+def _check_load(
+    law: dict[str, Any], block: Block, params: SubloadingParams | Frictionless, normal: Any
+) -> None:
+    """Refuse, naming the key, a per-point law and a normal load no linear block can take."""
+    if isinstance(params, SubloadingParams) and params.per_point:
+        pairs = ("rotation", "orthotropy")  # one pair each, or per-point pairs
+        key = next(
+            (k for k, v in law.items()
+             if isinstance(v, list) and (k not in pairs or (v and isinstance(v[0], list)))),
+            "law",
+        )  # fmt: skip
+        raise InputError(
+            f"[law].{key} = {law.get(key)} is invalid: allowed one value (the contact model "
+            "has one interface law; per-point lists are for simulate)"
+        )
+    if normal.control == "pressure" and not normal.value < block.E:
+        raise InputError(
+            f"[normal].pressure = {normal.value:g} Pa is invalid: allowed a pressure below "
+            f"[block].E = {block.E:g} Pa (the linear-elastic block's strain stays below 1)"
+        )
+    if normal.control == "force" and not normal.value / _top_area(block) < block.E:
+        raise InputError(
+            f"[normal].force = {normal.value:g} N is invalid: allowed a mean pressure below "
+            f"[block].E = {block.E:g} Pa over the top face (the block's strain stays below 1)"
+        )
+    if normal.control == "displacement" and not normal.value < block.height:
+        raise InputError(
+            f"[normal].displacement = {normal.value:g} m is invalid: allowed less than "
+            f"[block].height = {block.height:g} m"
+        )
+
+
+def _top_area(block: Block) -> float:
+    """The loaded top face: m^2 in 3-D, m (per metre of depth) in 2-D."""
+    return block.width * (block.depth or 1.0)
+
+
 def parse_contact(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> ContactScenario:
@@ -242,14 +279,17 @@ def parse_contact(
         )
     if drive == "rigid" and control != "slide":
         raise InputError("[solver].drive = 'rigid' needs a displacement-controlled programme")
+    _check_load(law_t.mapping(), block, params, normal)
     if isinstance(params, SubloadingParams):
         if normal.control == "pressure":
             nominal = normal.value
         elif normal.control == "force":  # over the top face
-            nominal = normal.value / (block.width * (block.depth or 1.0))
+            nominal = normal.value / _top_area(block)
         else:
             nominal = normal.value * float(params.alpha_n)
         reraise("[law]", lambda: check_snap_back(params, nominal))
+        if normal.control != "displacement":  # the mean pressure: some points carry more
+            reraise("[law]", lambda: check_normal_capacity(params, nominal))
     reraise("[block]", lambda: check_memory(block, options))
     inputs = {
         "title": top["title"], "description": top["description"], "block": block_echo,

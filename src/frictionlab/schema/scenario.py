@@ -29,7 +29,7 @@ from frictionlab.driver import (
 )
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.recorder import Recording, RowSink
-from frictionlab.driver.simulate import count_points
+from frictionlab.driver.simulate import MAX_HALVINGS, count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
@@ -115,7 +115,8 @@ RUN = Section("run", (
           low=1),
     Field("accuracy", NUMBER, "error per step that the adaptive substepping keeps", "", None,
           low=0, open="low"),
-    Field("max_halvings", INTEGER, "deepest substepping (halvings of a step)", "", 10, low=0),
+    Field("max_halvings", INTEGER, "deepest substepping (halvings of a step)", "", 10, low=0,
+          high=MAX_HALVINGS),
     Field("allow_large", BOOL, "run past the memory/time estimate", "", False),
 ), "how the run is made", "[run]")  # fmt: skip
 

@@ -15,19 +15,23 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from frictionlab.errors import InputError
-from frictionlab.schema.core import REQUIRED, STRING, Field, Section, load
+from frictionlab.schema.core import INTEGER, REQUIRED, STRING, Field, Section, load
 
 if TYPE_CHECKING:
     from frictionlab.sweep.cases import Case
 
 __all__ = ["COMMANDS", "SWEEP_FILE", "SweepSpec", "load_sweep", "parse_sweep"]
 
+#: The default most cases of a sweep (``max_cases``).
+MAX_CASES = 100_000
 #: Scenario commands a sweep can run.
 COMMANDS = ("simulate", "roughness")
 _FREE = Section("overrides", ())
 SWEEP_FILE = Section("sweep", (
     Field("title", STRING, "names the sweep in the plot", "", ""),
     Field("base", STRING, "the base scenario file (relative to the sweep file)", "", REQUIRED),
+    Field("max_cases", INTEGER, "the most cases the sweep may hold (counted before a grid is "
+          "expanded)", "", MAX_CASES, low=1),
     Field("command", STRING, "when absent: simulate for a base with [law], roughness for one with "
           "[lower] or [sliding]", "", None, choices=COMMANDS),
     Field("grid", table=_FREE, doc='"section.key" = [values]: every combination is a case; '
@@ -55,7 +59,11 @@ def parse_sweep(
     data: Mapping[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> SweepSpec:
     """Validate a parsed sweep file and expand its cases."""
-    from frictionlab.sweep.cases import expand_grid, make_cases  # sweep/ imports this module
+    from frictionlab.sweep.cases import (  # sweep/ imports this module
+        check_case_count,
+        expand_grid,
+        make_cases,
+    )
 
     if not isinstance(data.get("base", ""), str) or not data.get("base"):
         SWEEP_FILE.table(dict(data), "")  # an unknown key first
@@ -66,8 +74,10 @@ def parse_sweep(
     if "grid" in data:
         grid = _grid(data["grid"])
         keys = tuple(grid)
-        overrides = expand_grid(grid)
+        overrides = expand_grid(grid, values["max_cases"])
     else:
+        if isinstance(data["case"], list):
+            check_case_count(len(data["case"]), "[[case]]", values["max_cases"])
         overrides = _case_list(data["case"])
         keys = tuple(dict.fromkeys(k for item in overrides for k in item))
     base = values["base"]

@@ -22,6 +22,7 @@ from frictionlab.subloading.params import SURFACES, SubloadingParams
 from frictionlab.subloading.return_map import Status, StepResult, update
 from frictionlab.subloading.state import (
     ContactState,
+    check_normal_capacity,
     check_snap_back,
     global_traction,
     initial_state,
@@ -43,6 +44,7 @@ __all__ = [
     "StepResult",
     "SubloadingParams",
     "U_function",
+    "check_normal_capacity",
     "check_snap_back",
     "friction_coefficient_on_yield",
     "g_function",

@@ -32,6 +32,7 @@ from frictionlab.subloading.surfaces import (
 
 __all__ = [
     "ContactState",
+    "check_normal_capacity",
     "check_snap_back",
     "global_traction",
     "initial_state",
@@ -195,6 +196,16 @@ def initial_state(
     traction = np.column_stack([ft, fn])
     R = ratio_of(params, traction, F0)
     if np.any(R > 1.0):
+        outside = R > 1.0
+        if not np.any(ft[outside]) and np.any(params.rotation):
+            # no tangential traction: the rotation alone put the start outside (Eq 79)
+            i = int(np.flatnonzero(outside)[0])
+            raise ParameterError(
+                "rotation",
+                np.asarray(params.rotation),
+                f"a rotation that keeps the initial traction inside the sliding-yield "
+                f"surface (with f_t = 0 and f_n = {fn[i]:.6g} Pa: R = {R[i]:.6g} > 1)",
+            )
         raise ParameterError("tangential_traction", ft, "inside the sliding-yield surface (R <= 1)")
     check_snap_back(params, fn)
     if frame is None:
@@ -250,6 +261,8 @@ def snap_back_violations(params: SubloadingParams, normal_traction: Any) -> list
 def _snap_back_failures(params: SubloadingParams, normal_traction: Any) -> dict[int, str]:
     """:func:`snap_back_violations` for the failing points only: point -> why (in order)."""
     fn = np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))
+    if fn.size == 1 and params.n_points > 1:  # one traction for every point of the law
+        fn = np.broadcast_to(fn, (params.n_points,))
     n = fn.shape[0]
     # shared values stay scalars (0-d): broadcast by the arithmetic, not N copies
     alpha_t, kappa, m, static, kinetic = (
@@ -338,16 +351,49 @@ def check_snap_back(
     traction in the message when it is not the law (e.g. a programme segment).
     """
     failures = _snap_back_failures(params, normal_traction)
-    n = int(np.size(normal_traction))
+    tractions = np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))
+    if tractions.size == 1:  # one traction for every point of the law
+        tractions = np.broadcast_to(tractions, (params.n_points,))
+    n = tractions.size
     for i, reason in failures.items():
         if reason:
             alpha_t = float(np.broadcast_to(params.alpha_t, (n,))[i])
             if field_name == "alpha_t":
                 raise ParameterError("alpha_t", alpha_t, reason)
-            fn = float(np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))[i])
+            fn = float(tractions[i])
             raise ParameterError(
                 field_name, fn, f"a normal traction at which alpha_t = {alpha_t:.6g} keeps {reason}"
             )
+
+
+def check_normal_capacity(
+    params: SubloadingParams, normal_traction: Any, field_name: str = "F_k"
+) -> None:
+    """Raise ParameterError when a closed surface softened to F_k cannot carry ``normal_traction``.
+
+    A closed surface ``f_n g(chi) = F`` (Eq 48, g >= g(0) = 1) holds no point with
+    ``f_n > F``, and sliding softens F toward F_k (Eq 25): a contact that slides under a
+    normal traction at or above F_k leaves the surface. The message blames ``F_k``, or
+    ``field_name`` when the traction is the input to blame. The cone has no such bound.
+    """
+    if params.is_cone:
+        return
+    fn = np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))
+    kinetic = np.broadcast_to(np.asarray(params.kinetic, dtype=np.float64), fn.shape)
+    over = np.flatnonzero(~(fn < kinetic))
+    if over.size == 0:
+        return
+    i = int(over[0])
+    if field_name == "F_k":
+        raise ParameterError(
+            "F_k",
+            float(kinetic[i]),
+            f"F_k > the normal traction {fn[i]:.6g} Pa: a closed surface softened to F_k "
+            "carries at most f_n = F_k",
+        )
+    raise ParameterError(
+        field_name, float(fn[i]), f"a normal traction below F_k = {kinetic[i]:.6g} Pa"
+    )
 
 
 def _check_rotation(name: str, Q: np.ndarray) -> None:

@@ -13,8 +13,18 @@ from typing import Any
 import tomli_w
 
 from frictionlab.errors import InputError
+from frictionlab.schema.sweep import MAX_CASES
 
-__all__ = ["LINK", "Case", "case_id", "check_key", "expand_grid", "override_strings"]
+__all__ = [
+    "LINK",
+    "MAX_CASES",
+    "Case",
+    "case_id",
+    "check_case_count",
+    "check_key",
+    "expand_grid",
+    "override_strings",
+]
 
 
 @dataclass(frozen=True)
@@ -36,11 +46,27 @@ def case_id(overrides: Mapping[str, Any]) -> str:
 LINK = "+"
 
 
-def expand_grid(grid: Mapping[str, Sequence[Any]]) -> list[dict[str, Any]]:
+def check_case_count(count: int, where: str, max_cases: int = MAX_CASES) -> None:
+    """Raise :class:`InputError` when ``count`` cases exceed ``max_cases`` (before expanding)."""
+    if count > max_cases:
+        raise InputError(
+            f"{where} makes {count:.6g} cases, more than max_cases = {max_cases}: allowed "
+            "fewer values, or a larger max_cases at the top of the sweep file"
+        )
+
+
+def expand_grid(
+    grid: Mapping[str, Sequence[Any]], max_cases: int = MAX_CASES
+) -> list[dict[str, Any]]:
     """Cartesian product of ``{key: [values]}``; the last key varies fastest.
 
-    A key ``"a.x+b.y"`` links keys: each value is given to all of them (one axis).
+    A key ``"a.x+b.y"`` links keys: each value is given to all of them (one axis). More
+    than ``max_cases`` cases raise :class:`InputError` before any is made.
     """
+    count = 1
+    for values in grid.values():
+        count *= len(values)
+    check_case_count(count, "[grid]", max_cases)
     keys = [key.split(LINK) for key in grid]
     return [
         {path: value for paths, value in zip(keys, combo, strict=True) for path in paths}
@@ -64,12 +90,26 @@ def make_cases(overrides: Sequence[dict[str, Any]]) -> tuple[Case, ...]:
 
 
 def format_value(value: Any) -> str:
-    """``value`` as TOML text (what ``--set key=TEXT`` parses back to the same value)."""
+    """``value`` as inline TOML text (what ``--set key=TEXT`` parses back to the same value).
+
+    Tables, also inside arrays, are written inline (``{ a = 1 }``), so every value of a
+    sweep file has a ``--set`` form; the scenario's parser then judges it.
+    """
+    if isinstance(value, dict):
+        items = ", ".join(f"{_key(k)} = {format_value(v)}" for k, v in value.items())
+        return f"{{ {items} }}" if items else "{}"
+    if isinstance(value, list):
+        return "[" + ", ".join(format_value(v) for v in value) + "]"
     text = tomli_w.dumps({"v": value}).strip()
     text = text.removeprefix("v =").strip()
     if tomllib.loads(f"v = {text}")["v"] != value:  # pragma: no cover - a tomli_w guarantee
         raise InputError(f"cannot write {value!r} as a TOML value")
     return text
+
+
+def _key(key: str) -> str:
+    """A table key as TOML text (bare when it can be, else quoted)."""
+    return tomli_w.dumps({key: 0}).split("=", 1)[0].strip()
 
 
 def override_strings(overrides: Mapping[str, Any]) -> list[str]:
