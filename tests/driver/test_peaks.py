@@ -84,7 +84,7 @@ def test_refined_peak_time_and_slip_agree_with_the_reference_slip():
 
 @pytest.mark.parametrize("value", [0.0, -1e-4, 0.5, True, "1e-4"])
 def test_invalid_peak_accuracy_is_refused_naming_the_key(value):
-    params, fn, velocity, distance = _starter()
+    params = _starter()[0]
     with pytest.raises(ParameterError, match="peak_accuracy"):
         simulate(params, (Slide(velocity=1e-4, distance=1e-5, steps=2),), peak_accuracy=value)
 

@@ -62,8 +62,8 @@ class RefinedPeaks:
 
     ``segment``, ``point`` are 1-based; ``step`` is the sampled peak's step; ``offset`` the
     refined position in steps from step ``k - 1`` (in [0, 2]); ``time`` [s], ``slip``
-    (rows, 2) [m], ``path_length`` [m] and ``friction_ratio`` [-] at the refined peak; ``sampled_friction_ratio``
-    the largest sample it replaces.
+    (rows, 2) [m], ``path_length`` [m] and ``friction_ratio`` [-] at the refined peak;
+    ``sampled_friction_ratio`` the largest sample it replaces.
     """
 
     segment: np.ndarray
@@ -128,7 +128,7 @@ class PeakTracker:
         self.k = np.full(n, -1, dtype=np.int64)
         self.before = {name: np.array(getattr(state, name)) for name in _STATE}
         self.after = {name: np.array(getattr(state, name)) for name in _STATE}
-        self.ctl = _control_arrays(Control(0.0, np.zeros((n, 2)), np.zeros(n)), n)
+        self.ctl = _control_arrays(Control(np.zeros(n), np.zeros((n, 2)), np.zeros(n)), n)
         self.time = np.array(time)  # after step k
         self.slip = np.array(slip)
         self.path = np.array(path)
@@ -188,8 +188,6 @@ class PeakTracker:
             sel = turn & (self.k == k)
             for name, arr in _control_arrays(plan.control(int(k) + 1), n).items():
                 nxt[name][sel] = arr[sel]
-        before = ContactState._trusted(**self.before)
-        after = ContactState._trusted(**self.after)
         tol = 0.1 * accuracy * float(np.min(self.best[turn]))
 
         def ratio_at(x: np.ndarray) -> np.ndarray:
