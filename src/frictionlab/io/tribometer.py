@@ -275,10 +275,10 @@ def read_tribometer(
 
     # the data: from the first line of ``width`` fields that is mostly numbers to the end;
     # the header (and a units row) right above it, free text before
-    def numeric(r: list[str]) -> bool:
-        return len(r) == width and 2 * sum(_is_number(c, decimal) for c in r if c) > width
+    def numeric(cells: list[str]) -> bool:
+        return len(cells) == width and 2 * sum(_is_number(c, decimal) for c in cells if c) > width
 
-    first = next((i for i, (_, r) in enumerate(rows) if numeric(r)), None)
+    first = next((i for i, (_, cells) in enumerate(rows) if numeric(cells)), None)
     if first is None:
         raise InputError(f"{where}: no line of {width} numeric fields (sep {sep!r}, "
                          f"decimal {decimal!r})")  # fmt: skip
@@ -286,9 +286,11 @@ def read_tribometer(
     if not above:
         raise InputError(f"{where}: no header line of {width} columns above the first "
                          f"numeric line (line {rows[first][0]})")  # fmt: skip
-    for n, r in rows[first:]:
-        if len(r) != width:
-            raise InputError(f"{where} line {n}: {len(r)} fields where the header has {width}")
+    for n, fields_ in rows[first:]:
+        if len(fields_) != width:
+            raise InputError(
+                f"{where} line {n}: {len(fields_)} fields where the header has {width}"
+            )
     header_line, titles = above[-1]
     units_row: list[str] | None = None
     if len(above) >= 2 and above[-1][0] > above[-2][0]:
