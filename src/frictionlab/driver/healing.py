@@ -69,13 +69,14 @@ class Recovery:
     """The law's recovery form fitted to restart peaks: ``A - (A - mu_0) exp(-t_h / tau)``.
 
     ``A`` [-] the fully recovered peak, ``mu_0`` [-] the peak after no hold, ``tau`` [s];
-    ``rms`` the residual standard deviation [-] (3 parameters).
+    ``rms`` the residual standard deviation [-] (3 parameters; None with three points: the
+    form then passes through every one).
     """
 
     A: float
     mu_0: float
     tau: float
-    rms: float
+    rms: float | None
 
 
 @dataclass(frozen=True)
@@ -95,9 +96,9 @@ class Healing:
 
     def comparison(self) -> str:
         """One sentence: which of the per-decade rate and the recovery form fits better."""
-        if self.recovery is None or self.rate_rms is None:
-            return ("the law's recovery form needs restart peaks after at least three "
-                    "distinct hold times; only the per-decade rate is given")  # fmt: skip
+        if self.recovery is None or self.recovery.rms is None or self.rate_rms is None:
+            return ("comparing the law's recovery form with the per-decade rate needs restart "
+                    "peaks after at least four distinct hold times")  # fmt: skip
         rec, lin = self.recovery.rms, self.rate_rms
         if rec < lin:
             return (f"the law's recovery form A - (A - mu_0) exp(-t_h/tau) describes the "
@@ -185,10 +186,7 @@ def recovery_fit(hold_time: np.ndarray, restart_peak: np.ndarray) -> Recovery | 
     if best is None or not np.all(np.isfinite(best.x)):
         return None
     a, m0, ln_tau = best.x
-    rms = _rms(best.fun, 3)
-    return Recovery(
-        float(a), float(m0), float(np.exp(ln_tau)), float("nan") if rms is None else rms
-    )
+    return Recovery(float(a), float(m0), float(np.exp(ln_tau)), _rms(best.fun, 3))
 
 
 def healing_analysis(history: History) -> Healing | None:
