@@ -186,6 +186,8 @@ def recovery_fit(hold_time: np.ndarray, restart_peak: np.ndarray) -> Recovery | 
     if best is None or not np.all(np.isfinite(best.x)):
         return None
     a, m0, ln_tau = best.x
+    if min(ln_tau - span[0], span[1] - ln_tau) < 1e-6:  # no time scale within the holds
+        return None
     return Recovery(float(a), float(m0), float(np.exp(ln_tau)), _rms(best.fun, 3))
 
 
