@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= out/demo
 
-.PHONY: demo test check lint typecheck docs pytest bench clean venv
+.PHONY: demo test test-fast check lint typecheck docs pytest bench clean venv
 
 venv: $(STAMP)
 
@@ -13,10 +13,12 @@ $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e ".[dev]"
+	$(BIN)/frictionlab warmup --quiet
 	touch $(STAMP)
 
 demo: $(STAMP)
 	$(BIN)/python -c "import skfem" 2>/dev/null || $(BIN)/python -m pip install --quiet -e ".[fem]"
+	$(BIN)/frictionlab warmup --quiet
 	$(BIN)/frictionlab demo --out $(OUT)
 
 # The whole test suite: lint, type check, the docs site (strict), then every test.
@@ -38,6 +40,10 @@ docs: $(STAMP)
 
 pytest: $(STAMP)
 	$(BIN)/python -m pytest -n auto -q
+
+# While developing: lint, type check and the tests not marked slow (no docs site).
+test-fast: check
+	$(BIN)/python -m pytest -n auto -q -m "not slow"
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py

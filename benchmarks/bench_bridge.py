@@ -8,7 +8,7 @@ Setup: two independent self-affine height maps (H = 0.8, rms slope 0.2, 1 mm x 1
 ``--points`` squared samples, seeds 1 and 2), mu0 = 0.3, full contact, the bridge's default
 polar (36 directions every 10 deg), the default [bridge] check (400 steps, every direction).
 
-Reported: seconds of the three stages of :func:`frictionlab.io.bridge_results.run_bridge`
+Reported: seconds of the three stages of :func:`frictionlab.app.bridge.run_bridge`
 (lattice polar, least-squares fit, steady-sliding check of the fitted law) and, as the
 in-process baseline, one ``friction_polar`` call over the same 36 directions: the ratio
 bridge-polar / baseline is the cost of computing the polar in chunks for the progress bar
@@ -23,7 +23,7 @@ import platform
 import time
 from pathlib import Path
 
-from frictionlab.io.bridge_results import run_bridge
+from frictionlab.app.bridge import run_bridge
 from frictionlab.io.bridge_scenario import parse_bridge_scenario
 from frictionlab.roughness.lattice import friction_polar
 

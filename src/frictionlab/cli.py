@@ -8,12 +8,11 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import os
 import sys
 from collections.abc import Sequence
 
 from frictionlab._version import __version__
-from frictionlab.errors import FrictionlabError, InputError, ParameterError, ValidityError
+from frictionlab.errors import FrictionlabError
 
 #: Subcommand modules under ``frictionlab.commands`` (one job each).
 COMMANDS: tuple[str, ...] = (
@@ -26,10 +25,9 @@ COMMANDS: tuple[str, ...] = (
     "sweep",
     "example",
     "bench",
+    "warmup",
 )
 
-EXIT_OK = 0
-EXIT_FAILED = 1
 EXIT_BAD_INPUT = 2
 
 
@@ -72,32 +70,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return EXIT_BAD_INPUT
+    from frictionlab.commands._pipeline import exit_code
     from frictionlab.io.provenance import command_line
 
     try:
         with command_line(["frictionlab", *(sys.argv[1:] if argv is None else argv)]):
             return int(args.handler(args))
-    except (InputError, ParameterError, ValidityError) as exc:
-        print(f"frictionlab: error: {exc}", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    except FrictionlabError as exc:
-        print(f"frictionlab: computation failed: {exc}", file=sys.stderr)
-        return EXIT_FAILED
-    except MemoryError:
-        print(
-            f"frictionlab: computation failed: out of memory in `{args.command}`: reduce the "
-            "number of points, steps or the grid size",
-            file=sys.stderr,
-        )
-        return EXIT_FAILED
-    except OSError as exc:  # a read or write the commands did not anticipate (disk, device)
-        where = f" ({exc.filename})" if exc.filename else ""
-        print(f"frictionlab: computation failed: {exc.strerror or exc}{where}", file=sys.stderr)
-        return EXIT_FAILED
-    except KeyboardInterrupt:
-        print("frictionlab: interrupted", file=sys.stderr)
-        return EXIT_FAILED
-    except BrokenPipeError:  # e.g. `frictionlab demo | head -1`: the reader went away
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-        return EXIT_OK
+    except (FrictionlabError, MemoryError, OSError, KeyboardInterrupt) as exc:
+        code, message = exit_code(exc, args.command)
+        print(message, file=sys.stderr)
+        return code

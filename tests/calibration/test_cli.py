@@ -47,10 +47,12 @@ def read_csv(path: Path, keys: tuple[str, ...]) -> dict[str, np.ndarray]:
 def test_outputs_and_fit_json(calibrated, check_summary) -> None:
     _, out, code = calibrated
     assert code == 0
-    for name in ("fitted.toml", "fit.json", "curves.csv", "curve_1.png", "correlation.png",
-                 "report.html"):  # fmt: skip
+    for name in ("fitted.toml", "summary.json", "fit.json", "curves.csv", "curve_1.png",
+                 "correlation.png", "report.html"):  # fmt: skip
         assert (out / name).is_file(), name
-    fit = check_summary(out / "fit.json")
+    fit = check_summary(out / "summary.json")
+    # fit.json: the deprecated copy of summary.json, kept for one release
+    assert (out / "fit.json").read_bytes() == (out / "summary.json").read_bytes()
     assert [Path(i["path"]).suffix for i in fit["provenance"]["inputs"]] == [".toml", ".csv"]
     assert list(fit["parameters"]) == NAMES
     for name, entry in fit["parameters"].items():
@@ -181,7 +183,7 @@ def test_two_curves_give_two_runnable_scenarios(tmp_path: Path) -> None:
     cfg = write_config(tmp_path / "two.toml", data)
     out = tmp_path / "out"
     assert main(["calibrate", str(cfg), "--out", str(out), "--quiet"]) == 0
-    fit = json.loads((out / "fit.json").read_text())
+    fit = json.loads((out / "summary.json").read_text())
     assert [c["file"] for c in fit["curves"]] == ["a.csv", "b.csv"]
     assert fit["n_points"] == 2 * 3401 and (out / "curve_2.png").is_file()
     for name in ("fitted.toml", "fitted_2.toml"):

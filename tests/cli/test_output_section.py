@@ -10,12 +10,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from frictionlab.app import simulate_files as results
+from frictionlab.app.simulate_files import SUMMARY_POINTS
 from frictionlab.cli import main
 from frictionlab.demo import bundled_scenario
 from frictionlab.driver import Recording, simulate
 from frictionlab.driver.table import history_columns
-from frictionlab.io import results
-from frictionlab.io.results import SUMMARY_POINTS
 from frictionlab.io.scenario import parse_scenario
 from frictionlab.io.tables import format_csv
 

@@ -12,6 +12,7 @@ import tomllib
 import numpy as np
 import pytest
 
+from frictionlab.app.simulate import run_scenario
 from frictionlab.driver.program import Control
 from frictionlab.driver.stepping import solve_control
 from frictionlab.io.scenario import parse_scenario
@@ -41,7 +42,7 @@ traction = {target!r}
 
 def _run(alpha_n: float, opening: float, target: float):  # type: ignore[no-untyped-def]
     text = SCENARIO.format(alpha_n=alpha_n, opening=opening, target=target)
-    return parse_scenario(tomllib.loads(text)).run()
+    return run_scenario(parse_scenario(tomllib.loads(text)))
 
 
 @pytest.mark.parametrize("alpha_n", [1e3, 1e9, 1e15, 1e18])
@@ -97,7 +98,7 @@ def test_the_closing_form_is_the_laws_own_reclosing_where_nothing_cancels(du_t) 
 @pytest.mark.parametrize("target", [1e-200, 1e-20])
 def test_a_target_that_cannot_be_told_from_zero_stops_in_one_line(target: float) -> None:
     text = SCENARIO.format(alpha_n=1e3, opening=1e-4, target=target)  # closes first: f_n = 1.1
-    history = parse_scenario(tomllib.loads(text)).run()
+    history = run_scenario(parse_scenario(tomllib.loads(text)))
     assert not history.success
     assert "cannot be told from zero" in history.message and "\n" not in history.message
     assert not np.any(history.status[1:, 0] == Status.OPEN)  # never a silent opening
@@ -107,7 +108,7 @@ def test_a_target_that_cannot_be_told_from_zero_stops_in_one_line(target: float)
 def test_a_small_target_above_the_rule_is_a_contact(target: float) -> None:
     """1e-13 Pa from 1.1 Pa is below the rule in one step; halved steps reach it."""
     text = SCENARIO.format(alpha_n=1e3, opening=1e-4, target=target)
-    history = parse_scenario(tomllib.loads(text)).run()
+    history = run_scenario(parse_scenario(tomllib.loads(text)))
     assert history.success, history.message
     fn = float(history.traction[-1, 0, 2])
     assert history.status[-1, 0] != Status.OPEN

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import pytest
 
+from frictionlab.app.simulate import run_scenario
 from frictionlab.demo import bundled_scenarios
 from frictionlab.io.scenario import parse_scenario
 
@@ -75,7 +76,7 @@ def load(name: str) -> dict[str, Any]:
 
 
 def run(data: dict[str, Any]) -> Any:
-    return parse_scenario(data).run()
+    return run_scenario(parse_scenario(data))
 
 
 @pytest.mark.parametrize("name", bundled_scenarios())

@@ -39,7 +39,7 @@ def test_example_calibration_recovers_the_true_parameters(tmp_path: Path) -> Non
     code = main(["calibrate", str(config), "--out", str(tmp_path / "out"),
                  "--quiet", "--set", "fit.profile=false"])  # fmt: skip
     assert code == 0
-    fit = json.loads((tmp_path / "out" / "fit.json").read_text())
+    fit = json.loads((tmp_path / "out" / "summary.json").read_text())
     for name, entry in fit["parameters"].items():
         if entry["stderr"] is None:
             # No standard error: the data do not constrain it at all (its Jacobian column

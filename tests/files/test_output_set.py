@@ -165,7 +165,7 @@ def test_disk_full_during_simulate_exits_1_and_keeps_the_old_set(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """ENOSPC while writing summary.json (history.csv already written): exit 1, old set kept."""
-    import frictionlab.io.results as results
+    import frictionlab.app.outputs as results
 
     scenario = tmp_path / "s.toml"
     scenario.write_text(SCENARIO)

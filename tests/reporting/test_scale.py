@@ -9,11 +9,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from frictionlab.app.budget import check_grid_size, check_output_space, check_run_size, largest
+from frictionlab.app.simulate import run_scenario
+from frictionlab.app.simulate_files import SUMMARY_POINTS, summarise
 from frictionlab.cli import main
 from frictionlab.driver import History
 from frictionlab.errors import InputError
-from frictionlab.io.budget import check_grid_size, check_output_space, check_run_size, largest
-from frictionlab.io.results import SUMMARY_POINTS, summarise
 from frictionlab.io.scenario import parse_scenario
 from frictionlab.plotting.law import (
     MAX_CURVES,
@@ -51,7 +52,7 @@ steps = 4
 
 def _run(n: int) -> tuple[object, History]:
     scenario = parse_scenario(tomllib.loads(SCENARIO.format(n=n)))
-    return scenario, scenario.run()
+    return scenario, run_scenario(scenario)
 
 
 def test_summary_makes_a_fixed_number_of_whole_history_passes(

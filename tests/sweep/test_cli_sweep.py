@@ -182,7 +182,7 @@ def test_unwritable_out_is_bad_input(tmp_path: Path, capsys) -> None:
 def test_bundled_example_validates(tmp_path: Path) -> None:
     from importlib import resources
 
-    from frictionlab.commands.sweep import load_spec
+    from frictionlab.app.sweep import load_spec
 
     path = Path(str(resources.files("frictionlab") / "data" / "sweeps" / "slide_hold_slide.toml"))
     spec, command, tasks = load_spec(path, plots=False)
@@ -214,8 +214,8 @@ def _table_sweep(tmp: Path, slip_end: float) -> Path:
 
 def test_a_task_carries_the_base_and_the_files_it_names(tmp_path: Path) -> None:
     """A worker that cannot see the sweep's folder still runs the case, from the task alone."""
-    from frictionlab.commands._sweep_task import run_task
-    from frictionlab.commands.sweep import load_spec
+    from frictionlab.app.sweep import load_spec
+    from frictionlab.app.sweep_task import run_task
 
     here = tmp_path / "here"
     here.mkdir()

@@ -31,7 +31,8 @@ __all__ = ["DRIVES", "SolverOptions", "run_contact"]
 #: node (a rigidly translated block: a verification case that isolates the interface).
 DRIVES: tuple[str, ...] = ("top", "rigid")
 
-ProgressCallback = Callable[[float], None]
+#: ``progress(done, total)``: the time done, in thousandths of the programme's duration.
+ProgressCallback = Callable[[int, int], None]
 
 
 @dataclass(frozen=True)
@@ -196,7 +197,8 @@ def run_contact(
         ``"top"`` (default) or ``"rigid"`` (every node moved along x; displacement
         control only) — see :data:`DRIVES`.
     progress:
-        Called with the fraction of the total time done after every step.
+        Called as ``progress(done, 1000)`` after every step, ``done`` the thousandths
+        of the programme's time completed (the one progress convention).
     discretisation:
         A prebuilt mesh of ``block`` (else built here).
 
@@ -339,5 +341,5 @@ def _run(
             if outcome.iterations <= opts.easy_iterations:
                 h = min(h_try * opts.growth, nominal)
             if progress is not None:
-                progress(min(t / total_time, 1.0))
+                progress(round(1000 * min(t / total_time, 1.0)), 1000)
     return rec.history(True, "completed", stages)

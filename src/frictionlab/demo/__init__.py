@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 
+from frictionlab._progress import ProgressFactory, no_progress
 from frictionlab.io.report import Report, Section
 
 __all__ = [
@@ -40,20 +41,13 @@ EXTRAS: dict[str, tuple[str, str]] = {
     "threadpoolctl": ("fem", "the finite-element contact section (threadpoolctl)"),
 }
 
-ProgressFactory = Callable[[str], contextlib.AbstractContextManager[Callable[[int, int], None]]]
-
-
-@contextlib.contextmanager
-def _no_progress(description: str) -> Iterator[Callable[[int, int], None]]:
-    yield lambda done, total: None
-
 
 @dataclass
 class DemoContext:
     """What a section builder gets: where to write, how to report progress and messages."""
 
     out_dir: Path
-    progress: ProgressFactory = _no_progress
+    progress: ProgressFactory = no_progress
     log: Callable[[str], None] = lambda message: None
     timings: dict[str, float] = field(default_factory=dict)
 
@@ -137,7 +131,7 @@ def run_demo(
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     chosen = list(builders) if builders is not None else default_builders()
-    ctx = DemoContext(out, progress or _no_progress, log or (lambda message: None))
+    ctx = DemoContext(out, progress or no_progress, log or (lambda message: None))
     report = Report(TITLE, INTRO)
     for i, build in enumerate(chosen, start=1):
         start = time.perf_counter()

@@ -18,14 +18,14 @@ from pathlib import Path
 
 import numpy as np
 
+from frictionlab.app.bridge import run_bridge, write_bridge
+from frictionlab.app.simulate import run_scenario, write_results
 from frictionlab.demo import DemoContext
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_json_atomic, write_text_atomic
-from frictionlab.io.bridge_results import run_bridge, write_bridge
 from frictionlab.io.bridge_scenario import parse_bridge_scenario
 from frictionlab.io.config import load_toml
 from frictionlab.io.report import Section, format_value
-from frictionlab.io.results import write_results
 from frictionlab.io.scenario import load_scenario
 
 __all__ = ["BRIDGE_SECTIONS", "bridge_section", "bundled_bridge_scenario"]
@@ -79,7 +79,7 @@ def bridge_section(ctx: DemoContext) -> Section:
     fitted = load_scenario(out / "fitted_law.toml", [override])
     start = time.perf_counter()
     with ctx.progress("bridge: fitted law") as progress:
-        history = fitted.run(progress=progress)
+        history = run_scenario(fitted, progress=progress)
     if not history.success:
         raise FrictionlabError(f"demo bridge: the fitted law failed: {history.message}")
     write_results(out / "fitted_law", fitted, history, time.perf_counter() - start)
@@ -140,7 +140,7 @@ def bridge_section(ctx: DemoContext) -> Section:
 
 
 def _parameters(run: object) -> list[tuple[str, str, str]]:
-    from frictionlab.io.bridge_results import BridgeRun
+    from frictionlab.app.bridge import BridgeRun
 
     assert isinstance(run, BridgeRun)
     sc = run.scenario
@@ -163,7 +163,7 @@ def _parameters(run: object) -> list[tuple[str, str, str]]:
 
 def _law_rows(run: object) -> list[tuple[str, str, str]]:
     """The fitted law's rows (the report compares them with the first law table)."""
-    from frictionlab.io.bridge_results import BridgeRun
+    from frictionlab.app.bridge import BridgeRun
 
     assert isinstance(run, BridgeRun)
     table = run.law.params

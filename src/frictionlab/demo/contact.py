@@ -31,8 +31,8 @@ def bundled_contact_scenario(name: str) -> Iterator[Path]:
 
 def contact_section(ctx: DemoContext) -> Section:
     """The law in a finite-element contact model: precursor slip at the trailing edge"""
-    from frictionlab.contact import front_arrival, run_contact, slip_front
-    from frictionlab.io.contact_results import write_contact_results
+    from frictionlab.app.contact import run_contact_scenario, write_contact_results
+    from frictionlab.contact import front_arrival, slip_front
     from frictionlab.io.contact_scenario import load_contact_scenario
 
     rel = "contact"
@@ -42,11 +42,7 @@ def contact_section(ctx: DemoContext) -> Section:
         scenario = load_contact_scenario(path)
     start = time.perf_counter()
     with ctx.progress("contact: PMMA-like block") as progress:
-        history = run_contact(
-            scenario.block, scenario.params, scenario.normal, scenario.program,
-            options=scenario.options, drive=scenario.drive,
-            progress=lambda fraction: progress(round(1000 * fraction), 1000),
-        )  # fmt: skip
+        history = run_contact_scenario(scenario, progress)
     elapsed = time.perf_counter() - start
     if not history.success:
         raise FrictionlabError(f"demo contact: {history.message}")

@@ -13,6 +13,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from frictionlab.app.simulate import run_scenario, write_results
 from frictionlab.demo import DemoContext, bundled_scenario
 from frictionlab.driver import (
     History,
@@ -25,7 +26,6 @@ from frictionlab.driver import (
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
 from frictionlab.io.report import Section, format_value
-from frictionlab.io.results import write_results
 from frictionlab.io.scenario import Scenario, load_scenario
 from frictionlab.io.tables import write_csv_atomic
 from frictionlab.plotting.law import (
@@ -75,7 +75,7 @@ def run_bundled(
         text = path.read_text(encoding="utf-8")
     start = time.perf_counter()
     with ctx.progress(rel) as progress:
-        history = scenario.run(progress=progress)
+        history = run_scenario(scenario, progress=progress)
     elapsed = time.perf_counter() - start
     if not history.success:
         raise FrictionlabError(f"demo scenario '{rel}' failed: {history.message}")

@@ -1,14 +1,14 @@
 """The demo's roughness sections: the lattice-spring model's figure families (Figs 6-14).
 
-Thin builders around :mod:`frictionlab.io.roughness_report` (which computes the
+Thin builders around :mod:`frictionlab.demo.roughness_figures` (which computes the
 families, saves the figures under ``OUT/roughness/`` and writes the captions).
 """
 
 from __future__ import annotations
 
 from frictionlab.demo import DemoContext
+from frictionlab.demo.roughness_figures import life_section, measured_section, single_level_section
 from frictionlab.io.report import Section
-from frictionlab.io.roughness_report import life_section, measured_section, single_level_section
 
 __all__ = [
     "ROUGHNESS_SECTIONS",

@@ -88,8 +88,8 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab.app.budget import check_grid_size
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.budget import check_grid_size
 from frictionlab.io.config import Table
 from frictionlab.roughness import generators
 from frictionlab.roughness.hierarchy import (

@@ -31,22 +31,19 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab.app.budget import RunEstimate, check_run_size, largest
 from frictionlab.driver import (
     SEGMENT_KINDS,
-    History,
     InitialConditions,
     Program,
     SpringSlider,
     Table,
     plan_program,
-    simulate,
-    simulate_spring_slider,
 )
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.recorder import Recording, RowSink
-from frictionlab.driver.simulate import ProgressCallback, count_points
+from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.budget import RunEstimate, check_run_size, largest
 from frictionlab.io.config import REQUIRED, apply_overrides, load_toml, unknown_key
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
@@ -509,7 +506,7 @@ def _parse_machine(t: TomlTable) -> tuple[MachineRun, dict[str, Any]]:
 # --------------------------------------------------------------------------- scenario
 @dataclass(frozen=True)
 class Scenario:
-    """A validated scenario, ready to run (:meth:`run`)."""
+    """A validated scenario, ready to run (:func:`frictionlab.app.simulate.run_scenario`)."""
 
     title: str
     description: str
@@ -530,36 +527,6 @@ class Scenario:
     def kind(self) -> str:
         """``"program"`` or ``"spring_slider"``."""
         return "program" if self.program is not None else "spring_slider"
-
-    def run(
-        self,
-        progress: ProgressCallback | None = None,
-        sink: RowSink | None = None,
-        keep_rows: int | None = None,
-        keep_points: Sequence[int] | None = None,
-    ) -> History:
-        """Simulate the scenario (never raises for a failed computation: see History.success).
-
-        A programme records as ``[output]`` says; ``sink`` receives the recorded rows in
-        chunks as they are computed; ``keep_rows`` and ``keep_points`` then bound what
-        stays in memory (see :class:`~frictionlab.driver.recorder.Recording`). The
-        spring-slider records every step in memory (``[output]`` is applied when its
-        history is written).
-        """
-        opts = self.run_options
-        if self.program is not None:
-            return simulate(
-                self.params, self.program, self.initial, n_points=self.n_points,
-                accuracy=opts.accuracy, max_halvings=opts.max_halvings, progress=progress,
-                recording=self.output.recording(sink, keep_rows, keep_points),
-            )  # fmt: skip
-        assert self.machine is not None
-        m = self.machine
-        return simulate_spring_slider(
-            self.params, m.machine, m.duration, steps=m.steps, max_step=m.max_step,
-            initial=self.initial, n_points=self.n_points, accuracy=opts.accuracy,
-            max_halvings=opts.max_halvings, progress=progress,
-        )  # fmt: skip
 
 
 #: How per-point inputs are named in legends: key -> (symbol, unit).

@@ -9,10 +9,11 @@ Layout of a file written by :func:`write_csv_atomic`: a header row, then the dat
 Every file opens with ``pandas.read_csv(path)`` and no other argument. Each title is
 ``name [unit]`` (``-`` for dimensionless and text columns; the one spelling used
 everywhere). Floats are written in the shortest form that reads back to the same float64
-(``repr``), so a round trip is exact. Non-finite values are refused: a table never carries
-NaN or infinity. Booleans are written as ``true``/``false``; text cells may not contain
-commas or line breaks. An undefined value is given as a masked entry (``numpy.ma``) and
-written as an empty field.
+(orjson's shortest round-trip form, e.g. ``1e-6``), so a round trip is exact; cells are
+formatted column-wise by Arrow's compute kernels, with no Python object per cell.
+Non-finite values are refused: a table never carries NaN or infinity. Booleans are written
+as ``true``/``false``; text cells may not contain commas or line breaks. An undefined value
+is given as a masked entry (``numpy.ma``) and written as an empty field.
 
 :func:`read_csv` reads such files (a numeric column with empty fields comes back as a
 masked array), files of earlier versions (``#`` comment lines, a ``# units:`` line),
@@ -22,8 +23,6 @@ plain CSV with a header row.
 
 from __future__ import annotations
 
-import io
-import math
 import os
 from collections.abc import Iterator, Mapping
 from pathlib import Path
@@ -33,9 +32,9 @@ import numpy as np
 
 from frictionlab._frames import column_title, normalise_unit, split_title, to_dataframe
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.atomic import write_text_atomic
+from frictionlab.io.atomic import write_bytes_atomic
 
-__all__ = ["CsvTable", "format_csv", "read_csv", "write_csv_atomic"]
+__all__ = ["CsvTable", "format_csv", "format_csv_bytes", "read_csv", "write_csv_atomic"]
 
 _UNITS_PREFIX = "# units:"
 
@@ -77,7 +76,16 @@ def format_csv(
     units: Mapping[str, str] | None = None,
     header_comment: str | None = None,
 ) -> str:
-    """Render ``columns`` (equal-length 1-D arrays) as CSV text, titles ``name [unit]``.
+    """:func:`format_csv_bytes` as text."""
+    return format_csv_bytes(columns, units, header_comment).decode("utf-8")
+
+
+def format_csv_bytes(
+    columns: Mapping[str, np.ndarray],
+    units: Mapping[str, str] | None = None,
+    header_comment: str | None = None,
+) -> bytes:
+    """Render ``columns`` (equal-length 1-D arrays) as UTF-8 CSV, titles ``name [unit]``.
 
     ``header_comment`` is accepted for compatibility and not written: the file is plain
     CSV that any reader opens without options (descriptions live in ``summary.json``
@@ -102,34 +110,55 @@ def format_csv(
     unknown = sorted(set(units) - set(names))
     if unknown:
         raise ParameterError("units", unknown[0], f"one of the columns {names}")
-    out = io.StringIO()
-    out.write(",".join(column_title(name, units.get(name)) for name in names) + "\n")
-    columns_text = [_format_column(name, a) for name, a in zip(names, arrays, strict=True)]
-    for row in zip(*columns_text, strict=True):
-        out.write(",".join(row) + "\n")
-    return out.getvalue()
+    header = (",".join(column_title(name, units.get(name)) for name in names) + "\n").encode()
+    if len(arrays[0]) == 0:
+        return header
+    import pyarrow as pa
+    import pyarrow.csv as pa_csv
+
+    cells = pa.table([_format_column(name, a) for name, a in zip(names, arrays, strict=True)],
+                     names=[f"c{k}" for k in range(len(names))])  # fmt: skip
+    sink = pa.BufferOutputStream()
+    pa_csv.write_csv(cells, sink, pa_csv.WriteOptions(include_header=False, quoting_style="none"))
+    return header + sink.getvalue().to_pybytes()
 
 
-def _format_column(name: str, values: np.ndarray) -> list[str]:
+def _format_column(name: str, values: np.ndarray) -> Any:
+    """One column's cells as an Arrow string array (vectorised; no Python object per cell).
+
+    Floats are written in their shortest round-trip form (orjson's, e.g. ``1e-6``,
+    ``0.00001``, ``2.0``): every value reads back as the same float64.
+    """
+    import pyarrow as pa
+    import pyarrow.compute as pc
+
     if np.ma.isMaskedArray(values):  # undefined entries: empty fields
         mask = np.ma.getmaskarray(values)
-        texts = iter(_format_column(name, np.asarray(np.ma.getdata(values)[~mask])))
-        return ["" if m else next(texts) for m in mask.tolist()]
+        data = np.ma.getdata(values)
+        filled = _format_column(name, np.where(mask, np.zeros((), data.dtype), data))
+        return pc.if_else(pa.array(mask), pa.scalar("", pa.string()), filled)
     if values.dtype.kind == "b":
-        return ["true" if v else "false" for v in values.tolist()]
+        return pc.if_else(pa.array(values), pa.scalar("true"), pa.scalar("false"))
     if values.dtype.kind in "iu":
-        return [str(int(v)) for v in values.tolist()]
+        return pc.cast(pa.array(values), pa.string())
     if values.dtype.kind == "f":
-        floats = values.astype(np.float64).tolist()
-        bad = [v for v in floats if not math.isfinite(v)]
+        floats = np.ascontiguousarray(values, dtype=np.float64)
+        finite = np.isfinite(floats)
+        if not finite.all():
+            raise ParameterError(f"column {name}", float(floats[~finite][0]), "finite numbers only")
+        import orjson
+
+        text = orjson.dumps(floats, option=orjson.OPT_SERIALIZE_NUMPY)[1:-1].decode("ascii")
+        return pc.split_pattern(pa.array([text], pa.string()), ",").flatten()
+    if values.dtype.kind in "UO":  # few distinct texts (kinds, statuses): codes + levels
+        import pandas as pd
+
+        codes, levels = pd.factorize(np.asarray(values, dtype=object))
+        texts = [str(t) for t in levels]
+        bad = [t for t in texts if any(ch in t for ch in ",\n\r")]
         if bad:
-            raise ParameterError(f"column {name}", bad[0], "finite numbers only")
-        return [repr(v) for v in floats]
-    if values.dtype.kind in "UO":
-        text = [str(v) for v in values.tolist()]
-        if any(ch in t for t in text for ch in ",\n\r"):
-            raise ParameterError(f"column {name}", text, "text without commas or line breaks")
-        return text
+            raise ParameterError(f"column {name}", bad[0], "text without commas or line breaks")
+        return pa.array(texts, pa.string()).take(pa.array(codes))
     raise ParameterError(f"column {name}", str(values.dtype), "bool, integer, float or text")
 
 
@@ -153,7 +182,7 @@ def write_csv_atomic(
     header_comment:
         Accepted for compatibility, not written (see :func:`format_csv`).
     """
-    return write_text_atomic(path, format_csv(columns, units, header_comment))
+    return write_bytes_atomic(path, format_csv_bytes(columns, units, header_comment))
 
 
 def read_csv(path: str | os.PathLike[str]) -> CsvTable:

@@ -7,15 +7,13 @@ what it drew on. Axes labels carry SI units.
 from __future__ import annotations
 
 import math
-import os
 from collections.abc import Mapping, Sequence
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from frictionlab.io.atomic import atomic_path
 from frictionlab.plotting._ticks import readable_log_ticks
+from frictionlab.plotting.save import save_figure
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -49,17 +47,6 @@ def new_figure(
     fig = Figure(figsize=(width * ncols, height), layout="constrained")
     axes = [fig.add_subplot(1, ncols, i + 1) for i in range(ncols)]
     return fig, axes
-
-
-def save_figure(fig: Figure, path: str | os.PathLike[str], dpi: int = 110) -> Path:
-    """Write ``fig`` as PNG to ``path`` atomically and return the path.
-
-    Log axes get at least three labelled ticks (:func:`readable_log_ticks`).
-    """
-    readable_log_ticks(fig)
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=dpi, format="png")
-    return Path(path)
 
 
 def _labels(labels: Sequence[str], n: int) -> list[str | None]:

@@ -6,7 +6,6 @@ objects (no pyplot state), rendered with the Agg canvas.
 
 from __future__ import annotations
 
-import io
 import math
 import re
 import textwrap
@@ -14,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from frictionlab.plotting._ticks import readable_log_ticks
+from frictionlab.plotting.save import figure_png_bytes
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -42,17 +41,6 @@ def new_figure(width: float = 6.0, height: float = 4.5) -> Figure:
     from matplotlib.figure import Figure
 
     return Figure(figsize=(width, height), layout="constrained")
-
-
-def figure_png_bytes(fig: Figure, dpi: int = 120) -> bytes:
-    """Render ``fig`` to PNG bytes in memory (Agg)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-    FigureCanvasAgg(fig)
-    readable_log_ticks(fig)
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=dpi)
-    return buffer.getvalue()
 
 
 def radial_limits(values: np.ndarray) -> tuple[float, float]:

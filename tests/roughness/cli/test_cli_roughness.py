@@ -230,7 +230,7 @@ def test_failure_leaves_an_existing_directory_untouched(tmp_path, capsys) -> Non
 
 def test_the_output_lock_is_held_for_the_whole_run(tmp_path, capsys, monkeypatch) -> None:
     """A second run on the same --out is refused while the first is still computing."""
-    from frictionlab.commands import roughness as command
+    from frictionlab.app import roughness as command
     from frictionlab.errors import InputError
     from frictionlab.io.output_set import output_set
 

@@ -7,8 +7,8 @@ import re
 
 import numpy as np
 
+from frictionlab.demo.roughness_figures import FOLDER, roughness_sections
 from frictionlab.io.report import Report
-from frictionlab.io.roughness_report import FOLDER, roughness_sections
 from frictionlab.io.tables import read_csv
 
 FAMILIES = ("fig6a", "fig6b", "fig7", "fig8", "fig10", "fig11", "fig12", "fig13", "fig14")
@@ -51,7 +51,7 @@ def test_sections_generated_and_valid(tmp_path) -> None:
 
 
 def test_measured_section(tmp_path) -> None:
-    from frictionlab.io.roughness_report import measured_section
+    from frictionlab.demo.roughness_figures import measured_section
 
     section = measured_section(tmp_path)
     assert section.title == "Lattice-spring roughness: a measured topography file"

@@ -2,24 +2,27 @@
 
 :func:`run_bridge` computes everything ``frictionlab bridge`` reports, in memory;
 :func:`write_bridge` then writes ``fitted_law.toml``, ``directions.csv``, ``bridge.png`` and
-``bridge.json`` (last), each atomically. The steady-sliding check runs the very text of
-``fitted_law.toml`` (parsed back like ``frictionlab simulate`` does), so a law that the
-bridge reports has run as written.
+``summary.json`` (last, with ``bridge.json`` its deprecated copy), each atomically. The
+steady-sliding check runs the very text of ``fitted_law.toml`` (parsed back like
+``frictionlab simulate`` does), so a law that the bridge reports has run as written.
+:data:`BRIDGE` is the workflow of ``frictionlab bridge``.
 """
 
 from __future__ import annotations
 
-import contextlib
+import argparse
 import time
 import tomllib
-from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from frictionlab._progress import ProgressFactory, no_progress
 from frictionlab._version import __version__
+from frictionlab.app.outputs import write_outputs
+from frictionlab.app.simulate import run_scenario
 from frictionlab.bridge import (
     AnisotropyFit,
     FittedLaw,
@@ -32,28 +35,21 @@ from frictionlab.bridge import (
 )
 from frictionlab.driver import History
 from frictionlab.errors import FrictionlabError, InputError, ParameterError
-from frictionlab.io.atomic import write_bytes_atomic, write_json_atomic, write_text_atomic
+from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
 from frictionlab.io.bridge_scenario import BridgeScenario
 from frictionlab.io.config import format_toml
-from frictionlab.io.provenance import stamp
 from frictionlab.io.scenario import law_table, parse_scenario
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.lattice import FrictionPolar, friction_polar, merge_polars
 from frictionlab.subloading import SubloadingParams
 
-__all__ = ["FILES", "BridgeRun", "run_bridge", "write_bridge"]
+__all__ = ["BRIDGE", "FILES", "BridgeRun", "run_bridge", "write_bridge"]
 
-#: The files of a bridge run, in the order they are written (bridge.json last).
-FILES = ("fitted_law.toml", "directions.csv", "bridge.png", "bridge.json")
+#: The files of a bridge run, in the order they are written (the summary last; bridge.json
+#: is its deprecated copy).
+FILES = ("fitted_law.toml", "directions.csv", "bridge.png", "summary.json", "bridge.json")
 #: Directions per lattice call (progress granularity).
 _CHUNK = 6
-
-ProgressFactory = Callable[[str], contextlib.AbstractContextManager[Callable[[int, int], None]]]
-
-
-@contextlib.contextmanager
-def _no_progress(description: str) -> Iterator[Callable[[int, int], None]]:
-    yield lambda done, total: None
 
 
 @dataclass(frozen=True)
@@ -100,7 +96,7 @@ def run_bridge(
     results or its check simulation fails; :class:`~frictionlab.errors.InputError` when
     the roughness input leaves mu undefined.
     """
-    progress = progress or _no_progress
+    progress = progress or no_progress
     opts = scenario.options
     base = scenario.law
     fn = opts.normal_traction
@@ -129,7 +125,7 @@ def run_bridge(
             f"the fitted law cannot run with the [bridge] settings: {exc}"
         ) from None
     with progress("bridge: steady sliding") as bar:
-        history = runnable.run(progress=bar)
+        history = run_scenario(runnable, progress=bar)
     if not history.success:
         raise FrictionlabError(f"steady sliding of the fitted law failed: {history.message}")
     t3 = time.perf_counter()
@@ -324,8 +320,8 @@ def _m_i(params: SubloadingParams) -> list[float]:
     return [M * float(c) for c in np.asarray(params.orthotropy)]
 
 
-def write_bridge(out: Path, run: BridgeRun) -> list[Path]:
-    """Write the files of ``run`` into ``out`` (bridge.json last), each atomically."""
+def _files(out: Path, run: BridgeRun) -> list[Path]:
+    """Write the files of ``run`` but the summary into ``out``, each atomically."""
     from frictionlab.plotting.bridge import bridge_figure
     from frictionlab.plotting.roughness import figure_png_bytes
 
@@ -354,6 +350,76 @@ def write_bridge(out: Path, run: BridgeRun) -> list[Path]:
             written.append(write_bytes_atomic(out / name, content))
         else:
             written.append(write_text_atomic(out / name, content))
-    names = [p.name for p in written] + ["bridge.json"]
-    written.append(write_json_atomic(out / "bridge.json", stamp(summary(run), names, [run.source])))
     return written
+
+
+class Bridge:
+    """``frictionlab bridge SCENARIO.toml --out DIR`` (:mod:`frictionlab.commands.bridge`)."""
+
+    name = "bridge"
+    #: bridge.json: the summary's name before 0.x; a copy of summary.json for one release.
+    aliases: tuple[str, ...] = ("bridge.json",)
+
+    def parse(self, args: argparse.Namespace, out: Path) -> tuple[BridgeScenario, Path]:
+        from frictionlab.io.bridge_scenario import parse_bridge_scenario
+        from frictionlab.io.config import apply_overrides, load_toml
+
+        path = Path(args.scenario)
+        data = apply_overrides(load_toml(path), args.set)
+        return parse_bridge_scenario(data, path.parent), path
+
+    def run(
+        self, job: tuple[BridgeScenario, Path], progress: ProgressFactory, staging: Path
+    ) -> BridgeRun:
+        return run_bridge(job[0], job[1], progress)
+
+    def files(self, job: Any, result: BridgeRun, out: Path, plots: bool) -> list[Path]:
+        return _files(out, result)
+
+    def summary(
+        self, job: Any, result: BridgeRun, files: list[str], seconds: float
+    ) -> dict[str, Any]:
+        return summary(result)
+
+    def inputs(self, job: Any) -> list[Path]:
+        return [job[1]]
+
+    def report(self, job: Any, result: BridgeRun, seconds: float, written: list[Path]) -> None:
+        fit = result.fit
+        beta = np.asarray(result.law.params.rotation)
+        print(
+            f"frictionlab bridge: {fit.beta_deg.size} directions; rotation = "
+            f"[{beta[0]:.6g}, {beta[1]:.6g}], orthotropy = [1, {fit.orthotropy[1]:.6g}], "
+            f"e*_1 at {fit.orthotropy_angle_deg:.4g} deg; rms misfit {fit.rms_misfit:.3g} "
+            f"({fit.relative_rms_misfit:.2%} of the mean friction), max {fit.max_misfit:.3g} "
+            f"at beta = {fit.beta_at_max_misfit_deg:g} deg"
+        )
+        print(
+            f"steady sliding at {result.scenario.options.velocity:g} m/s in {fit.beta_deg.size} "
+            f"directions: simulated vs closed form, largest difference "
+            f"{result.difference.max():.2e} in f_t/f_n"
+        )
+        print("wrote " + ", ".join(str(p) for p in written))
+
+    def notes(self, job: Any, result: BridgeRun) -> list[str]:
+        return [] if result.fit.expressible else [f"frictionlab bridge: {result.fit.note}"]
+
+    def failure(self, job: Any, result: BridgeRun, out: Path) -> str | None:
+        if result.check_passed:
+            return None
+        return (
+            "the simulated steady sliding differs from the law's closed form by "
+            f"{result.difference.max():.3g} in f_t/f_n (> [bridge].check_tolerance = "
+            f"{result.scenario.options.check_tolerance:g}); increase [bridge].distance or "
+            "[bridge].steps"
+        )
+
+
+#: The bridge workflow.
+BRIDGE = Bridge()
+
+
+def write_bridge(out: Path, run: BridgeRun) -> list[Path]:
+    """Write the files of ``run`` into ``out`` (summary.json and bridge.json last)."""
+    job = (run.scenario, run.source)
+    return write_outputs(BRIDGE, job, run, Path(out), plots=True, seconds=0.0)

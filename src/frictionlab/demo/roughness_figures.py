@@ -18,13 +18,13 @@ not available (docs/roughness.md).
 
 from __future__ import annotations
 
-import contextlib
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from frictionlab._progress import ProgressFactory, no_progress
 from frictionlab.io.atomic import write_bytes_atomic
 from frictionlab.io.report import Section
 from frictionlab.io.tables import write_csv_atomic
@@ -46,17 +46,10 @@ __all__ = [
 #: Subdirectory of the report directory holding the roughness figures and tables.
 FOLDER = "roughness"
 
-ProgressFactory = Callable[[str], contextlib.AbstractContextManager[Callable[[int, int], None]]]
-
 MU0 = 0.3
 #: Demo resolutions (full contact): 1-D lattices and 2-D lattices.
 DEMO_1D = LatticeSettings(stations=2000, time_samples=40)
 DEMO_2D = LatticeSettings(stations=32, time_samples=16)
-
-
-@contextlib.contextmanager
-def _no_progress(description: str) -> Iterator[Callable[[int, int], None]]:
-    yield lambda done, total: None
 
 
 class _Writer:
@@ -69,7 +62,7 @@ class _Writer:
     def figure(self, name: str, fig: Any) -> str:
         from frictionlab.plotting.roughness import figure_png_bytes
 
-        write_bytes_atomic(self.folder / f"{name}.png", figure_png_bytes(fig, dpi=100))
+        write_bytes_atomic(self.folder / f"{name}.png", figure_png_bytes(fig))
         return f"{FOLDER}/{name}.png"
 
     def table(self, name: str, columns: Any, units: Any, description: str) -> None:
@@ -341,7 +334,7 @@ def _run(
     total: int,
 ) -> Section:
     writer = _Writer(Path(out_dir))
-    with (progress or _no_progress)(description) as update:
+    with (progress or no_progress)(description) as update:
         done = 0
 
         def step() -> None:

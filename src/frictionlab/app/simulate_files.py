@@ -36,10 +36,9 @@ from frictionlab.driver.table import (
     history_units,
 )
 from frictionlab.errors import FrictionlabError
-from frictionlab.io.atomic import atomic_path, write_json_atomic
-from frictionlab.io.provenance import stamp
+from frictionlab.io.atomic import atomic_path
 from frictionlab.io.scenario import OutputOptions, Scenario
-from frictionlab.io.tables import format_csv, write_csv_atomic
+from frictionlab.io.tables import format_csv_bytes, write_csv_atomic
 
 __all__ = [
     "HISTORY_UNITS",
@@ -48,8 +47,10 @@ __all__ = [
     "HistoryStream",
     "history_columns",
     "point_figures",
+    "print_report",
+    "scenario_inputs",
     "summarise",
-    "write_results",
+    "write_files",
 ]
 
 #: Points listed one by one in summary.json (every point is in points.csv).
@@ -102,10 +103,12 @@ def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict
 def _write_csv_blocks(path: Path, cols: dict[str, np.ndarray], units: dict[str, str]) -> Path:
     """Like ``write_csv_atomic``, formatting CSV_BLOCK lines at a time (bounded memory)."""
     n = len(next(iter(cols.values())))
-    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="") as handle:
+    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
         for start in range(0, max(n, 1), CSV_BLOCK):
-            text = format_csv({k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units)
-            handle.write(text if start == 0 else text[text.index("\n") + 1 :])
+            text = format_csv_bytes(
+                {k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units
+            )
+            handle.write(text if start == 0 else text[text.index(b"\n") + 1 :])
     return path
 
 
@@ -125,7 +128,7 @@ class HistoryStream:
         self.extra = tuple(extra or ())
         self.units.update(extra or {})
         self.rows = 0
-        self._file = open(self.path, "w", encoding="utf-8", newline="")  # noqa: SIM115
+        self._file = open(self.path, "wb")  # noqa: SIM115
 
     def __call__(self, chunk: dict[str, np.ndarray]) -> None:
         rows, m = chunk["time"].shape
@@ -136,9 +139,9 @@ class HistoryStream:
 
     def _write(self, chunk: dict[str, np.ndarray]) -> None:
         cols = chunk_columns(chunk, self.extra)
-        text = format_csv(cols, self.units)
+        text = format_csv_bytes(cols, self.units)
         if self.rows:
-            text = text[text.index("\n") + 1 :]
+            text = text[text.index(b"\n") + 1 :]
         self._file.write(text)
         self.rows += len(cols["step"])
 
@@ -431,44 +434,34 @@ def plot_rows(history: History, limit: int = PLOT_ROWS) -> History:
     return take_rows(history, np.unique(np.concatenate([spread, np.asarray(ends, np.int64)])))
 
 
-def write_results(
-    out_dir: str | os.PathLike[str],
+def write_files(
+    out: Path,
     scenario: Scenario,
     history: History,
-    elapsed: float,
-    plots: bool = True,
-    streamed: HistoryStream | None = None,
+    plots: bool,
+    streamed: HistoryStream | None,
+    healing: Healing | None,
 ) -> list[Path]:
-    """Write history.csv, points.csv, the plots and summary.json (last); return the paths.
+    """Write history.csv (unless ``streamed`` wrote it during the run), points.csv,
+    healing.csv and the plots; return the paths (summary.json is written after them).
 
     ``streamed``: the :class:`HistoryStream` that already wrote history.csv during the
     run (``history`` then holds the rows kept in memory, for the plots).
     """
-    out = Path(out_dir)
     written: list[Path] = []
     if streamed is not None:
         written.append(streamed.path)
-        recorded_rows = streamed.rows // max(history.n_points, 1)
     else:
         chosen = select_rows(history, scenario.output)
         cols, units = history_columns(chosen, cone=scenario.params.is_cone)
         written.append(write_csv_atomic(out / "history.csv", cols, units))
-        recorded_rows = chosen.n_rows
     written.append(_write_points(out, history, scenario.params.is_cone))
-    healing = healing_analysis(history) if scenario.kind == "program" else None
     if healing is not None:
         written.append(_write_healing(out, healing))
     if plots and history.n_rows > 1:
         written.extend(_plots(out, scenario, history))
         if healing is not None:
             written.append(_plot_healing(out, scenario, healing))
-    names = [p.name for p in written] + ["summary.json"]
-    summary = stamp(
-        summarise(scenario, history, elapsed, names, healing, recorded_rows),
-        names,
-        _inputs(scenario),
-    )
-    written.append(write_json_atomic(out / "summary.json", summary))
     return written
 
 
@@ -486,7 +479,7 @@ def _write_points(out: Path, history: History, cone: bool) -> Path:
     return _write_csv_blocks(out / "points.csv", cols, units)
 
 
-def _inputs(scenario: Scenario) -> list[Path]:
+def scenario_inputs(scenario: Scenario) -> list[Path]:
     """The scenario file and the table files its programme reads."""
     if not scenario.source:
         return []
@@ -573,3 +566,29 @@ def _plots(out: Path, scenario: Scenario, full: History) -> list[Path]:
         ax.set_title(title, fontsize=9)
         paths.append(save_figure(ax.figure, out / "traction_path.png"))  # type: ignore[arg-type]
     return paths
+
+
+def print_report(labels: tuple[str, ...], history: History, elapsed: float) -> None:
+    """The terminal lines of a run: peak and final friction per point, restart peaks."""
+    fig = point_figures(history)
+    peak, final = fig["peak_friction_ratio"], fig["final_friction_ratio"]
+    n = peak.size
+    steps = history.stats.steps if history.stats is not None else history.n_rows - 1
+    print(f"{n} point(s), {steps} steps in {elapsed:.2f} s "
+          f"({history.work['substeps']} substeps, {history.work['solves']} solves)")  # fmt: skip
+    print(f"{'point':>5} {'peak |f_t|/f_n':>15} {'final |f_t|/f_n':>16}  label")
+    for i in range(min(n, 12)):
+        label = labels[i] if i < len(labels) else ""
+        print(f"{i + 1:>5} {peak[i]:>15.5f} {final[i]:>16.5f}  {label}")
+    if n > 12:
+        print(f"  ... {n - 12} more points in points.csv")
+    healing = healing_analysis(history)
+    if healing is None:
+        return
+    print(f"restart peaks after holds ({len(healing.records)}; all in healing.csv):")
+    print(f"{'point':>5} {'hold [s]':>10} {'before':>9} {'peak':>9} {'delta mu':>9}")
+    for r in healing.records[:12]:
+        print(f"{r.point:>5} {r.hold_time:>10.4g} {r.friction_before:>9.5f} "
+              f"{r.restart_peak:>9.5f} {r.delta_mu:>9.5f}")  # fmt: skip
+    if healing.rate_per_decade is not None:
+        print(f"healing rate d(delta mu)/d log10(t_h) = {healing.rate_per_decade:.5g} per decade")

@@ -1,14 +1,16 @@
-"""Outputs of a calibration: ``fitted.toml``, ``fit.json``, ``curves.csv``, figures, report.
+"""The calibration workflow: fit, profiles, then ``fitted.toml``, ``summary.json``, figures.
 
 ``fitted.toml`` is a simulate scenario (the fitted law with the first curve's initial
 contact and programme) that ``frictionlab simulate`` runs as it is; further curves get
-``fitted_2.toml``, ... ``fit.json`` holds ``parameters`` (name -> value, stderr, ...), the
-``correlation`` matrix, ``cost``, ``n_points``, the identifiability in words and the
-profiles. Every file is written atomically, ``fit.json`` last.
+``fitted_2.toml``, ... ``summary.json`` (``fit.json``: its deprecated copy) holds
+``parameters`` (name -> value, stderr, ...), the ``correlation`` matrix, ``cost``,
+``n_points``, the identifiability in words and the profiles. Every file is written
+atomically, the summary last. :data:`CALIBRATE` is the workflow of ``frictionlab calibrate``.
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -16,22 +18,23 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
+from frictionlab.app.outputs import write_outputs
 from frictionlab.calibration import (
     CORRELATION_LIMIT,
     RELATIVE_STDERR_LIMIT,
     FitResult,
     Profile,
 )
-from frictionlab.io.atomic import write_json_atomic, write_text_atomic
+from frictionlab.io.atomic import write_text_atomic
 from frictionlab.io.calibration_config import CalibrationConfig
 from frictionlab.io.config import format_toml
-from frictionlab.io.provenance import stamp
 from frictionlab.io.report import Report, Section, format_value
 from frictionlab.io.scenario import law_table
 from frictionlab.io.tables import write_csv_atomic
 
-__all__ = ["CalibrationRun", "identifiability", "parameter_unit", "write_calibration"]
+__all__ = ["CALIBRATE", "CalibrationRun", "identifiability", "parameter_unit", "write_calibration"]
 
 _CONE_UNITS = {"mu_s": "-", "mu_k": "-", "u": "1/m", "kappa": "1/m", "xi": "1/s"}
 _CLOSED_UNITS = {"F_s": "Pa", "F_k": "Pa", "M": "-", "u": "1/m", "kappa": "Pa/m", "xi": "Pa/s"}
@@ -194,10 +197,8 @@ def _curve_columns(run: CalibrationRun) -> tuple[dict[str, np.ndarray], dict[str
     return arrays, units
 
 
-def write_calibration(
-    out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path
-) -> list[Path]:
-    """Write every output into ``out_dir`` (fit.json last); returns the paths written."""
+def _files(out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path) -> list[Path]:
+    """Write every output but the summary into ``out_dir``; returns the paths written."""
     from frictionlab.plotting.calibration import plot_correlation, plot_curve_fit, plot_profile
     from frictionlab.plotting.law import save_figure
 
@@ -267,11 +268,88 @@ def write_calibration(
             "(dots) and the linearised parabola (dashed).",
         )
     written.append(report.write(out / "report.html"))
-    names = [p.name for p in written] + ["fit.json"]
-    cfg = run.config
-    inputs = []
-    if cfg.source:  # the config file, then the data files it names (relative to it)
-        inputs = [Path(cfg.source)] + [Path(cfg.source).parent / e["file"] for e in cfg.data_echo]
-    summary = stamp(fit_summary(run, names), names, inputs)
-    written.append(write_json_atomic(out / "fit.json", summary))
     return written
+
+
+def _inputs(cfg: CalibrationConfig) -> list[Path]:
+    """The config file, then the data files it names (relative to it)."""
+    if not cfg.source:
+        return []
+    return [Path(cfg.source)] + [Path(cfg.source).parent / e["file"] for e in cfg.data_echo]
+
+
+class Calibrate:
+    """``frictionlab calibrate CONFIG.toml --out DIR`` (:mod:`frictionlab.commands.calibrate`)."""
+
+    name = "calibrate"
+    #: fit.json: the summary's name before; a copy of summary.json for one release.
+    aliases: tuple[str, ...] = ("fit.json",)
+
+    def parse(self, args: argparse.Namespace, out: Path) -> tuple[CalibrationConfig, Path]:
+        from frictionlab.io.calibration_config import load_calibration
+
+        return load_calibration(args.config, args.set), Path(args.config)
+
+    def run(self, job: Any, progress: ProgressFactory, staging: Path) -> CalibrationRun:
+        from frictionlab.calibration import evaluate_columns, fit_law, profile_likelihood
+
+        cfg, path = job
+        x0 = np.array([[float(getattr(cfg.params, n))] for n in cfg.names])
+        start_models = tuple(evaluate_columns(cfg.params, cfg.names, x0, c)[0] for c in cfg.curves)
+        with progress(f"calibrate {path.name}") as update:
+            fit = fit_law(
+                cfg.params, cfg.curves, cfg.names, cfg.bounds,
+                max_nfev=cfg.max_evaluations, progress=update,
+            )  # fmt: skip
+        profiles = {}
+        if cfg.profile:
+            for name in fit.worst_identified(cfg.profile_max):
+                with progress(f"profile {name}") as update:
+                    profiles[name] = profile_likelihood(
+                        fit, cfg.curves, name, points=cfg.profile_points, progress=update
+                    )
+        return CalibrationRun(cfg, fit, start_models, profiles)
+
+    def files(self, job: Any, result: CalibrationRun, out: Path, plots: bool) -> list[Path]:
+        return _files(out, result, job[1].parent)
+
+    def summary(
+        self, job: Any, result: CalibrationRun, files: list[str], seconds: float
+    ) -> dict[str, Any]:
+        return fit_summary(result, files)
+
+    def inputs(self, job: Any) -> list[Path]:
+        return _inputs(job[0])
+
+    def report(self, job: Any, result: CalibrationRun, seconds: float, written: list[Path]) -> None:
+        fit, cfg = result.fit, result.config
+        print(f"frictionlab calibrate: {len(cfg.curves)} curve(s), {fit.n_points} samples, "
+              f"{fit.nfev} evaluations ({fit.runs} driver runs) in {seconds:.2f} s; "
+              f"{fit.message}")  # fmt: skip
+        print(f"{'parameter':>10} {'start':>12} {'fitted':>12} {'stderr':>10} {'rel':>7}")
+        for j, name in enumerate(fit.names):
+            se, rel = fit.stderr[j], fit.relative_stderr[j]
+            print(f"{name:>10} {fit.start[j]:>12.5g} {fit.values[j]:>12.6g} {se:>10.3g} "
+                  f"{rel:>7.1%}")  # fmt: skip
+        print(f"residual std {np.sqrt(fit.residual_variance):.3g} (friction ratio)")
+        for line in identifiability(fit, result.profiles):
+            print("  " + line)
+        print("wrote " + ", ".join(str(p) for p in written))
+
+    def notes(self, job: Any, result: CalibrationRun) -> list[str]:
+        return []
+
+    def failure(self, job: Any, result: CalibrationRun, out: Path) -> str | None:
+        return None
+
+
+#: The calibration workflow.
+CALIBRATE = Calibrate()
+
+
+def write_calibration(
+    out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path
+) -> list[Path]:
+    """Write every output into ``out_dir`` (summary.json and fit.json last)."""
+    job = (run.config, base / "config.toml")
+    return write_outputs(CALIBRATE, job, run, Path(out_dir), plots=True, seconds=0.0)

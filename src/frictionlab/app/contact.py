@@ -1,4 +1,4 @@
-"""Outputs of ``frictionlab contact``: global.csv, interface.csv, plots, summary.json.
+"""The contact workflow (``frictionlab contact``): global.csv, interface.csv, plots, summary.
 
 Every file is written atomically; summary.json is written last, so its presence means
 the others are complete. A failed run writes the rows computed before the failure.
@@ -6,23 +6,25 @@ the others are complete. A failed run writes the rows computed before the failur
 
 from __future__ import annotations
 
+import argparse
 import datetime as _dt
 import os
 import platform
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
+from frictionlab.app.outputs import write_outputs
 from frictionlab.contact.history import ContactHistory, front_arrival, slip_front
 from frictionlab.driver.simulate import status_labels
-from frictionlab.io.atomic import write_json_atomic
 from frictionlab.io.contact_scenario import ContactScenario
-from frictionlab.io.provenance import stamp
 from frictionlab.io.tables import write_csv_atomic
 
-__all__ = ["contact_summary", "write_contact_results"]
+__all__ = ["CONTACT", "contact_summary", "run_contact_scenario", "write_contact_results"]
 
 
 def _global_columns(
@@ -149,6 +151,103 @@ def contact_summary(
     }
 
 
+def _files(
+    out: Path, scenario: ContactScenario, history: ContactHistory, plots: bool
+) -> list[Path]:
+    """Write the CSV tables and the plots; return the paths (the summary comes after)."""
+    head = (
+        f"frictionlab {__version__} contact run of '{scenario.title or scenario.source}'\n"
+        f"forces per unit depth; success = {str(history.success).lower()}"
+    )
+    written = []
+    cols, units = _global_columns(history, scenario.front_ratio)
+    written.append(write_csv_atomic(out / "global.csv", cols, units, head))
+    cols, units = _interface_columns(history, scenario.params.is_cone)
+    written.append(write_csv_atomic(out / "interface.csv", cols, units, head))
+    if plots and history.n_rows > 1:
+        written.extend(_plots(out, scenario, history))
+    return written
+
+
+def run_contact_scenario(
+    scenario: ContactScenario, progress: Callable[[int, int], None] | None = None
+) -> ContactHistory:
+    """Run a parsed contact scenario (a failed step is a history with success False)."""
+    from frictionlab.contact import run_contact
+
+    return run_contact(
+        scenario.block, scenario.params, scenario.normal, scenario.program,
+        options=scenario.options, drive=scenario.drive, progress=progress,
+    )  # fmt: skip
+
+
+class Contact:
+    """``frictionlab contact SCENARIO.toml --out DIR`` (:mod:`frictionlab.commands.contact`)."""
+
+    name = "contact"
+    aliases: tuple[str, ...] = ()
+
+    def parse(self, args: argparse.Namespace, out: Path) -> ContactScenario:
+        from frictionlab.contact._fem import require_skfem
+        from frictionlab.io.contact_scenario import load_contact_scenario
+
+        scenario = load_contact_scenario(args.scenario, args.set)  # every input check is here
+        require_skfem()
+        return scenario
+
+    def run(self, job: ContactScenario, progress: ProgressFactory, staging: Path) -> ContactHistory:
+        name = Path(job.source).name if job.source else "scenario"
+        with progress(f"contact {name}") as update:
+            return run_contact_scenario(job, update)
+
+    def files(
+        self, job: ContactScenario, result: ContactHistory, out: Path, plots: bool
+    ) -> list[Path]:
+        return _files(out, job, result, plots)
+
+    def summary(
+        self, job: ContactScenario, result: ContactHistory, files: list[str], seconds: float
+    ) -> dict[str, Any]:
+        return contact_summary(job, result, seconds, files)
+
+    def inputs(self, job: ContactScenario) -> list[Path]:
+        return [Path(job.source)] if job.source else []
+
+    def report(
+        self, job: ContactScenario, history: ContactHistory, seconds: float, written: list[Path]
+    ) -> None:
+        peak = history.peak_index
+        steps = history.iterations[1:]
+        print(
+            f"{history.n_rows - 1} steps in {seconds:.2f} s, {int(steps.sum())} Newton "
+            f"iterations (at most {int(steps.max(initial=0))} in a step)"
+        )
+        print(
+            f"peak Q/P = {history.friction_ratio[peak]:.4f} at a top displacement of "
+            f"{history.top_displacement[peak] * 1e6:.3g} um; final Q/P = "
+            f"{history.friction_ratio[-1]:.4f}"
+        )
+        arrival = front_arrival(history, job.front_ratio)
+        if arrival is not None:
+            print(
+                f"the sliding zone spans the interface at {100 * arrival['fraction_of_peak']:.1f}"
+                f" % of the peak force (t = {arrival['time']:.4g} s)"
+            )
+        print("wrote " + ", ".join(str(p) for p in written))
+
+    def notes(self, job: ContactScenario, result: ContactHistory) -> list[str]:
+        return []
+
+    def failure(self, job: ContactScenario, history: ContactHistory, out: Path) -> str | None:
+        if history.success:
+            return None
+        return f"{history.message}; the rows up to the failure are in {out / 'global.csv'}"
+
+
+#: The contact workflow.
+CONTACT = Contact()
+
+
 def write_contact_results(
     out_dir: str | os.PathLike[str],
     scenario: ContactScenario,
@@ -157,24 +256,7 @@ def write_contact_results(
     plots: bool = True,
 ) -> list[Path]:
     """Write the CSV tables, the plots and summary.json (last); return the paths."""
-    out = Path(out_dir)
-    cone = scenario.params.is_cone
-    head = (
-        f"frictionlab {__version__} contact run of '{scenario.title or scenario.source}'\n"
-        f"forces per unit depth; success = {str(history.success).lower()}"
-    )
-    written = []
-    cols, units = _global_columns(history, scenario.front_ratio)
-    written.append(write_csv_atomic(out / "global.csv", cols, units, head))
-    cols, units = _interface_columns(history, cone)
-    written.append(write_csv_atomic(out / "interface.csv", cols, units, head))
-    if plots and history.n_rows > 1:
-        written.extend(_plots(out, scenario, history))
-    names = [p.name for p in written] + ["summary.json"]
-    summary = contact_summary(scenario, history, elapsed, names)
-    inputs = [scenario.source] if scenario.source else []
-    written.append(write_json_atomic(out / "summary.json", stamp(summary, names, inputs)))
-    return written
+    return write_outputs(CONTACT, scenario, history, Path(out_dir), plots=plots, seconds=elapsed)
 
 
 def _plots(out: Path, scenario: ContactScenario, history: ContactHistory) -> list[Path]:

@@ -1,0 +1,602 @@
+"""The roughness workflow (``frictionlab roughness SCENARIO.toml --out DIR``): mu(beta).
+
+Reads a scenario (see :mod:`frictionlab.io.roughness_scenario`), runs the lattice-spring
+model over the requested sliding directions and writes, each file atomically and only
+after everything has been computed and rendered:
+
+* ``DIR/polar.csv``: one row per requested direction (``beta_deg, mu_x, mu_y, mu,
+  mu_over_mu0, mu_magnitude, mu_projection, contact_fraction_min, contact_fraction_mean,
+  time_samples``; ``mu_apparent`` too when k_t > 0), units in a header line;
+* ``DIR/summary.json``: inputs, lattice geometry, extremes of mu, the closed-form check
+  (Eqs 15-16) when both surfaces are wedges or flat, the work done;
+* ``DIR/polar.png``: mu/mu0 on polar axes over the full circle (extra directions every
+  ``plot_step_deg`` are computed for it unless ``plot_full_circle = false``), and both
+  surfaces.
+
+Optional tables of the scenario add (see :mod:`frictionlab.io.roughness_scenario`):
+
+* ``[adhesion]``: ``adhesion.csv`` (one row per load and direction: tangential force,
+  mu_compressed, mu_apparent (Eq 22; an empty field at L = 0 with
+  ``mu_apparent_defined = false``), fractions of compressed and stretched springs) and
+  ``adhesion.png``;
+* ``[wear]``: ``wear.csv`` (mu(t) from 0 to T_w per direction) and ``wear.png``;
+* ``[hierarchy]``: ``hierarchy.csv`` (mu_i of every level per direction; invalid levels
+  as empty fields with ``valid = false``) and ``hierarchy.png``;
+* ``[hierarchy]`` with ``[wear]``: also ``hierarchy_wear.csv`` (B_i and mu_i of every
+  level over the whole life) and ``hierarchy_wear.png``.
+* ``[multiscale]``: ``multiscale.csv`` (mu(beta) against the shortest wavelength
+  retained: ``cutoff_m, beta_deg, mu, mu_over_mu0, valid``) and ``multiscale.png``.
+
+``--quiet`` hides the progress bar (one step per direction), warnings and the summary
+line; ``--no-plots`` skips every PNG. With ``[sliding] on_invalid = "mask"`` contacts
+violating Eq 1 are dropped and ``polar.csv`` gains ``invalid_fraction``. summary.json
+records the provenance of each surface (file name, sha256, preparation, rms height and
+slope after filtering; Hurst exponent and seed of generated ones), every direction
+computed, the invalid fraction per direction and the warnings (e.g. the edge step of
+``periodicity = "assume"``, also printed on stderr).
+
+Bad input (unknown kind, missing key, angle outside (0, 90), unreadable file, NaN
+heights, mu0 <= 0 or beyond the validity bound of Eq 1, a negative wear coefficient, a
+zero hardness, levels that are not strictly nested, an empty load sweep) ends with one
+line on stderr and exit code 2; nothing is written. A validity failure comes within
+seconds (full contact checks all directions in one pass, partial contact stops at the
+first offending sample) and says where, how much, and what to do.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from frictionlab._progress import ProgressFactory
+from frictionlab._version import __version__
+from frictionlab.errors import InputError, ParameterError, ValidityError
+from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
+from frictionlab.io.config import apply_overrides, load_toml
+from frictionlab.io.roughness_scenario import RoughnessScenario, parse_roughness_scenario
+from frictionlab.io.tables import format_csv
+from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
+from frictionlab.roughness.closed_forms import wedge_friction
+from frictionlab.roughness.full_contact import full_contact_sums
+from frictionlab.roughness.generators import FlatProfile, WedgeProfile
+from frictionlab.roughness.hierarchy import (
+    HierarchyResult,
+    HierarchyWearHistory,
+    hierarchy_friction,
+    hierarchy_wear,
+)
+from frictionlab.roughness.lattice import (
+    FrictionPolar,
+    LatticeGeometry,
+    LatticeSettings,
+    friction_polar,
+    lattice_geometry,
+    merge_polars,
+)
+from frictionlab.roughness.multiscale import MultiscaleResult, multiscale_friction
+from frictionlab.roughness.surface import Surface
+from frictionlab.roughness.wear import WearHistory, wear_history
+
+__all__ = ["ROUGHNESS", "RoughnessJob", "RoughnessRun"]
+
+
+@dataclass(frozen=True)
+class RoughnessJob:
+    """A parsed roughness scenario, the file it came from and its TOML data."""
+
+    scenario: RoughnessScenario
+    path: Path
+    data: dict[str, Any]
+    plots: bool
+
+
+@dataclass(frozen=True)
+class RoughnessRun:
+    """The requested polar, the polar drawn (full circle) and the extension results."""
+
+    polar: FrictionPolar
+    plot_polar: FrictionPolar
+    extensions: dict[str, Any]
+
+
+class Roughness:
+    """``frictionlab roughness SCENARIO.toml --out DIR`` (:mod:`frictionlab.commands.roughness`)."""
+
+    name = "roughness"
+    aliases: tuple[str, ...] = ()
+
+    def parse(self, args: argparse.Namespace, out: Path) -> RoughnessJob:
+        path = Path(args.scenario)
+        data = apply_overrides(load_toml(path), args.set)
+        scenario = parse_roughness_scenario(data, path.parent)
+        if not args.quiet:
+            for text in scenario.warnings:
+                print(f"frictionlab roughness: warning: {text}", file=sys.stderr)
+        return RoughnessJob(scenario, path, data, not args.no_plots)
+
+    def run(self, job: RoughnessJob, progress: ProgressFactory, staging: Path) -> RoughnessRun:
+        scenario = job.scenario
+        try:
+            with progress(f"roughness {job.path.name}") as update:
+                polar = friction_polar(
+                    scenario.lower, scenario.upper, scenario.mu0, scenario.beta_deg,
+                    settings=scenario.settings, progress=update,
+                )  # fmt: skip
+                if not np.all(polar.in_contact):
+                    beta = float(polar.beta_deg[int(np.argmin(polar.in_contact))])
+                    raise InputError(
+                        f"[sliding].load = {scenario.settings.load} compresses no spring at "
+                        f"beta = {beta:g} deg, so mu is undefined there: allowed a load that "
+                        "keeps some spring compressed (sweeps through zero and tension belong "
+                        "in [adhesion])"
+                    )
+                plot_polar = _full_circle(scenario, polar, update) if job.plots else polar
+            extensions = _extensions(scenario)
+        except ValidityError as exc:
+            # Full contact fails in its one pass over all directions, partial contact at the
+            # first offending time sample: either way within seconds, before the rest.
+            raise ValidityError(f"{exc}.{_diagnose(scenario)} {_ways_forward(scenario)}") from None
+        return RoughnessRun(polar, plot_polar, extensions)
+
+    def files(self, job: RoughnessJob, result: RoughnessRun, out: Path, plots: bool) -> list[Path]:
+        scenario = job.scenario
+        files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, result.polar, job.path)}
+        files.update(_extension_files(scenario, result.extensions, job.path, plots))
+        if plots:
+            files["polar.png"] = _png(scenario, result.plot_polar)
+        written = []
+        for name, content in files.items():
+            if isinstance(content, bytes):
+                written.append(write_bytes_atomic(out / name, content))
+            else:
+                written.append(write_text_atomic(out / name, content))
+        return written
+
+    def summary(
+        self, job: RoughnessJob, result: RoughnessRun, files: list[str], seconds: float
+    ) -> dict[str, Any]:
+        scenario = job.scenario
+        summary = _summary(scenario, result.polar, result.plot_polar, job.path, seconds)
+        summary.update(_extension_summary(scenario, result.extensions))
+        summary["files"] = _names(files)
+        return summary
+
+    def inputs(self, job: RoughnessJob) -> list[Path]:
+        return _input_files(job.path, job.data)
+
+    def report(
+        self, job: RoughnessJob, result: RoughnessRun, seconds: float, written: list[Path]
+    ) -> None:
+        ratio = result.polar.mu_over_mu0
+        folder = written[0].parent
+        names = ", ".join(str(folder / name) for name in _names([p.name for p in written]))
+        print(
+            f"frictionlab roughness: {result.polar.beta_deg.size} directions in {seconds:.3g} s, "
+            f"mu/mu0 from {np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; wrote {names}"
+        )
+
+    def notes(self, job: RoughnessJob, result: RoughnessRun) -> list[str]:
+        return []
+
+    def failure(self, job: RoughnessJob, result: RoughnessRun, out: Path) -> str | None:
+        return None
+
+
+#: The roughness workflow.
+ROUGHNESS = Roughness()
+
+
+def _names(files: list[str]) -> list[str]:
+    """The output names in summary order: polar.csv, summary.json, polar.png, the rest."""
+    fixed = ("polar.csv", "summary.json", "polar.png")
+    extra = sorted(name for name in files if name not in fixed)
+    return ["polar.csv", "summary.json", *(["polar.png"] if "polar.png" in files else []), *extra]
+
+
+def _station_gradients(
+    lower: Surface, upper: Surface, settings: LatticeSettings
+) -> tuple[LatticeGeometry, tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
+    geometry = lattice_geometry(lower, upper, settings.stations)
+    xs, ys = geometry.station_coordinates()
+    px, py = settings.phase
+    n = geometry.n_stations
+    _, g1x, g1y = (np.broadcast_to(a, geometry.shape).ravel() for a in lower.evaluate(xs, ys))
+    _, g2x, g2y = (
+        np.broadcast_to(a, geometry.shape).ravel() for a in upper.evaluate(xs - px, ys - py)
+    )
+    assert g1x.size == n
+    return geometry, (g1x, g1y), (g2x, g2y)
+
+
+def _diagnose(scenario: RoughnessScenario) -> str:
+    """Where full contact violates Eq 1 (one pass over every direction): the fraction of
+    contacts, and whether the worst lies on an edge step made by periodicity='assume'."""
+    s = scenario.settings
+    geometry, g1, g2 = _station_gradients(scenario.lower, scenario.upper, s)
+    beta = scenario.beta_deg
+    sums = full_contact_sums(
+        scenario.mu0, g1, g2, np.cos(np.radians(beta)), np.sin(np.radians(beta)),
+        engine=s.engine,
+    )  # fmt: skip
+    if not np.any(sums.invalid):
+        return ""
+    d = int(np.argmax(sums.invalid_fraction))
+    station = int(sums.worst_station[d])
+    family = int(sums.worst_family[d])
+    side = "lower" if family == 1 else "upper"
+    surface = scenario.lower if family == 1 else scenario.upper
+    xs, ys = geometry.station_coordinates()
+    idx = np.unravel_index(station, geometry.shape)
+    x = float(np.ravel(xs)[idx[0]])
+    y = float(np.ravel(ys)[idx[1]]) if geometry.dimension == 2 else 0.0
+    if family == 2:
+        x, y = x - s.phase[0], y - s.phase[1]
+    _, gx, gy = surface.evaluate(np.array([x]), np.array([y]))
+    phi = math.degrees(math.atan(math.hypot(float(gx[0]), float(gy[0]))))
+    where = f"x = {x:.6g} m" + (f", y = {y:.6g} m" if geometry.dimension == 2 else "")
+    text = (
+        f" In full contact {100 * sums.invalid_fraction[d]:.3g}% of the contacts violate "
+        f"Eq 1 at beta = {beta[d]:g} deg; the steepest is on the {side} surface at {where} "
+        f"(phi = {phi:.4g} deg)."
+    )
+    if _on_assumed_edge(scenario, side, surface, x, y):
+        text += (
+            f" It lies on the artificial edge step that periodicity = 'assume' creates in "
+            f"[{side}] (use 'mirror', window = 'hann' or detrend = 'height')."
+        )
+    return text
+
+
+def _on_assumed_edge(
+    scenario: RoughnessScenario, side: str, surface: Surface, x: float, y: float
+) -> bool:
+    """Whether (x, y) lies within one pixel of the wrap of a surface read with 'assume'."""
+    if scenario.sources.get(side, {}).get("periodicity") != "assume":
+        return False
+    grid = surface.grid_shape
+    periods = [p for p in surface.periods if p is not None]
+    if grid is None:
+        return False
+    for value, period, n in zip((x, y), periods, grid, strict=False):
+        u = (value % period) / (period / n)  # position in pixels from the origin
+        if u < 1.0 or u > n - 1.0:
+            return True
+    return False
+
+
+def _ways_forward(scenario: RoughnessScenario) -> str:
+    pixel = [
+        info["physical_sizes_m"][0] / info["points"][0]
+        for info in scenario.sources.values()
+        if "physical_sizes_m" in info and "points" in info
+    ]
+    cutoff = f" (e.g. short_cutoff = {4 * min(pixel):.3g} m, four pixels)" if pixel else ""
+    return (
+        "Ways forward: remove the pixel-scale slopes with short_cutoff in [lower]/[upper]"
+        f'{cutoff}, use a smaller mu0, or set on_invalid = "mask" in [sliding] to drop '
+        "the invalid contacts and report their area fraction"
+    )
+
+
+def _extensions(scenario: RoughnessScenario) -> dict[str, Any]:
+    """Adhesion, wear, hierarchy and hierarchy-with-wear results (only those requested)."""
+    out: dict[str, Any] = {}
+    s = scenario.settings
+    if scenario.adhesion is not None:
+        a = scenario.adhesion
+        kt = 0.5 * s.k_c if a.k_t is None else a.k_t
+        out["adhesion"] = adhesion_sweep(
+            scenario.lower, scenario.upper, scenario.mu0, a.loads, a.beta_deg, k_t=a.k_t,
+            compare_without_adhesion=a.compare_without_adhesion,
+            settings=replace(s, k_t=kt, detachment=a.detachment),
+        )  # fmt: skip
+    if scenario.wear is not None:
+        w = scenario.wear
+        out["wear"] = wear_history(
+            scenario.lower, scenario.upper, scenario.mu0, w.beta_deg, w.settings,
+            samples=w.samples, method=w.method, settings=s,
+        )  # fmt: skip
+    if scenario.hierarchy is not None:
+        h = scenario.hierarchy
+        out["hierarchy"] = hierarchy_friction(
+            h.levels, scenario.mu0, h.beta_deg, mu_passed=h.mu_passed, on_invalid=h.on_invalid,
+            settings=s,
+        )  # fmt: skip
+        if scenario.wear is not None:
+            out["hierarchy_wear"] = hierarchy_wear(
+                h.levels, scenario.mu0, h.beta_deg, scenario.wear.settings,
+                samples_per_level=h.samples_per_level, mu_passed=h.mu_passed, settings=s,
+            )  # fmt: skip
+    if scenario.multiscale is not None:
+        m = scenario.multiscale
+        try:
+            out["multiscale"] = multiscale_friction(
+                scenario.lower, scenario.upper, scenario.mu0, m.beta_deg, m.cutoffs,
+                mu_passed=m.mu_passed, drop=s.on_invalid == "drop", engine=s.engine,
+            )  # fmt: skip
+        except ParameterError as exc:
+            raise InputError(
+                f"[multiscale] needs sampled surfaces (kind = 'file' or 'self_affine') or flat "
+                f"ones: {exc}"
+            ) from None
+    return out
+
+
+def _extension_files(
+    scenario: RoughnessScenario, results: dict[str, Any], path: Path, plots: bool = True
+) -> dict[str, str | bytes]:
+    """CSV text and PNG bytes of every extension result, rendered before anything is written."""
+    from frictionlab.plotting.multiscale import multiscale_figure
+    from frictionlab.plotting.roughness import figure_png_bytes
+    from frictionlab.plotting.roughness_life import (
+        adhesion_figure,
+        hierarchy_figure,
+        hierarchy_wear_figure,
+        wear_figure,
+    )
+
+    title = scenario.title or path.name
+    files: dict[str, str | bytes] = {}
+    head = f"frictionlab {__version__} roughness: {title}\nmu0 = {scenario.mu0:g}"
+    if "adhesion" in results:
+        sweep: AdhesionSweep = results["adhesion"]
+        header = (
+            f"{head}, k_c = {sweep.k_c:g} N/m, k_t = {sweep.k_t:g} N/m; loads and forces per "
+            "spring (N); mu_apparent = R/L (Eq 22), empty where undefined (L = 0)"
+        )
+        files["adhesion.csv"] = format_csv(sweep.columns(), sweep.units(), header)
+        files["adhesion.png"] = figure_png_bytes(adhesion_figure(sweep, f"adhesion: {title}"))
+    if "wear" in results:
+        history: WearHistory = results["wear"]
+        header = (
+            f"{head}, wear time T_w = {history.wear_time:.9g} s, volume {history.volume:.9g} m^3, "
+            f"surfaces = {history.wear.surfaces}, method = {history.method}"
+        )
+        files["wear.csv"] = format_csv(history.columns(), history.units(), header)
+        files["wear.png"] = figure_png_bytes(wear_figure(history, f"wear: {title}"))
+    if "hierarchy" in results:
+        result: HierarchyResult = results["hierarchy"]
+        header = (
+            f"{head}, {result.n_levels} levels (level 0: the local mu0), mu passed upward: "
+            f"{result.mu_passed}; invalid levels empty with valid = false"
+        )
+        files["hierarchy.csv"] = format_csv(result.columns(), result.units(), header)
+        files["hierarchy.png"] = figure_png_bytes(hierarchy_figure(result, f"hierarchy: {title}"))
+    if "hierarchy_wear" in results:
+        life: HierarchyWearHistory = results["hierarchy_wear"]
+        drop = ", ".join(f"{t:.6g}" for t in life.dropout_time)
+        header = f"{head}, levels flat (drop out) at t = {drop} s (Eq 35 windows)"
+        files["hierarchy_wear.csv"] = format_csv(life.columns(), life.units(), header)
+        files["hierarchy_wear.png"] = figure_png_bytes(
+            hierarchy_wear_figure(life, f"hierarchy with wear: {title}")
+        )
+    if "multiscale" in results:
+        ms: MultiscaleResult = results["multiscale"]
+        header = (
+            f"{head}; bands split at the cutoffs (wavelengths, m) by SurfaceTopography's "
+            f"shortcut filter, innermost band = shortest wavelengths, mu passed upward: "
+            f"{ms.mu_passed}; cutoff_m = shortest wavelength retained (last: Nyquist); "
+            "invalid values empty with valid = false"
+        )
+        files["multiscale.csv"] = format_csv(ms.columns(), ms.units(), header)
+        files["multiscale.png"] = figure_png_bytes(
+            multiscale_figure(ms, f"scale-resolved friction: {title}")
+        )
+    if not plots:
+        files = {k: v for k, v in files.items() if not k.endswith(".png")}
+    return files
+
+
+def _extension_summary(scenario: RoughnessScenario, results: dict[str, Any]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    if "adhesion" in results:
+        sweep: AdhesionSweep = results["adhesion"]
+        out["adhesion"] = {
+            "k_c_N_per_m": sweep.k_c,
+            "k_t_N_per_m": sweep.k_t,
+            "loads_per_spring_N": sweep.load.tolist(),
+            "beta_deg": sweep.beta_deg.tolist(),
+            "mu_apparent": [
+                [None if v is np.ma.masked else float(v) for v in row] for row in sweep.mu_apparent
+            ],
+            "detachment_m": scenario.adhesion.detachment if scenario.adhesion else None,
+        }
+    if "wear" in results:
+        history: WearHistory = results["wear"]
+        out["wear"] = {
+            **history.wear.as_dict(),
+            "wear_time_s": history.wear_time,
+            "roughness_volume_m3": history.volume,
+            "method": history.method,
+            "mu_initial": history.mu[0].tolist(),
+            "mu_final": history.mu[-1].tolist(),
+        }
+    if "hierarchy" in results:
+        result: HierarchyResult = results["hierarchy"]
+        out["hierarchy"] = {
+            "levels": result.n_levels,
+            "mu_passed": result.mu_passed,
+            "beta_deg": result.beta_deg.tolist(),
+            "mu_outermost": [None if v is np.ma.masked else float(v) for v in result.mu[-1]],
+            "first_invalid_level": result.first_invalid_level.tolist(),
+            "messages": list(result.messages),
+        }
+    if "hierarchy_wear" in results:
+        life: HierarchyWearHistory = results["hierarchy_wear"]
+        out["hierarchy_wear"] = {
+            "wear_time_per_level_s": life.wear_time.tolist(),
+            "dropout_time_per_level_s": life.dropout_time.tolist(),
+            "volume_per_level_m3": life.volume.tolist(),
+        }
+    if "multiscale" in results:
+        ms: MultiscaleResult = results["multiscale"]
+        mu = np.where(ms.valid, ms.mu, np.nan)
+        with np.errstate(invalid="ignore"):
+            anisotropy = np.nanmax(mu, axis=1) / np.nanmin(mu, axis=1)
+        out["multiscale"] = {
+            "cutoffs_m": list(scenario.multiscale.cutoffs) if scenario.multiscale else [],
+            "shortest_wavelength_retained_m": ms.cutoff_m.tolist(),
+            "beta_deg": ms.beta_deg.tolist(),
+            "band_rms_slope": ms.band_rms_slope.tolist(),
+            "anisotropy_max_over_min": [
+                None if not np.isfinite(v) else float(v) for v in anisotropy
+            ],
+            "all_valid": bool(ms.valid.all()),
+        }
+    return out
+
+
+def _full_circle(
+    scenario: RoughnessScenario,
+    polar: FrictionPolar,
+    progress: Callable[[int, int], None] | None = None,
+) -> FrictionPolar:
+    """The polar for the plot: requested directions plus the full circle at plot_step_deg."""
+    if not scenario.plot_full_circle:
+        return polar
+    have = np.round(np.mod(polar.beta_deg, 360.0), 9)
+    circle = np.arange(0.0, 360.0 - 1e-9, scenario.plot_step_deg)
+    extra = circle[~np.isin(np.round(circle, 9), have)]
+    if extra.size == 0:
+        return polar
+    more = friction_polar(
+        scenario.lower, scenario.upper, scenario.mu0, extra, settings=scenario.settings,
+        progress=progress,
+    )  # fmt: skip
+    return merge_polars(polar, more)
+
+
+def _csv_text(scenario: RoughnessScenario, polar: FrictionPolar, path: Path) -> str:
+    columns = polar.columns()
+    if scenario.settings.k_t == 0.0:
+        columns.pop("mu_apparent", None)
+    units = {"beta_deg": "deg"}
+    s = scenario.settings
+    header = (
+        f"frictionlab {__version__} roughness: {scenario.title or path.name}\n"
+        f"lower = {scenario.lower.kind}, upper = {scenario.upper.kind}, mu0 = {scenario.mu0:g}, "
+        f"mu = {s.mu_definition}, load = {s.load} (N per spring), control = {s.control}\n"
+        f"stations = {list(polar.geometry.shape)} over cell {_cell(polar)} m, time samples per "
+        "direction in column time_samples"
+    )
+    return format_csv(columns, units, header)
+
+
+def _cell(polar: FrictionPolar) -> list[float]:
+    return [c for c in polar.geometry.cell if c is not None]
+
+
+def _closed_form_check(scenario: RoughnessScenario, polar: FrictionPolar) -> dict[str, Any] | None:
+    """Eqs 15-16 against the lattice when both surfaces are wedges or flat profiles.
+
+    A diagnostic: exact in the dense limit for any beta with time averaging; at beta = 90
+    deg (static 1-D configuration) only when each face sees a uniform height distribution
+    (in-phase identical wedges, or a flat counter-face).
+    """
+    angles: list[float] = []
+    for surface in (scenario.lower, scenario.upper):
+        if isinstance(surface, WedgeProfile):
+            angles.extend(surface.angles_deg)
+        elif isinstance(surface, FlatProfile):
+            angles.extend((0.0, 0.0))
+        else:
+            return None
+    mu_x, mu_y = wedge_friction(scenario.mu0, angles, polar.beta_deg)
+    return {
+        "equations": "Eqs 15-16 (wedge closed forms)",
+        "angles_deg": angles,
+        "max_abs_diff_mu_x": float(np.max(np.abs(polar.mu_x - mu_x))),
+        "max_abs_diff_mu_y": float(np.max(np.abs(polar.mu_y - mu_y))),
+    }
+
+
+def _summary(
+    scenario: RoughnessScenario,
+    polar: FrictionPolar,
+    plot_polar: FrictionPolar,
+    path: Path,
+    seconds: float,
+) -> dict[str, Any]:
+    ratio = polar.mu_over_mu0
+    i_min, i_max = int(np.argmin(polar.mu)), int(np.argmax(polar.mu))
+    modes: dict[str, int] = {}
+    for mode in polar.travel_mode:
+        modes[mode] = modes.get(mode, 0) + 1
+    s = scenario.settings
+    return {
+        "frictionlab_version": __version__,
+        "command": "roughness",
+        "scenario_file": str(path),
+        "title": scenario.title,
+        "mu0": scenario.mu0,
+        "mu_definition": s.mu_definition,
+        "lower": scenario.lower.describe(),
+        "upper": scenario.upper.describe(),
+        "sources": scenario.sources,
+        "warnings": list(scenario.warnings),
+        "sliding": {
+            "beta_deg": [float(polar.beta_deg[0]), float(polar.beta_deg[-1])],
+            "directions": int(polar.beta_deg.size),
+            "load_per_spring_N": s.load,
+            "control": s.control,
+            "separation_m": s.separation,
+            "phase_m": list(s.phase),
+            "directions_deg": polar.beta_deg.tolist(),
+            "on_invalid": "mask" if s.on_invalid == "drop" else "error",
+            "invalid_fraction": polar.invalid_fraction.tolist(),
+        },
+        "lattice": {
+            **s.as_dict(),
+            "dimension": polar.geometry.dimension,
+            "cell_m": _cell(polar),
+            "stations_shape": list(polar.geometry.shape),
+            "travel_modes": modes,
+        },
+        "results": {
+            "mu_min": float(polar.mu[i_min]),
+            "beta_at_mu_min_deg": float(polar.beta_deg[i_min]),
+            "mu_max": float(polar.mu[i_max]),
+            "beta_at_mu_max_deg": float(polar.beta_deg[i_max]),
+            "mu_over_mu0_min": float(ratio.min()),
+            "mu_over_mu0_max": float(ratio.max()),
+            "anisotropy_max_over_min": float(polar.mu.max() / polar.mu.min()),
+            "contact_fraction_min": float(polar.contact_fraction_min.min()),
+        },
+        "closed_form_check": _closed_form_check(scenario, polar),
+        "work": {
+            "spring_station_evaluations": int(polar.spring_evaluations),
+            "plot_directions": int(plot_polar.beta_deg.size),
+            "seconds": round(seconds, 3),
+        },
+        "files": ["polar.csv", "summary.json", "polar.png"],
+    }
+
+
+def _input_files(scenario_path: Path, data: dict[str, Any]) -> list[Path]:
+    """The scenario file and the topography files it reads (for the provenance block)."""
+    out = [scenario_path]
+    for side in ("lower", "upper"):
+        table = data.get(side)
+        if isinstance(table, dict) and table.get("kind") == "file":
+            out.append(scenario_path.parent / str(table["path"]))  # absolute paths stay
+    return out
+
+
+def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:
+    from frictionlab.plotting.roughness import figure_png_bytes, scenario_figure
+
+    fig = scenario_figure(
+        plot_polar,
+        scenario.lower,
+        scenario.upper,
+        requested=scenario.beta_deg,
+        title=scenario.title or None,
+    )
+    return figure_png_bytes(fig)

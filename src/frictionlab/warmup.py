@@ -1,0 +1,81 @@
+"""Compile, once, the kernels that the commands use, so a first run does not wait for numba.
+
+numba compiles a kernel the first time it is called with a new type signature and keeps the
+result in frictionlab's compile cache (:mod:`frictionlab._compile_cache`). :func:`warmup` calls
+each family of kernels on a problem of a few points: the law's update for every sliding-yield
+surface, with and without the tangent, in the serial and the parallel loop; the driver's
+recorder; the lattice's partial- and full-contact kernels. With the cache already filled it
+only loads the compiled code (about a second). ``make venv`` and ``make demo`` run it.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+import numpy as np
+
+from frictionlab.subloading.return_map import PARALLEL_MIN_POINTS as PARALLEL_POINTS
+
+__all__ = ["warmup"]
+
+
+def _law() -> None:
+    from frictionlab import subloading
+    from frictionlab.subloading import SURFACES, SubloadingParams, initial_state
+
+    for surface in SURFACES:
+        if surface == "coulomb":
+            params = SubloadingParams(surface=surface, alpha_n=1e12, alpha_t=1e12, mu_s=0.5,
+                                      mu_k=0.3, u=1e5, kappa=1e3, xi=1e-3)  # fmt: skip
+        else:
+            params = SubloadingParams(surface=surface, alpha_n=1e12, alpha_t=1e12, F_s=2e6,
+                                      F_k=1.5e6, M=0.5, u=1e5, kappa=1e3, xi=1e-3)  # fmt: skip
+        for n in (2, PARALLEL_POINTS):  # the serial and the parallel loop
+            state = initial_state(params, normal_traction=np.full(n, 1e6))
+            du = np.tile([1e-7, 0.0, 0.0], (n, 1))
+            for tangent in (True, False):
+                subloading.update(params, state, slip_increment=du, time_increment=1e-3,
+                                  tangent=tangent)  # fmt: skip
+
+
+def _driver() -> None:
+    from frictionlab.driver import Hold, InitialConditions, Recording, Slide, simulate
+    from frictionlab.subloading import SubloadingParams
+
+    params = SubloadingParams(surface="coulomb", alpha_n=1e12, alpha_t=1e12, mu_s=0.5,
+                              mu_k=0.3, u=1e5, kappa=1e3, xi=1e-3)  # fmt: skip
+    program = (Slide(velocity=1e-4, distance=1e-6, steps=4), Hold(duration=1.0, steps=2))
+    rows: list[dict[str, np.ndarray]] = []
+    for n in (1, 3):
+        simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
+                 recording=Recording(every=1, sink=rows.append))  # fmt: skip
+
+
+def _lattice() -> None:
+    from frictionlab.roughness import LatticeSettings, friction_polar, generators
+
+    lower = generators.sinusoid(0.05, (1.0, 1.0))
+    upper = generators.flat()
+    for load in ("full", 0.02):
+        settings = LatticeSettings(load=load, stations=(16, 16), time_samples=4)
+        friction_polar(lower, upper, 0.3, [0.0, 45.0], settings=settings)
+
+
+STEPS: tuple[tuple[str, Callable[[], None]], ...] = (
+    ("law update (every surface; serial and parallel)", _law),
+    ("driver and recorder", _driver),
+    ("lattice (partial and full contact)", _lattice),
+)
+
+
+def warmup(report: Callable[[str], None] | None = None) -> list[tuple[str, float]]:
+    """Compile (or load from the cache) every kernel family; return (step, seconds) pairs."""
+    times = []
+    for label, step in STEPS:
+        t0 = time.perf_counter()
+        step()
+        times.append((label, time.perf_counter() - t0))
+        if report is not None:
+            report(f"{label}: {times[-1][1]:.1f} s")
+    return times

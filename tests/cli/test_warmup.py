@@ -1,0 +1,46 @@
+"""``frictionlab warmup`` compiles every kernel family the commands use."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+
+import frictionlab.subloading as subloading
+from frictionlab import warmup as warmup_module
+from frictionlab.cli import main
+
+
+def test_warmup_calls_every_surface_in_both_loops_with_and_without_tangent(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    seen: set[tuple[str, bool, bool]] = set()
+
+    def spy(params: Any, state: Any, *, slip_increment: Any, time_increment: float,
+            tangent: bool = True) -> None:  # fmt: skip
+        parallel = np.asarray(slip_increment).shape[0] >= warmup_module.PARALLEL_POINTS
+        seen.add((params.surface, parallel, tangent))
+
+    monkeypatch.setattr(subloading, "update", spy)
+    warmup_module._law()
+    expected = {
+        (s, p, t) for s in subloading.SURFACES for p in (False, True) for t in (False, True)
+    }
+    assert seen == expected
+
+
+def test_warmup_command_reports_every_step(
+    capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    calls: list[str] = []
+    steps = tuple(
+        (label, lambda label=label: calls.append(label)) for label, _ in warmup_module.STEPS
+    )
+    monkeypatch.setattr(warmup_module, "STEPS", steps)  # the wiring, not the compilation
+    assert main(["warmup"]) == 0
+    assert calls == [label for label, _ in steps]
+    captured = capsys.readouterr()
+    for label, _ in warmup_module.STEPS:
+        assert label in captured.err
+    assert "compiled kernels ready in" in captured.out
