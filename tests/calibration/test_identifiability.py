@@ -47,7 +47,7 @@ def test_unidentifiable_xi_exits_0_and_names_xi_not_identified(tmp_path: Path, c
     out = capsys.readouterr().out
     assert code == 0
     assert "xi is not identified" in out, out
-    fit = json.loads((tmp_path / "out" / "fit.json").read_text())
+    fit = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert "xi" in fit["not_identified"]
     assert "mu_s" not in fit["not_identified"]
     lo, hi = LOG_BOUNDS["xi"]

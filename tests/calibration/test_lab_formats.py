@@ -126,7 +126,7 @@ def test_lab_files_calibrate_back_to_the_true_parameters(tmp_path: Path, curve, 
     del cfg["data"][0]["columns"], cfg["data"][0]["units"]
     path = write_config(tmp_path / "calibrate.toml", cfg)
     assert main(["calibrate", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 0
-    fit = json.loads((tmp_path / "out" / "fit.json").read_text())
+    fit = json.loads((tmp_path / "out" / "summary.json").read_text())
     for name in ("mu_s", "mu_k", "kappa"):
         assert fit["parameters"][name]["value"] == pytest.approx(TRUE[name], rel=2e-3), name
 

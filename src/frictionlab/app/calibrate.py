@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import argparse
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -77,11 +77,22 @@ def identifiability(fit: FitResult, profiles: dict[str, Profile]) -> list[str]:
             f"of the two better than either one, so raising one can be compensated by {way} "
             f"the other.{still}"
         )
+    missing = fit.not_identified()
     for j, name in enumerate(fit.names):
         rel = fit.relative_stderr[j]
-        if not np.isfinite(fit.stderr[j]):
-            out.append(f"{name} is not determined by these data (the Jacobian has no component "
-                       "along it); fix it in [law] or add data that depend on it.")  # fmt: skip
+        if name in missing:
+            if not np.isfinite(fit.stderr[j]):
+                why = "the Jacobian has no component along it"
+            elif name in profiles and None in profiles[name].interval:
+                why = "its 95 % profile interval is open"
+            else:
+                why = "it ran to an end of its bounds"
+            lo, hi = fit.space.lower[j], fit.space.upper[j]
+            out.append(
+                f"{name} is not identified by these data ({why}): its value "
+                f"{fit.values[j]:.4g} is arbitrary within what they allow (bounds "
+                f"[{lo:.3g}, {hi:.3g}]); fix it in [law] or add data that depend on it."
+            )
         elif rel > RELATIVE_STDERR_LIMIT:
             out.append(
                 f"{name} is poorly identified: its standard error is {rel:.0%} of its value."
@@ -104,6 +115,7 @@ def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
     """The content of ``fit.json``."""
     fit, cfg = run.fit, run.config
     cone = fit.params.is_cone
+    missing = fit.not_identified()
     params = {}
     for j, name in enumerate(fit.names):
         params[name] = {
@@ -114,6 +126,7 @@ def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
             "bounds": [_finite(fit.space.lower[j]), _finite(fit.space.upper[j])],
             "fitted_as": "ln" if fit.space.log[j] else "linear",
             "unit": parameter_unit(name, cone),
+            "identified": name not in missing,
         }
     corr = [[_finite(v) for v in row] for row in fit.correlation]
     curves = []
@@ -144,6 +157,7 @@ def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
         "dof": fit.dof,
         "residual_std": _finite(np.sqrt(fit.residual_variance)),
         "poorly_identified": fit.poorly_identified(),
+        "not_identified": missing,
         "identifiability": identifiability(fit, run.profiles),
         "profiles": profiles,
         "curves": curves,
@@ -185,15 +199,21 @@ def fitted_scenario(run: CalibrationRun, k: int, base: Path) -> str:
 
 
 def _curve_columns(run: CalibrationRun) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    cols: dict[str, list[Any]] = {k: [] for k in ("curve", "time", "data", "model", "residual")}
-    for i, (c, m) in enumerate(zip(run.config.curves, run.fit.models, strict=True)):
+    names = ("curve", "time", "data", "model", "residual", "confidence_95", "prediction_95")
+    cols: dict[str, list[Any]] = {k: [] for k in names}
+    bands = run.fit.bands(0.95)
+    for i, (c, m, (conf, pred)) in enumerate(
+        zip(run.config.curves, run.fit.models, bands, strict=True)
+    ):
         cols["curve"].append(np.full(c.n_samples, i + 1))
         cols["time"].append(c.time)
         cols["data"].append(c.friction_ratio)
         cols["model"].append(m)
         cols["residual"].append(m - c.friction_ratio)
+        cols["confidence_95"].append(conf)  # half-widths of the 95 % bands
+        cols["prediction_95"].append(pred)
     arrays = {k: np.concatenate(v) for k, v in cols.items()}
-    units = {"curve": "-", "time": "s", "data": "-", "model": "-", "residual": "-"}
+    units = dict.fromkeys(names, "-") | {"time": "s"}
     return arrays, units
 
 
@@ -308,6 +328,7 @@ class Calibrate:
                     profiles[name] = profile_likelihood(
                         fit, cfg.curves, name, points=cfg.profile_points, progress=update
                     )
+        fit = replace(fit, profiles=profiles)  # not_identified() reads the profiles
         return CalibrationRun(cfg, fit, start_models, profiles)
 
     def files(self, job: Any, result: CalibrationRun, out: Path, plots: bool) -> list[Path]:
@@ -327,10 +348,12 @@ class Calibrate:
               f"{fit.nfev} evaluations ({fit.runs} driver runs) in {seconds:.2f} s; "
               f"{fit.message}")  # fmt: skip
         print(f"{'parameter':>10} {'start':>12} {'fitted':>12} {'stderr':>10} {'rel':>7}")
+        missing = fit.not_identified()
         for j, name in enumerate(fit.names):
             se, rel = fit.stderr[j], fit.relative_stderr[j]
+            flag = "  not identified" if name in missing else ""
             print(f"{name:>10} {fit.start[j]:>12.5g} {fit.values[j]:>12.6g} {se:>10.3g} "
-                  f"{rel:>7.1%}")  # fmt: skip
+                  f"{rel:>7.1%}{flag}")  # fmt: skip
         print(f"residual std {np.sqrt(fit.residual_variance):.3g} (friction ratio)")
         for line in identifiability(fit, result.profiles):
             print("  " + line)
