@@ -14,6 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from frictionlab._progress import ProgressFactory
 from frictionlab.app import simulate_files as files
 from frictionlab.app.outputs import write_outputs
@@ -122,7 +124,8 @@ class Simulate:
     def report(
         self, job: Scenario, result: SimulateRun, seconds: float, written: list[Path]
     ) -> None:
-        files.print_report(job.labels, result.history, seconds)
+        mu_s = job.params.mu_s if job.params.is_cone and np.ndim(job.params.mu_s) == 0 else None
+        files.print_report(job.labels, result.history, seconds, mu_s)
         print("wrote " + ", ".join(str(p) for p in written))
 
     def notes(self, job: Scenario, result: SimulateRun) -> list[str]:
