@@ -259,12 +259,14 @@ def _files(out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path) -> 
     data_sec = report.add_section(Section("Data and model", anchor="curves"))
     for k, (c, m) in enumerate(zip(cfg.curves, fit.models, strict=True)):
         rel = f"curve_{k + 1}.png"
-        written.append(save_figure(plot_curve_fit(c, m, run.start_models[k]), out / rel))
+        band = fit.bands(0.95)[k][0]
+        written.append(save_figure(plot_curve_fit(c, m, run.start_models[k], band), out / rel))
         rms = float(np.sqrt(np.mean((m - c.friction_ratio) ** 2)))
         data_sec.add_figure(
             rel,
             f"{c.name}: measured friction ratio (dots), the start law (dashed) and the fitted "
-            f"law (line); residuals below (rms {rms:.3g}).",
+            f"law (line) with its 95 % confidence band, one panel per sliding segment (holds "
+            f"left out); residuals below (rms {rms:.3g}).",
         )
     unc = report.add_section(Section("Uncertainty and identifiability", anchor="uncertainty"))
     unc.intro = (
