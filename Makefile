@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= out/demo
 
-.PHONY: demo test test-fast check lint typecheck docs pytest bench clean venv
+.PHONY: demo test test-fast check lint typecheck docs pytest bench clean venv schemas
 
 venv: $(STAMP)
 
@@ -44,6 +44,10 @@ pytest: $(STAMP)
 # While developing: lint, type check and the tests not marked slow (no docs site).
 test-fast: check
 	$(BIN)/python -m pytest -n auto -q -m "not slow"
+
+# docs/schemas/*.json and the key tables of the docs, from src/frictionlab/schema/.
+schemas: $(STAMP)
+	$(BIN)/python -m frictionlab.schema
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py

@@ -87,7 +87,7 @@ def test_linked_keys_in_a_case_list_take_the_same_value() -> None:
         ('base = "b.toml"\n[grid]\n"a.b" = [1]\n"a.b+c.d" = [2]\n', "sets 'a.b' twice"),
         ('base = "b.toml"\n[grid]\n"a.b+a.b" = [1]\n', "sets 'a.b' twice"),
         ('base = "b.toml"\n[grid]\n"a.b" = []\n', "non-empty list"),
-        ('base = "b.toml"\nbogus = 1\n[grid]\n"a.b" = [1]\n', "unknown key 'bogus'"),
+        ('base = "b.toml"\nbogus = 1\n[grid]\n"a.b" = [1]\n', "unknown key bogus"),
         ('[grid]\n"a.b" = [1]\n', "base must name"),
         ('base = "b.toml"\n', "exactly one of [grid] or [[case]]"),
         ('base = "b.toml"\ncommand = "bridge"\n[grid]\n"a.b" = [1]\n', "command = 'bridge'"),

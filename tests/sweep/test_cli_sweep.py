@@ -158,7 +158,7 @@ def test_dask_local_cluster(tmp_path: Path) -> None:
         ('[grid]\n"law.nonsense" = [0.5]\n', "no 'law.nonsense'"),
         ('[grid]\n"law.mu_k" = [0.3, 0.7]\n', "sweep case 2 (law.mu_k = 0.7)"),
         ('[grid]\n"program.9.steps" = [3]\n', "entry number from 1 to 3"),
-        ('surprise = 1\n[grid]\n"law.mu_s" = [0.5]\n', "unknown key 'surprise'"),
+        ('surprise = 1\n[grid]\n"law.mu_s" = [0.5]\n', "unknown key surprise"),
     ],
 )
 def test_bad_input_exits_2_with_one_line_before_running(

@@ -1,81 +1,23 @@
-"""The sweep file: a base scenario plus a ``[grid]`` or ``[[case]]`` list of overrides.
-
-::
-
-    title = "..."                      # optional
-    base = "scenario.toml"             # relative to the sweep file
-    command = "simulate"               # optional: "simulate" or "roughness" (else detected)
-    [grid]                             # cartesian product, the last key varying fastest
-    "program.2.duration" = [1.0, 10.0, 100.0]
-    "program.1.velocity+program.3.velocity" = [1e-6, 1e-5]   # linked: one value for both
-    # or, instead of [grid], one table per case:
-    # [[case]]
-    # "law.mu_s" = 0.6
-
-Keys are the dotted names of ``--set`` (bare dotted keys work too); ``+`` links keys that
-take the same value (in ``[grid]`` and in ``[[case]]``); keys that vary together with
-different values are listed as ``[[case]]`` tables. Every key must be present in the base
-scenario.
+"""The sweep file: parsed by :mod:`frictionlab.schema.sweep` (names kept here); what the
+base scenario of a sweep is and which files it names.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from frictionlab.errors import InputError
-from frictionlab.sweep.cases import LINK, Case, expand_grid, make_cases
+from frictionlab.schema.sweep import COMMANDS, SweepSpec
+from frictionlab.schema.sweep import parse_sweep as _parse_sweep
 
 __all__ = ["COMMANDS", "SweepSpec", "detect_command", "named_files", "parse_sweep"]
 
-#: Scenario commands a sweep can run.
-COMMANDS = ("simulate", "roughness")
-_TOP_KEYS = ("title", "base", "command", "grid", "case")
-
-
-@dataclass(frozen=True)
-class SweepSpec:
-    """A parsed sweep file (the base scenario itself is not read here)."""
-
-    title: str
-    base: Path
-    command: str | None
-    keys: tuple[str, ...]
-    cases: tuple[Case, ...]
-
 
 def parse_sweep(data: Mapping[str, Any], sweep_dir: Path) -> SweepSpec:
-    """Validate a parsed sweep file and expand its cases."""
-    for key in data:
-        if key not in _TOP_KEYS:
-            raise InputError(
-                f"unknown key '{key}' in the sweep file; allowed: {', '.join(_TOP_KEYS)}"
-            )
-    title = data.get("title", "")
-    if not isinstance(title, str):
-        raise InputError(f"title must be a string, got {title!r}")
-    base = data.get("base")
-    if not isinstance(base, str) or not base:
-        raise InputError('base must name the base scenario file, e.g. base = "scenario.toml"')
-    command = data.get("command")
-    if command is not None and command not in COMMANDS:
-        raise InputError(
-            f"command = {command!r} is not allowed; choose one of {', '.join(COMMANDS)}"
-        )
-    if ("grid" in data) == ("case" in data):
-        raise InputError("a sweep file needs exactly one of [grid] or [[case]] tables")
-    if "grid" in data:
-        grid = _grid(data["grid"])
-        keys = tuple(grid)
-        overrides = expand_grid(grid)
-    else:
-        overrides = _case_list(data["case"])
-        keys = tuple(dict.fromkeys(k for item in overrides for k in item))
-    path = Path(base) if Path(base).is_absolute() else sweep_dir / base
-    return SweepSpec(title, path, command, keys, make_cases(overrides))
+    """:func:`frictionlab.schema.sweep.parse_sweep` (the older signature)."""
+    return _parse_sweep(data, base_dir=sweep_dir)
 
 
 def detect_command(base: Mapping[str, Any], given: str | None) -> str:
@@ -111,67 +53,3 @@ def named_files(command: str, data: Mapping[str, Any]) -> list[str]:
             if isinstance(table, dict) and table.get("kind") == "file":
                 names.append(str(table["path"]))
     return list(dict.fromkeys(names))
-
-
-def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
-    """Nested tables -> dotted keys (bare ``program.2.duration = ...`` nests in TOML)."""
-    out: dict[str, Any] = {}
-    for key, value in table.items():
-        name = f"{prefix}{key}"
-        if isinstance(value, dict):
-            out.update(_flatten(value, f"{name}."))
-        else:
-            out[name] = value
-    return out
-
-
-def _check_value(key: str, value: Any) -> None:
-    if isinstance(value, float) and not math.isfinite(value):
-        raise InputError(f"'{key}' = {value} must be finite")
-
-
-def _grid(raw: Any) -> dict[str, list[Any]]:
-    if not isinstance(raw, dict):
-        raise InputError('grid must be a table of "section.key" = [values]')
-    grid = _flatten(raw)
-    if not grid:
-        raise InputError('[grid] is empty: give at least one "section.key" = [values]')
-    owner: dict[str, str] = {}
-    for key, values in grid.items():
-        if not all(key.split(LINK)):
-            raise InputError(f"[grid].'{key}' has an empty key around '{LINK}'")
-        for part in key.split(LINK):
-            if part in owner:
-                raise InputError(
-                    f"[grid] sets '{part}' twice ('{owner[part]}' and '{key}'): give each "
-                    "key one axis"
-                )
-            owner[part] = key
-        if not isinstance(values, list) or not values:
-            raise InputError(f"[grid].'{key}' must be a non-empty list of values, got {values!r}")
-        for v in values:
-            _check_value(f"[grid].{key}", v)
-    return grid
-
-
-def _case_list(raw: Any) -> list[dict[str, Any]]:
-    if not isinstance(raw, list) or not all(isinstance(v, dict) for v in raw):
-        raise InputError("case must be an array of tables ([[case]])")
-    if not raw:
-        raise InputError("[[case]] is empty: give at least one case")
-    out = []
-    for i, item in enumerate(raw, 1):
-        flat = _flatten(item)
-        if not flat:
-            raise InputError(f'[[case]] #{i} is empty: give at least one "section.key" = value')
-        linked: dict[str, Any] = {}
-        for key, value in flat.items():
-            _check_value(f"[[case]] #{i}.{key}", value)
-            if not all(key.split(LINK)):
-                raise InputError(f"[[case]] #{i}.'{key}' has an empty key around '{LINK}'")
-            for part in key.split(LINK):  # "a.x+b.y" = v: the same value for each key
-                if part in linked:
-                    raise InputError(f"[[case]] #{i} sets '{part}' twice")
-                linked[part] = value
-        out.append(linked)
-    return out

@@ -1,0 +1,175 @@
+"""The ``frictionlab bridge`` scenario: a roughness scenario, a ``[law]`` and ``[bridge]``.
+
+The roughness part (mu0, [lower], [upper], [sliding], [lattice], [multiscale]) is read as
+by ``frictionlab roughness``; ``[law]`` as by simulate, one value per key, without the
+fitted keys; ``[bridge]`` says what is fitted and how the fit is checked.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient
+from frictionlab.errors import InputError, ParameterError
+from frictionlab.schema.core import INTEGER, NUMBER, STRING, Field, Section, listed, load
+from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, parse_roughness
+from frictionlab.schema.scenario import LAW, parse_law_table
+from frictionlab.subloading import SubloadingParams, initial_state
+
+__all__ = ["BRIDGE", "BridgeOptions", "BridgeScenario", "load_bridge", "parse_bridge"]
+
+#: Roughness tables the bridge does not use (its polar is the single-level kinetic one).
+NOT_USED = ("output", "adhesion", "wear", "hierarchy")
+#: [law] keys that a fitted group replaces.
+_FITTED_KEYS = {
+    "rotation": ("rotation",),
+    "orthotropy": ("orthotropy", "orthotropy_angle", "orthotropy_angle_deg"),
+}
+OPTIONS = Section("bridge", (
+    Field("scale", STRING, "where the law's size comes from: the [law] values, or "
+          "mu_k from the polar (roughness)", "", "law",
+          choices=SCALES),
+    Field("fit", listed(str, "string"), "what is fitted; a group left out is held at its [law] "
+          "value", "", list(FIT_GROUPS),
+          json={"type": "array", "items": {"enum": list(FIT_GROUPS)}, "uniqueItems": True}),
+    Field("step_deg", NUMBER, "full-circle grid of the polar ([sliding].beta_deg added)", "deg",
+          10.0, low=0.5, high=45,
+          allowed="a step from 0.5 to 45 deg that divides 360"),
+    Field("tolerance", NUMBER, "largest relative rms misfit (over the mean |mu|) still called "
+          "expressible", "", 0.02,
+          low=0, high=1, open="both", allowed="0 < tolerance < 1 (relative rms misfit)"),
+    Field("normal_traction", NUMBER, "f_n of the fitted scenario and of the check (closed "
+          "surfaces: < F_k)",
+          "Pa", 1.0, low=0, open="low", allowed="f_n > 0 Pa"),
+    Field("velocity", NUMBER, "speed of the steady-sliding check and of the fitted "
+          "scenario's slide", "m/s", 1.0e-3,
+          low=0, open="low", allowed="V > 0 m/s"),
+    Field("distance", NUMBER, "slide length of the check (default: 25 relaxation "
+          "lengths)", "m", None,
+          low=0, open="low", allowed="a length > 0 m"),
+    Field("steps", INTEGER, "steps of that slide", "", 400, low=1, high=100_000,
+          allowed="1 to 100000 steps"),
+    Field("check_tolerance", NUMBER, "|simulated - closed form| allowed in f_t/f_n", "",
+          1.0e-6, low=0, open="low", allowed="a tolerance > 0"),
+), "what is fitted and how the fit is checked", "[bridge]")  # fmt: skip
+BRIDGE = Section("bridge", (
+    *_TOP,
+    Field("multiscale", table=MULTISCALE),
+    Field("law", table=LAW, doc="the law to fit (one value per key, no fitted keys)"),
+    Field("bridge", table=OPTIONS),
+), "A bridge scenario of `frictionlab bridge`: a roughness scenario whose kinetic polar "
+   "mu(beta) is fitted by the subloading-friction [law].", extra={"required": ["mu0", "lower",
+   "upper", "sliding", "law"]})  # fmt: skip
+
+
+@dataclass(frozen=True)
+class BridgeOptions:
+    """The ``[bridge]`` table (defaults as documented in docs/bridge.md)."""
+
+    scale: str = "law"
+    fit: tuple[str, ...] = FIT_GROUPS
+    step_deg: float = 10.0
+    tolerance: float = 0.02
+    normal_traction: float = 1.0
+    velocity: float = 1.0e-3
+    distance: float | None = None
+    steps: int = 400
+    check_tolerance: float = 1.0e-6
+
+
+@dataclass(frozen=True)
+class BridgeScenario:
+    """A parsed bridge scenario: the roughness part, the base law and the options."""
+
+    roughness: RoughnessScenario
+    law: SubloadingParams
+    law_given: dict[str, Any]
+    options: BridgeOptions
+    directions_deg: np.ndarray  #: the polar's directions (deg): the circle grid and [sliding]
+    title: str = ""
+
+
+def parse_bridge(
+    data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
+) -> BridgeScenario:
+    """Build a :class:`BridgeScenario`; any problem is one InputError line naming the key."""
+    for key in NOT_USED:
+        if key in data:
+            raise InputError(
+                f"[{key}] is not used by frictionlab bridge (it fits the single-level kinetic "
+                "polar mu(beta)); allowed tables: [lower], [upper], [sliding], [lattice], "
+                "[law], [bridge]"
+            )
+    rest = {k: v for k, v in data.items() if k not in ("law", "bridge")}
+    if "law" not in data:
+        raise InputError("missing required table [law] (the law to fit, as in simulate)")
+    roughness = parse_roughness(rest, base_dir=base_dir)
+    options = _options(data.get("bridge", {}))
+    law_data = data["law"]
+    if isinstance(law_data, dict):
+        for group in options.fit:
+            for key in _FITTED_KEYS[group]:
+                if key in law_data:
+                    raise InputError(
+                        f"[law].{key} is fitted by the bridge ([bridge].fit includes "
+                        f"'{group}'): leave it out, or remove '{group}' from [bridge].fit "
+                        "to hold it"
+                    )
+    law, given = parse_law_table(law_data)
+    for key, value in given.items():
+        pair = key in ("rotation", "orthotropy")
+        if isinstance(value, list) and (not pair or isinstance(value[0], list)):
+            raise InputError(
+                f"[law].{key} = {value} gives values per point: the bridge fits one law, "
+                "give one value"
+            )
+    try:
+        steady_coefficient(law, None, options.normal_traction)
+    except ParameterError as exc:
+        raise InputError(
+            f"[bridge].normal_traction = {options.normal_traction:g} is invalid: allowed "
+            f"{exc.allowed}"
+        ) from None
+    # The law must hold at f_n before any fit: inside the domain of a closed surface, and
+    # no snap-back (the elastic stiffness must exceed the softening slope).
+    try:
+        initial_state(law, options.normal_traction)
+    except ParameterError as exc:
+        if exc.field == "normal_traction":
+            raise InputError(f"[bridge].{exc}") from None
+        raise InputError(
+            f"[law].{exc} (at [bridge].normal_traction = {options.normal_traction:g} Pa)"
+        ) from None
+    circle = np.arange(0.0, 360.0 - 1e-9, options.step_deg)
+    extra = np.mod(roughness.beta_deg, 360.0)
+    directions = np.unique(np.round(np.concatenate([circle, extra]), 9))
+    return BridgeScenario(roughness, law, given, options, directions, roughness.title)
+
+
+def load_bridge(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> BridgeScenario:
+    """Read, override (``section.key=value``) and validate a bridge scenario."""
+    return load(BRIDGE, parse_bridge, path, overrides)
+
+
+def _options(data: Any) -> BridgeOptions:
+    v = OPTIONS.read(data)
+    fit = v["fit"]
+    for i, group in enumerate(fit):
+        if group not in FIT_GROUPS:
+            raise InputError(
+                f"[bridge].fit[{i}] = {group!r} is not allowed; choose among "
+                + ", ".join(repr(g) for g in FIT_GROUPS)
+            )
+    if len(set(fit)) != len(fit):
+        raise InputError(f"[bridge].fit = {fit} names a group twice")
+    count = 360.0 / v["step_deg"]
+    if not math.isclose(count, round(count), rel_tol=0.0, abs_tol=1e-9):
+        raise InputError(f"[bridge].step_deg = {v['step_deg']!r} is invalid: allowed "
+                         f"{OPTIONS['step_deg'].allowed}")  # fmt: skip
+    return BridgeOptions(**{**v, "fit": tuple(fit)})

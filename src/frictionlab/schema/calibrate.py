@@ -1,0 +1,211 @@
+"""The ``frictionlab calibrate`` file: declarations and the parser.
+
+``[law]`` (the starting values, as in a simulate scenario), ``[fit]`` (what to fit) and
+one or more ``[[data]]`` curves, each with its ``[data.initial]`` and
+``[[data.program]]``. Everything is validated (data files read) before any fit starts.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from frictionlab.calibration.fit import make_space
+from frictionlab.calibration.model import FITTABLE, Curve, program_duration
+from frictionlab.driver.simulate import count_points
+from frictionlab.errors import InputError, ParameterError
+from frictionlab.io.config import Table
+from frictionlab.io.tribometer import SLIP_UNITS, TIME_UNITS, read_tribometer
+from frictionlab.schema.core import (
+    BOOL,
+    INTEGER,
+    NUMBER,
+    REQUIRED,
+    STRING,
+    Field,
+    Section,
+    listed,
+    load,
+)  # fmt: skip
+from frictionlab.schema.scenario import (
+    INITIAL,
+    LAW,
+    SEGMENT,
+    parse_initial_table,
+    parse_law_table,
+    parse_program_tables,
+)  # fmt: skip
+from frictionlab.subloading import SubloadingParams
+
+__all__ = ["CALIBRATE", "END_TOLERANCE", "CalibrationConfig", "load_calibrate", "parse_calibrate"]
+
+#: Data may run past the programme's end by this fraction of its duration (round-off of
+#: the lab's clock), and are then clipped to the end.
+END_TOLERANCE = 1e-6
+
+_PAIR = listed(float, "number", 2)
+FIT = Section("fit", (
+    Field("parameters", listed(str, "string"), "the [law] keys to fit (the rest stay fixed)",
+          default=REQUIRED, choices=tuple(FITTABLE),
+          json={"type": "array", "items": {"enum": list(FITTABLE)}}),
+    Field("bounds", table=Section("bounds", ()), doc="name = [low, high] (physical units)",
+          json={"type": "object", "additionalProperties": _PAIR.json}),
+    Field("max_evaluations", INTEGER, "least-squares function evaluations", "", 100, low=1),
+    Field("profile", BOOL, "profile likelihood of poorly identified parameters", "", True),
+    Field("profile_points", INTEGER, "grid values per profile", "", 9, low=3),
+    Field("profile_max", INTEGER, "profile at most this many (worst first)", "", 2, low=0),
+), "what to fit", "[fit]")  # fmt: skip
+COLUMNS = Section(
+    "columns",
+    tuple(Field(k, STRING, f"title of the {k} column") for k in ("time", "slip", "friction_ratio")),
+    "column titles of the data file",
+)
+UNITS = Section("units", (
+    Field("time", STRING, "unit of the time column", choices=tuple(TIME_UNITS)),
+    Field("slip", STRING, "unit of the slip column", choices=tuple(SLIP_UNITS)),
+), "units of the data file's columns")  # fmt: skip
+DATA = Section("data", (
+    Field("file", STRING, "the measured curve (CSV, relative to this file)", "", REQUIRED),
+    Field("columns", table=COLUMNS),
+    Field("units", table=UNITS),
+    Field("weight", NUMBER, "weight of this curve in the fit", "", 1.0, low=0, open="low"),
+    Field("initial", table=INITIAL, default=REQUIRED),
+    Field("program", table=SEGMENT, many=True, default=REQUIRED),
+), "one measured curve", "[[data]]")  # fmt: skip
+CALIBRATE = Section("calibrate", (
+    Field("title", STRING, "title of the run", "", ""),
+    Field("description", STRING, "free text", "", ""),
+    Field("law", table=LAW, default=REQUIRED),
+    Field("fit", table=FIT, default=REQUIRED),
+    Field("data", table=DATA, many=True, default=REQUIRED),
+), "A calibration file of `frictionlab calibrate`: the starting [law], what to [fit] and "
+   "the measured [[data]] curves.")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class CalibrationConfig:
+    """A validated calibration file."""
+
+    title: str
+    params: SubloadingParams
+    law_given: dict[str, Any]
+    names: tuple[str, ...]
+    bounds: dict[str, tuple[float, float]]
+    curves: tuple[Curve, ...]
+    data_echo: tuple[dict[str, Any], ...]
+    max_evaluations: int = 100
+    profile: bool = True
+    profile_points: int = 9
+    profile_max: int = 2
+    source: str = ""
+
+
+def _parse_fit(t: Table) -> tuple[dict[str, Any], dict[str, tuple[float, float]]]:
+    values = FIT.read(t)
+    for name in values["parameters"]:
+        if name not in FITTABLE:
+            raise InputError(
+                f"[fit].parameters: '{name}' cannot be fitted; choose from {', '.join(FITTABLE)}"
+            )
+    bounds: dict[str, tuple[float, float]] = {}
+    bt = t.table("bounds")
+    for key in [] if bt is None else bt.keys():
+        pair = bt.get_list(key, float, length=2)  # type: ignore[union-attr]
+        if not pair[0] < pair[1]:
+            raise InputError(f"[fit].bounds.{key} = {pair} must be [low, high] with low < high")
+        bounds[key] = (pair[0], pair[1])
+    if values["profile_max"] == 0:
+        values["profile"] = False
+    return values, bounds
+
+
+def _parse_data(t: Table, base: Path) -> tuple[Curve, dict[str, Any]]:
+    values = DATA.read(t)
+    name = values["file"]
+    columns = COLUMNS.read(t.raw("columns", {}), f"{t.where}.columns", only_given=True)
+    units = UNITS.read(t.raw("units", {}), f"{t.where}.units", only_given=True)
+    initial, programs = t.raw("initial"), t.raw("program")
+    if not isinstance(programs, list) or not all(isinstance(p, dict) for p in programs):
+        raise InputError(f"{t.where}.program must be an array of tables ([[data.program]])")
+    init, _ = parse_initial_table(initial, f"{t.where}.initial")
+    program = parse_program_tables(programs, base, f"{t.where}.program")
+    try:
+        n = count_points(SubloadingParams(mu_s=1.0, mu_k=1.0), program, init)
+    except ParameterError:
+        n = 2
+    if n != 1:
+        raise InputError(
+            f"{t.where}: per-point lists in [data.initial] or [[data.program]] are not allowed "
+            "(one curve is one contact point; give each curve its own [[data]])"
+        )
+    path = Path(name) if Path(name).is_absolute() else base / name
+    where = f"{t.where}.file '{name}'"
+    measured = read_tribometer(path, columns, units, where)
+    end = program_duration(program)
+    t_last = float(measured.time[-1])
+    if t_last > end * (1.0 + END_TOLERANCE):
+        raise InputError(
+            f"{where}: the data run to t = {t_last:g} s, past the end of "
+            f"{t.where}.program at {end:g} s (extend the programme or trim the data)"
+        )
+    curve = Curve(
+        name=Path(name).name, time=np.minimum(measured.time, end),
+        friction_ratio=measured.friction_ratio, program=program, initial=init,
+        weight=values["weight"], slip=measured.slip,
+    )  # fmt: skip
+    echo = {
+        "file": name, "columns": columns, "units": measured.units, "weight": values["weight"],
+        "samples": curve.n_samples, "duration": end, "initial": initial, "program": programs,
+    }  # fmt: skip
+    return curve, echo
+
+
+def parse_calibrate(
+    data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
+) -> CalibrationConfig:
+    """Validate a parsed calibration mapping (reads the data files; nothing is fitted)."""
+    root = CALIBRATE.table(data, "")
+    title = CALIBRATE.read(root)["title"]
+    law = root.raw("law")
+    fit = root.table("fit", required=True)
+    data_tables = root.tables("data", required=True)
+    assert fit is not None
+    if not data_tables:
+        raise InputError("[[data]] must hold at least one measured curve")
+    params, given = parse_law_table(law)
+    fit_values, bounds = _parse_fit(fit)
+    names = fit_values["parameters"]
+    try:
+        make_space(params, names, bounds)
+    except ParameterError as exc:
+        field = exc.field if exc.field.startswith(("fit.", "law.")) else f"fit.{exc.field}"
+        section, _, key = field.partition(".")
+        raise ParameterError(f"[{section}].{key}", exc.value, exc.allowed) from None
+    curves, echoes = [], []
+    for t in data_tables:
+        curve, echo = _parse_data(t, Path(base_dir))
+        curves.append(curve)
+        echoes.append(echo)
+    n_samples = sum(c.n_samples for c in curves)
+    if n_samples <= len(names):
+        raise InputError(f"[[data]]: {n_samples} samples in all, fewer than needed to fit "
+                         f"{len(names)} parameters")  # fmt: skip
+    return CalibrationConfig(
+        title=title, params=params, law_given=given, names=tuple(names), bounds=bounds,
+        curves=tuple(curves), data_echo=tuple(echoes),
+        max_evaluations=fit_values["max_evaluations"], profile=fit_values["profile"],
+        profile_points=fit_values["profile_points"], profile_max=fit_values["profile_max"],
+        source=source,
+    )  # fmt: skip
+
+
+def load_calibrate(
+    path: str | os.PathLike[str], overrides: Sequence[str] = ()
+) -> CalibrationConfig:
+    """Read, override (``section.key=value``) and validate a calibration file."""
+    return load(CALIBRATE, parse_calibrate, path, overrides)

@@ -1,0 +1,388 @@
+"""Input declarations: :class:`Field`, :class:`Kind` and :class:`Section`.
+
+Every key of every input file is declared once, as a :class:`Field` of a :class:`Section`
+(its kind, unit, allowed range, default, per-point flag and a one-line doc). From that
+one declaration come the TOML reader (one-line errors naming the key, the value and the
+allowed range, with "did you mean"), the ``--set`` check, the JSON Schemas in
+docs/schemas and the key tables of the docs (``python -m frictionlab.schema``).
+
+Physical bounds stay in the physics classes: a field declared ``by=SubloadingParams``
+is passed on unchecked here and its range is the class's (:func:`reraise` puts the
+section in front of the class's :class:`~frictionlab.errors.ParameterError`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, TypeVar
+
+from frictionlab.errors import InputError, ParameterError
+from frictionlab.io.config import REQUIRED, Table, apply_overrides, load_toml, unknown_key
+
+__all__ = [
+    "BOOL",
+    "INTEGER",
+    "NUMBER",
+    "NUMBERS",
+    "OMIT",
+    "PAIRS",
+    "REQUIRED",
+    "STRING",
+    "Field",
+    "Kind",
+    "Section",
+    "check_overrides",
+    "listed",
+    "load",
+    "reraise",
+]
+
+
+class _Omit:
+    def __repr__(self) -> str:
+        return "OMIT"
+
+
+#: Default meaning "optional; when absent the key is not passed on" (the class's default).
+OMIT: Any = _Omit()
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A value kind: how a value is read from TOML and how it is written in JSON Schema.
+
+    ``read(table, field)`` returns the typed value of a present key; ``json`` is the
+    JSON Schema of a value (``$defs`` names are resolved by the generator).
+    """
+
+    name: str
+    read: Callable[[Table, Field], Any]
+    json: Mapping[str, Any]
+
+
+def _scalar(kind: type) -> Callable[[Table, Field], Any]:
+    def read(t: Table, f: Field) -> Any:
+        return t.get(f.name, kind, choices=f.choices, check=f.check(), allowed=f.allowed_text())
+
+    return read
+
+
+def _number(value: Any, name: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise InputError(f"{name} must be a number, got {type(value).__name__} {value!r}")
+    if not math.isfinite(value):
+        raise InputError(f"{name} = {value} must be finite")
+    return float(value)
+
+
+def _numbers(t: Table, f: Field) -> Any:
+    """A number or a non-empty list of numbers (one per point)."""
+    value, name = t.raw(f.name), f"{t.where}.{f.name}"
+    if isinstance(value, list):
+        if not value:
+            raise InputError(f"{name} must be a number or a non-empty list of numbers, got []")
+        return [_number(v, f"{name}[{i}]") for i, v in enumerate(value)]
+    return _number(value, name)
+
+
+def _pairs(t: Table, f: Field) -> Any:
+    """A pair ``[a, b]`` or a list of pairs (one per point)."""
+    value, name = t.raw(f.name), f"{t.where}.{f.name}"
+    if isinstance(value, list) and len(value) == 2 and not any(isinstance(v, list) for v in value):
+        return [_number(v, f"{name}[{i}]") for i, v in enumerate(value)]
+    if isinstance(value, list) and value and all(isinstance(v, list) for v in value):
+        out = []
+        for i, pair in enumerate(value):
+            if len(pair) != 2:
+                raise InputError(f"{name}[{i}] must have 2 entries, got {len(pair)}")
+            out.append([_number(v, f"{name}[{i}][{j}]") for j, v in enumerate(pair)])
+        return out
+    raise InputError(f"{name} must be a pair [a, b] or a list of pairs, got {value!r}")
+
+
+def listed(items: type, json_items: str, length: int | tuple[int, ...] | None = None) -> Kind:
+    """A list of ``items`` (float, int or str), optionally of a given length (or lengths)."""
+    lengths = (length,) if isinstance(length, int) else length
+    schema: dict[str, Any] = {"type": "array", "items": {"type": json_items}}
+    if lengths:
+        schema.update(minItems=min(lengths), maxItems=max(lengths))
+
+    def read(t: Table, f: Field) -> Any:
+        return t.get_list(f.name, items, length=length)
+
+    return Kind(f"list of {json_items}s", read, schema)
+
+
+NUMBER = Kind("number", _scalar(float), {"type": "number"})
+INTEGER = Kind("integer", _scalar(int), {"type": "integer"})
+STRING = Kind("string", _scalar(str), {"type": "string"})
+BOOL = Kind("bool", _scalar(bool), {"type": "boolean"})
+#: A number, or a list of numbers (one per contact point).
+NUMBERS = Kind("number(s)", _numbers, {"$ref": "#/$defs/numbers"})
+#: A pair [a, b], or a list of pairs (one per contact point).
+PAIRS = Kind("pair(s)", _pairs, {"$ref": "#/$defs/pairs"})
+#: Schemas of the shared value kinds (``$defs`` of each generated schema that uses them).
+DEFS: dict[str, Any] = {
+    "numbers": {"anyOf": [{"type": "number"},
+                          {"type": "array", "items": {"type": "number"}, "minItems": 1}]},
+    "pairs": {"anyOf": [{"$ref": "#/$defs/pair"},
+                        {"type": "array", "items": {"$ref": "#/$defs/pair"}, "minItems": 1}]},
+    "pair": {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2},
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Field:
+    """One input key.
+
+    ``default``: :data:`REQUIRED`, :data:`OMIT` (the owning class's default applies) or
+    a value. ``low``/``high`` bound the value (``open`` says which bounds are strict:
+    "low", "high", "both" or ""); ``allowed`` overrides the range text of the message.
+    ``by`` names the physics class that checks the value (its bound is not restated).
+    ``table``: the sub-section of a table-valued key (``many``: an array of tables).
+    """
+
+    name: str
+    kind: Kind | None = None
+    doc: str = ""
+    unit: str = ""
+    default: Any = OMIT
+    choices: tuple[Any, ...] | None = None
+    low: float | None = None
+    high: float | None = None
+    open: str = ""
+    allowed: str = ""
+    by: type | None = None
+    per_point: bool = False
+    table: Section | None = None
+    many: bool = False
+    json: Mapping[str, Any] | None = None
+
+    @property
+    def required(self) -> bool:
+        return self.default is REQUIRED
+
+    def check(self) -> Callable[[Any], bool] | None:
+        if self.low is None and self.high is None:
+            return None
+        lo_open, hi_open = self.open in ("low", "both"), self.open in ("high", "both")
+
+        def ok(v: Any) -> bool:
+            if self.low is not None and (v <= self.low if lo_open else v < self.low):
+                return False
+            return self.high is None or (v < self.high if hi_open else v <= self.high)
+
+        return ok
+
+    def allowed_text(self) -> str:
+        """The allowed range in words (``an integer >= 1``, ``0 < front_ratio <= 1``)."""
+        if self.allowed:
+            return self.allowed
+        lo = "<" if self.open in ("low", "both") else "<="
+        hi = "<" if self.open in ("high", "both") else "<="
+        if self.low is not None and self.high is not None:
+            return f"{self.low:g} {lo} {self.name} {hi} {self.high:g}"
+        what = "an integer" if self.kind is INTEGER else "a number"
+        if self.low is not None:
+            return f"{what} {'>' if lo == '<' else '>='} {self.low:g}"
+        if self.high is not None:
+            return f"{what} {hi} {self.high:g}"
+        if self.choices:
+            return " | ".join(str(c) for c in self.choices)
+        return f"see {self.by.__name__}" if self.by is not None else ""
+
+    def shown_default(self) -> Any:
+        """The default as the docs show it (the owning class's default for :data:`OMIT`)."""
+        if self.default is OMIT and self.by is not None and dataclasses.is_dataclass(self.by):
+            for f in dataclasses.fields(self.by):
+                if f.name == self.name and f.default is not dataclasses.MISSING:
+                    return f.default
+            return None
+        return None if self.default is OMIT else self.default
+
+    def schema(self) -> dict[str, Any]:
+        """This key's JSON Schema."""
+        if self.json is not None:
+            out = dict(self.json)
+        elif self.table is not None:
+            sub = {"$ref": f"#/$defs/{self.table.name}"} if self.table.ref else self.table.schema()
+            out = {"type": "array", "items": sub} if self.many else sub
+        else:
+            assert self.kind is not None, self.name
+            out = dict(self.kind.json)
+            if self.choices is not None:
+                out["enum"] = list(self.choices)
+            if self.kind in (NUMBER, INTEGER):
+                if self.low is not None:
+                    out["exclusiveMinimum" if self.open in ("low", "both") else "minimum"] = (
+                        self.low
+                    )
+                if self.high is not None:
+                    out["exclusiveMaximum" if self.open in ("high", "both") else "maximum"] = (
+                        self.high
+                    )
+        doc = self.doc + (f" [{self.unit}]" if self.unit else "")
+        if doc and "$ref" not in out:
+            out["description"] = doc
+        return out
+
+
+@dataclass(frozen=True)
+class Section:
+    """One input table: its fields, in reading order.
+
+    ``where`` is how messages name the table (``[law]``); ``variants`` maps the value of
+    the ``kind`` field to the names of the fields that kind allows (tagged tables such as
+    programme segments); ``required_by`` maps a kind to its required field names.
+    """
+
+    name: str
+    fields: tuple[Field, ...]
+    doc: str = ""
+    where: str = ""
+    variants: Mapping[str, tuple[str | Field, ...]] | None = None
+    required_by: Mapping[str, tuple[str, ...]] | None = None
+    extra: Mapping[str, Any] | None = None  # more JSON Schema (oneOf, ...)
+    ref: bool = False  # written once under $defs/<name> of the generated schema
+
+    def __getitem__(self, name: str) -> Field:
+        for f in self.fields:
+            if f.name == name:
+                return f
+        raise KeyError(name)
+
+    def keys(self, kind: str | None = None) -> tuple[str, ...]:
+        """The keys allowed (for a tagged table, those of ``kind``)."""
+        return tuple(f.name for f in self.fields_of(kind))
+
+    def fields_of(self, kind: str | None = None) -> tuple[Field, ...]:
+        """The fields (for a tagged table, those of ``kind``, its own declarations first)."""
+        if self.variants is None or kind is None:
+            return self.fields
+        own = [f if isinstance(f, Field) else self[f] for f in self.variants[kind]]
+        return (self["kind"], *own)
+
+    def table(self, data: Any, where: str | None = None) -> Table:
+        """``data`` as a checked table: unknown keys are refused first (with did-you-mean)."""
+        t = data if isinstance(data, Table) else Table(data, self.where if where is None else where)
+        kind = None
+        if self.variants is not None:
+            kind = t.get("kind", str, choices=tuple(self.variants))
+        allowed = self.keys(kind)
+        for key in t.mapping():
+            if key not in allowed:
+                name = f"{t.where}.{key}" if t.where else key
+                raise InputError(unknown_key(name, key, allowed))
+        for key in (self.required_by or {}).get(kind or "", ()):
+            if key not in t:
+                raise InputError(
+                    f"missing required key {t.where}.{key} (needed by kind = '{kind}')"
+                )
+        return t
+
+    def read(
+        self, data: Any, where: str | None = None, *, only_given: bool = False
+    ) -> dict[str, Any]:
+        """The typed values of the table's plain keys (sub-tables are left to the caller).
+
+        Absent keys take their default (``None`` for :data:`OMIT`), or are left out with
+        ``only_given``. A missing required key is one line naming it.
+        """
+        t = self.table(data, where)
+        kind = t.get("kind", str) if self.variants is not None else None
+        out: dict[str, Any] = {} if kind is None else {"kind": kind}
+        for f in self.fields_of(kind):
+            if f.name == "kind" or f.table is not None or f.kind is None:
+                continue
+            if f.name in t:
+                out[f.name] = f.kind.read(t, f)
+            elif f.required:
+                raise InputError(f"missing required key {t.where}.{f.name}")
+            elif not only_given:
+                out[f.name] = None if f.default is OMIT else f.default
+        return out
+
+    def schema(self) -> dict[str, Any]:
+        """The JSON Schema of the table (tagged tables: one ``if/then`` rule per kind)."""
+        out: dict[str, Any] = {"type": "object", "additionalProperties": False}
+        if self.doc:
+            out["description"] = self.doc
+        required = [f.name for f in self.fields if f.required]
+        if required:
+            out["required"] = required
+        out["properties"] = {f.name: f.schema() for f in self.fields}
+        if self.variants is not None:
+            out["allOf"] = [self._rule(k) for k in self.variants]
+            for k in self.variants:  # a key declared again by a kind: either declaration
+                for f in (f for f in self.variants[k] if isinstance(f, Field)):
+                    out["properties"][f.name] = {"anyOf": [self[f.name].schema(), f.schema()]}
+        out.update(self.extra or {})
+        return out
+
+    def _rule(self, kind: str) -> dict[str, Any]:
+        then: dict[str, Any] = {"propertyNames": {"enum": list(self.keys(kind))}}
+        if self.required_by and kind in self.required_by:
+            then["required"] = list(self.required_by[kind])
+        own = {f.name: f.schema() for f in self.variants[kind] if isinstance(f, Field)}  # type: ignore[index]
+        if own:
+            then["properties"] = own
+        return {"if": {"properties": {"kind": {"const": kind}}}, "then": then}
+
+
+def reraise(where: str, call: Callable[[], Any]) -> Any:
+    """Run ``call``; re-raise a ParameterError with ``where`` in front of its field."""
+    try:
+        return call()
+    except ParameterError as exc:
+        raise ParameterError(f"{where}.{exc.field}", exc.value, exc.allowed) from None
+
+
+def check_overrides(root: Section, overrides: Iterable[str]) -> None:
+    """Refuse a ``--set section.key=value`` whose key no declaration has (did-you-mean).
+
+    Entries of arrays of tables (``program.2.steps``) and keys below a free-form table are
+    checked as far as the declarations go; the value itself is checked by the parser.
+    """
+    for item in overrides:
+        dotted = item.split("=", 1)[0].strip()
+        section: Section | None = root
+        where = ""
+        for part in (p.strip() for p in dotted.split(".")):
+            if section is None:
+                break
+            if part.isdigit():  # an entry of an array of tables, counted from 1
+                where = f"[{where}] #{part}"
+                continue
+            allowed = section.keys() if section.variants is None else _all_keys(section)
+            name = f"{where}.{part}" if where else part
+            if part not in allowed:
+                raise InputError(f"--set {item}: " + unknown_key(name, part, allowed))
+            f = section[part]
+            where = f"[{part}]" if not where else name
+            section = f.table if f.table is not None and f.table.fields else None
+
+
+def _all_keys(section: Section) -> tuple[str, ...]:
+    return tuple(dict.fromkeys(k for v in section.variants or {} for k in section.keys(v)))
+
+
+def override(root: Section, data: dict[str, Any], overrides: Sequence[str]) -> dict[str, Any]:
+    """``data`` with the ``--set`` overrides applied, each key checked against ``root``."""
+    check_overrides(root, overrides)
+    return apply_overrides(data, overrides)
+
+
+T = TypeVar("T")
+
+
+def load(root: Section, parse: Callable[..., T], path: str | os.PathLike[str],
+         overrides: Sequence[str]) -> T:  # fmt: skip
+    """Read the TOML file ``path``, apply the ``--set`` overrides (checked against ``root``)
+    and ``parse`` it (relative file names from the file's folder)."""
+    p = Path(path)
+    return parse(override(root, load_toml(p), overrides), base_dir=p.parent, source=str(p))

@@ -1,0 +1,583 @@
+"""The ``frictionlab roughness`` scenario: declarations and the parser.
+
+``mu0``, two surfaces ``[lower]`` (fixed) and ``[upper]`` (sliding), ``[sliding]`` and
+optional ``[lattice]``, ``[output]``, ``[adhesion]`` (Eqs 21-22), ``[wear]`` (Eqs
+23-28w), ``[hierarchy]`` (Eq 28) and ``[multiscale]``. Lengths in m, angles in degrees.
+Surface kinds: flat, wedge, smooth_wedge, sinusoid, self_affine, file (a measured map
+read through SurfaceTopography; its array's first axis is x).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from frictionlab.app.budget import check_grid_size
+from frictionlab.errors import InputError, ParameterError
+from frictionlab.io.config import Table
+from frictionlab.roughness import generators
+from frictionlab.roughness.hierarchy import (
+    MU_PASSED,
+    ON_INVALID,
+    HierarchyLevel,
+    check_nested,
+    self_similar_levels,
+)  # fmt: skip
+from frictionlab.roughness.lattice import (
+    CONTROLS,
+    ENGINES,
+    FULL_CONTACT_METHODS,
+    MU_DEFINITIONS,
+    TRAVEL_MODES,
+    LatticeSettings,
+    lattice_geometry,
+)  # fmt: skip
+from frictionlab.roughness.surface import HeightMap, Surface
+from frictionlab.roughness.topography import DETREND_MODES, PERIODICITY_MODES, read_prepared
+from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
+from frictionlab.schema.core import (
+    BOOL,
+    INTEGER,
+    NUMBER,
+    REQUIRED,
+    STRING,
+    Field,
+    Kind,
+    Section,
+    listed,
+    load,
+)  # fmt: skip
+
+__all__ = [
+    "ROUGHNESS", "SURFACE", "SURFACE_KINDS", "AdhesionOptions", "HierarchyOptions",
+    "MultiscaleOptions", "RoughnessScenario", "WearOptions", "load_roughness",
+    "parse_roughness",
+]  # fmt: skip
+
+SURFACE_KINDS = ("flat", "wedge", "smooth_wedge", "sinusoid", "self_affine", "file")
+MAX_DIRECTIONS = 3601
+#: [sliding].on_invalid in the TOML -> LatticeSettings.on_invalid
+ON_INVALID_KEYS = {"error": "raise", "mask": "drop"}
+
+
+def _range(t: Table, name: str, last: str) -> tuple[float, float, Any]:
+    rng = Table(t.raw(name), f"{t.where}.{name}")
+    start, stop = rng.get("start", float), rng.get("stop", float)
+    if last == "step":
+        end = rng.get("step", float, check=lambda v: v > 0.0, allowed="step > 0")
+    else:
+        end = rng.get("count", int, check=lambda v: v >= 1, allowed="count >= 1 load")
+    rng.finish()
+    return start, stop, end
+
+
+def _directions(t: Table, f: Field) -> np.ndarray:
+    raw, name = t.raw(f.name), f"{t.where}.{f.name}"
+    if isinstance(raw, dict):
+        start, stop, step = _range(t, f.name, "step")
+        if stop < start:
+            raise InputError(f"{name}: stop = {stop:g} is below start = {start:g}")
+        count = math.floor((stop - start) / step * (1.0 + 1e-12) + 1e-9) + 1
+        if count > MAX_DIRECTIONS:
+            raise InputError(f"{name} has {count} directions: allowed at most {MAX_DIRECTIONS}")
+        return start + step * np.arange(count)
+    if isinstance(raw, list):
+        values = t.get_list(f.name, float)
+        if not values or len(values) > MAX_DIRECTIONS:
+            raise InputError(f"{name} must list 1 to {MAX_DIRECTIONS} directions")
+        return np.array(values, dtype=np.float64)
+    return np.array([t.get(f.name, float)], dtype=np.float64)
+
+
+def _loads(t: Table, f: Field) -> np.ndarray:
+    name = f"{t.where}.{f.name}"
+    if isinstance(t.raw(f.name), dict):
+        start, stop, count = _range(t, f.name, "count")
+        if count == 1 and start != stop:
+            raise InputError(f"{name}: count = 1 needs start == stop")
+        loads = np.linspace(start, stop, count)
+    else:
+        loads = np.array(t.get_list(f.name, float), dtype=np.float64)
+        if loads.size == 0:
+            raise InputError(
+                f"{name} is empty: allowed a sweep of at least one load (N per spring)"
+            )
+    if loads.size > MAX_DIRECTIONS:
+        raise InputError(f"{name} has {loads.size} loads: allowed at most {MAX_DIRECTIONS}")
+    return loads
+
+
+def _either(*kinds: Kind) -> Kind:
+    """A value of one of ``kinds``: the one whose JSON type is the value's (else the last)."""
+
+    def read(t: Table, f: Field) -> Any:
+        raw = t.raw(f.name)
+        kind = "string" if isinstance(raw, str) else "array" if isinstance(raw, list) else None
+        return next((k for k in kinds if k.json.get("type") == kind), kinds[-1]).read(t, f)
+
+    return Kind(" or ".join(k.name for k in kinds), read, {"oneOf": [dict(k.json) for k in kinds]})
+
+
+def _full(t: Table, f: Field) -> str:
+    if t.raw(f.name) != "full":
+        raise InputError(f"{t.where}.{f.name} = {t.raw(f.name)!r} is invalid: allowed 'full' or a "
+                         "number (N)")  # fmt: skip
+    return "full"
+
+
+def _range_json(last: str, kind: str) -> dict[str, Any]:
+    return {"type": "object", "additionalProperties": False, "required": ["start", "stop", last],
+            "properties": {"start": {"type": "number"}, "stop": {"type": "number"},
+                           last: {"type": kind}}}  # fmt: skip
+
+
+_NUMS = listed(float, "number")
+DIRECTIONS = Kind(
+    "directions",
+    _directions,
+    {"oneOf": [{"type": "number"}, _NUMS.json, _range_json("step", "number")]},
+)
+LOADS = Kind("loads", _loads, {"oneOf": [_NUMS.json, _range_json("count", "integer")]})
+_FULL = Kind("'full'", _full, {"type": "string", "enum": ["full"]})
+_BETA = Field("beta_deg", DIRECTIONS, "directions (default: [sliding].beta_deg)", "deg")
+_POS: dict[str, Any] = {"low": 0.0, "open": "low", "allowed": "a positive value (SI units)"}
+_SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
+SURFACE = Section("surface", (
+    Field("kind", STRING, "surface kind", "", REQUIRED, choices=SURFACE_KINDS),
+    Field("angles_deg", listed(float, "number", (1, 2)), "rising, falling flank angles", "deg"),
+    Field("wavelength", NUMBER, "period of the wedges", "m", **_POS),
+    Field("amplitude", NUMBER, "amplitude of the sinusoid", "m", **_POS),
+    Field("wavelengths", listed(float, "number", (1, 2)), "one (1-D) or two (2-D) periods", "m"),
+    Field("hurst", NUMBER, "Hurst exponent", "", low=0, high=1, open="low",
+          allowed="0 < hurst <= 1"),
+    _SIZES,
+    Field("points", listed(int, "integer", (1, 2)), "grid points (same count as sizes)"),
+    Field("allow_large", BOOL, "allow grids beyond half the machine's memory", "", False),
+    Field("seed", INTEGER, "random seed", "", low=0),
+    Field("rms_height", NUMBER, "rms height (or rms_slope)", "m", **_POS),
+    Field("rms_slope", NUMBER, "rms slope (or rms_height)", "", **_POS),
+    Field("short_cutoff", NUMBER, "shortest wavelength kept", "m", **_POS),
+    Field("long_cutoff", NUMBER, "longest wavelength kept", "m", **_POS),
+    Field("path", STRING, "the topography file (relative to the scenario)"),
+    Field("periodicity", STRING, "how the map is made periodic", choices=PERIODICITY_MODES),
+    Field("detrend", STRING, "trend removed from the map", choices=DETREND_MODES),
+    Field("fill_missing", BOOL, "fill missing points", "", False),
+    Field("gradient", STRING, "slope computation", "", "fd", choices=("fd", "spectral")),
+    Field("format", STRING, "file format (default: detected)", "", None),
+    Field("channel", INTEGER, "data channel of the file", "", None),
+    Field("unit", STRING, "length unit of files without one", "", None),
+    Field("crop", listed(float, "number", (2, 4)), "[x0, x1, y0, y1]", "m", None),
+    Field("window", STRING, "window applied before filtering (e.g. hann)", "", None),
+), "one rough surface", variants={
+    "flat": (),
+    "wedge": ("angles_deg", "wavelength"),
+    "smooth_wedge": ("angles_deg", "wavelength"),
+    "sinusoid": ("amplitude", "wavelengths"),
+    "self_affine": ("hurst", "physical_sizes", "points", "allow_large", "seed", "rms_height",
+                    "rms_slope", "short_cutoff", "long_cutoff"),
+    "file": ("path", "periodicity", "detrend", "fill_missing", "gradient", "format", "channel",
+             "unit", Field("physical_sizes", _SIZES.kind, "scan size along x (and y), in "
+             "`unit` (files without sizes)", "unit", low=0, open="low"), "crop", "window",
+             "short_cutoff", "long_cutoff"),
+}, required_by={
+    "wedge": ("angles_deg", "wavelength"), "smooth_wedge": ("angles_deg", "wavelength"),
+    "sinusoid": ("amplitude", "wavelengths"),
+    "self_affine": ("hurst", "physical_sizes", "points", "seed"),
+    "file": ("path", "periodicity", "detrend"),
+}, ref=True)  # fmt: skip
+_L: dict[str, Any] = {"by": LatticeSettings}
+SLIDING = Section("sliding", (
+    Field("beta_deg", DIRECTIONS, "sliding directions: one value, a list or {start, stop, "
+          "step}", "deg", REQUIRED),
+    Field("load", _either(_FULL, NUMBER), "'full' contact or the mean force per spring", "N",
+          "full", **_L),
+    Field("control", STRING, "what is held: the load or the separation", "", "load",
+          choices=CONTROLS, **_L),
+    Field("separation", NUMBER, "separation c (control = separation)", "m", **_L),
+    Field("phase", listed(float, "number", 2), "initial offset of the upper surface", "m", **_L),
+    Field("on_invalid", STRING, "contacts violating Eq 1: error, or mask (drop them, report "
+          "their fraction)", "", "error", choices=tuple(ON_INVALID_KEYS)),
+), "how the upper surface slides", "[sliding]")  # fmt: skip
+LATTICE = Section("lattice", (
+    Field("stations", _either(listed(int, "integer", (1, 2)), INTEGER), "lattice stations "
+          "(or [nx, ny])", **_L),
+    Field("time_samples", INTEGER, "time samples of the travel", **_L),
+    Field("max_return_periods", INTEGER, "most periods travelled before the return", **_L),
+    Field("k_c", NUMBER, "spring stiffness in compression", "N/m", **_L),
+    Field("k_t", NUMBER, "spring stiffness in tension", "N/m", **_L),
+    Field("travel", _either(Kind("mode", lambda t, f: t.get(f.name, str, choices=TRAVEL_MODES),
+                                 {"type": "string", "enum": list(TRAVEL_MODES)}), NUMBER),
+          "auto | return | ergodic | a length", "m", **_L),
+    Field("mu_definition", STRING, "mu as magnitude or projection", choices=MU_DEFINITIONS, **_L),
+    Field("engine", STRING, "kernel engine", choices=ENGINES, **_L),
+    Field("full_contact", STRING, "load = full: area average or lattice",
+          choices=FULL_CONTACT_METHODS, **_L),
+    Field("snap_time_samples", BOOL, "time samples moved to whole-station shifts", **_L),
+), "lattice settings (LatticeSettings)", "[lattice]")  # fmt: skip
+OUTPUT = Section("output", (
+    Field("plot_full_circle", BOOL, "compute extra directions for the full-circle plot", "",
+          True),
+    Field("plot_step_deg", NUMBER, "step of those directions", "deg", 5.0, low=0, high=90,
+          open="low", allowed="0 < step <= 90"),
+), "figures", "[output]")  # fmt: skip
+ADHESION = Section("adhesion", (
+    Field("loads", LOADS, "loads per spring: a list or {start, stop, count}", "N", REQUIRED),
+    Field("k_t", NUMBER, "tensile spring stiffness, 0 <= k_t <= k_c (default k_c / 2)", "N/m",
+          None),
+    Field("detachment", NUMBER, "cut-off elongation (default: never detach)", "m", None,
+          low=0, open="low", allowed="a cut-off elongation > 0 m"),
+    _BETA,
+    Field("compare_without_adhesion", BOOL, "also run without tensile springs", "", True),
+), "load sweep with tensile springs (Eqs 21-22)", "[adhesion]")  # fmt: skip
+_W: dict[str, Any] = {"default": REQUIRED, "low": 0.0, "open": "low"}
+WEAR = Section("wear", (
+    Field("wear_coefficient", NUMBER, "Archard K", "-", allowed="a positive number "
+          "(dimensionless)", **_W),
+    Field("hardness", NUMBER, "hardness", "Pa", allowed="a positive number (Pa)", **_W),
+    Field("normal_load", NUMBER, "force on the nominal area", "N",
+          allowed="a positive number (N)", **_W),
+    Field("velocity", NUMBER, "sliding velocity", "m/s", allowed="a positive number (m/s)",
+          **_W),
+    Field("nominal_area", NUMBER, "nominal contact area", "m^2",
+          allowed="a positive number (m^2)", **_W),
+    Field("surfaces", STRING, "which surfaces wear", "", "both", choices=WEAR_SURFACES),
+    Field("samples", INTEGER, "times from 0 to T_w", "", 21, low=2),
+    Field("method", STRING, "how the worn polar is computed", "", "auto", choices=WEAR_METHODS),
+    _BETA,
+), "Archard wear, mu(t) (Eqs 23-28w)", "[wear]")  # fmt: skip
+LEVEL = Section(
+    "level",
+    (
+        Field("lower", table=SURFACE, default=REQUIRED),
+        Field("upper", table=SURFACE, default=REQUIRED),
+    ),
+    "one inner level (innermost first)",
+)
+HIERARCHY = Section("hierarchy", (
+    Field("levels", INTEGER, "self-similar levels (Eq 28; with ratio)", "", None, low=1),
+    Field("ratio", NUMBER, "scale factor between levels", "", None, low=1, open="low",
+          allowed="a scale factor > 1"),
+    Field("inner", table=LEVEL, many=True, doc="inner levels (instead of levels, ratio)"),
+    Field("mu_passed", STRING, "mu passed between levels", "", "magnitude", choices=MU_PASSED),
+    Field("on_invalid", STRING, "contacts violating Eq 1", "", "raise", choices=ON_INVALID),
+    Field("samples_per_level", INTEGER, "hierarchy with [wear]: times per level window", "",
+          11, low=2),
+    _BETA,
+), "hierarchical roughness: [lower]/[upper] are the outermost level", "[hierarchy]")  # fmt: skip
+MULTISCALE = Section("multiscale", (
+    Field("cutoffs", _NUMS, "band edges: wavelengths (any order, distinct)", "m", REQUIRED),
+    Field("mu_passed", STRING, "mu passed between bands", "", "magnitude", choices=MU_PASSED),
+    _BETA,
+), "scale-resolved friction (sampled surfaces)", "[multiscale]")  # fmt: skip
+_TOP = (
+    Field(
+        "mu0",
+        NUMBER,
+        "local Coulomb coefficient",
+        "-",
+        REQUIRED,
+        low=0,
+        open="low",
+        allowed="a local friction coefficient mu0 > 0",
+    ),
+    Field("title", STRING, "title of the run", "", ""),
+    Field("lower", table=SURFACE, default=REQUIRED, doc="surface 1, fixed"),
+    Field("upper", table=SURFACE, default=REQUIRED, doc="surface 2, sliding"),
+    Field("sliding", table=SLIDING, default=REQUIRED),
+    Field("lattice", table=LATTICE),
+)
+ROUGHNESS = Section("roughness", (
+    *_TOP,
+    Field("output", table=OUTPUT),
+    Field("adhesion", table=ADHESION),
+    Field("wear", table=WEAR),
+    Field("hierarchy", table=HIERARCHY),
+    Field("multiscale", table=MULTISCALE),
+), "A roughness scenario of `frictionlab roughness`: two surfaces slid over each other on the "
+   "lattice-spring model. Lengths in m, angles in degrees.")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class AdhesionOptions:
+    """The ``[adhesion]`` table: loads per spring (N), k_t (N/m; None: k_c / 2), directions."""
+
+    loads: np.ndarray
+    k_t: float | None
+    beta_deg: np.ndarray
+    compare_without_adhesion: bool
+    detachment: float | None = None
+
+
+@dataclass(frozen=True)
+class WearOptions:
+    """The ``[wear]`` table: Archard inputs, number of times, method, directions."""
+
+    settings: WearSettings
+    samples: int
+    method: str
+    beta_deg: np.ndarray
+
+
+@dataclass(frozen=True)
+class HierarchyOptions:
+    """The ``[hierarchy]`` table: levels (innermost first), options, directions."""
+
+    levels: tuple[HierarchyLevel, ...]
+    mu_passed: str
+    on_invalid: str
+    samples_per_level: int
+    beta_deg: np.ndarray
+
+
+@dataclass(frozen=True)
+class MultiscaleOptions:
+    """The ``[multiscale]`` table: band edges (wavelengths, m, descending), directions."""
+
+    cutoffs: tuple[float, ...]
+    beta_deg: np.ndarray
+    mu_passed: str
+
+
+@dataclass(frozen=True)
+class RoughnessScenario:
+    """A parsed scenario: surfaces, directions (deg), lattice settings, output options."""
+
+    mu0: float
+    lower: Surface
+    upper: Surface
+    beta_deg: np.ndarray
+    settings: LatticeSettings
+    title: str = ""
+    plot_full_circle: bool = True
+    plot_step_deg: float = 5.0
+    adhesion: AdhesionOptions | None = None
+    wear: WearOptions | None = None
+    hierarchy: HierarchyOptions | None = None
+    sources: dict[str, dict[str, Any]] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+    multiscale: MultiscaleOptions | None = None
+
+
+def parse_roughness(
+    data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
+) -> RoughnessScenario:
+    """Build a :class:`RoughnessScenario`; any problem is one :class:`InputError` line."""
+    base = Path(base_dir)
+    top = ROUGHNESS.table(data, "")
+    values = ROUGHNESS.read(top)
+    notes: dict[str, Any] = {}
+    lower = _surface(top.raw("lower"), "[lower]", base, notes, "lower")
+    upper = _surface(top.raw("upper"), "[upper]", base, notes, "upper")
+    _check_cell(lower, upper, notes)
+    sliding = SLIDING.read(top.raw("sliding"), only_given=True)
+    betas = sliding.pop("beta_deg")
+    sliding["on_invalid"] = ON_INVALID_KEYS[sliding.get("on_invalid", "error")]
+    sliding.setdefault("load", "full")
+    sliding.setdefault("control", "load")
+    if "phase" in sliding:
+        sliding["phase"] = tuple(sliding["phase"])
+    options = {**sliding, **LATTICE.read(top.raw("lattice", {}), only_given=True)}
+    if isinstance(options.get("stations"), list):
+        options["stations"] = tuple(options["stations"])
+    try:
+        settings = LatticeSettings(**options)
+    except ParameterError as exc:
+        section = "[sliding]" if exc.field in SLIDING.keys(None) else "[lattice]"
+        raise InputError(f"{section}.{exc}") from None
+    output = OUTPUT.read(top.raw("output", {}))
+    adhesion = wear = hierarchy = multiscale = None
+    if "adhesion" in top:
+        adhesion = _adhesion(top.raw("adhesion"), betas, settings)
+    if "wear" in top:
+        wear = _wear(top.raw("wear"), betas)
+    if "hierarchy" in top:
+        hierarchy = _hierarchy(top.table("hierarchy"), lower, upper, betas, base)  # type: ignore[arg-type]
+    if "multiscale" in top:
+        multiscale = _multiscale(top.raw("multiscale"), betas)
+    try:  # the station count is checked against the surfaces now, not mid-computation
+        lattice_geometry(lower, upper, settings.stations)
+    except ParameterError as exc:
+        if exc.field == "stations":
+            raise InputError(f"[lattice].{exc}") from None
+    return RoughnessScenario(
+        mu0=values["mu0"], lower=lower, upper=upper, beta_deg=betas, settings=settings,
+        title=values["title"], plot_full_circle=output["plot_full_circle"],
+        plot_step_deg=output["plot_step_deg"], adhesion=adhesion, wear=wear,
+        hierarchy=hierarchy, sources={k: v for k, v in notes.items() if k in ("lower", "upper")},
+        warnings=tuple(notes.get("warnings", ())), multiscale=multiscale,
+    )  # fmt: skip
+
+
+def load_roughness(
+    path: str | os.PathLike[str], overrides: Sequence[str] = ()
+) -> RoughnessScenario:
+    """Read, override (``section.key=value``) and validate a roughness scenario."""
+    return load(ROUGHNESS, parse_roughness, path, overrides)
+
+
+def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:
+    """Two sampled surfaces need commensurate sizes: say so with the files' own sizes."""
+    try:
+        lattice_geometry(lower, upper, (1, 1) if isinstance(lower, HeightMap) else 1)
+    except ParameterError as exc:
+        sizes = []
+        for side in ("lower", "upper"):
+            info = notes.get(side, {})
+            if "source_physical_sizes_m" in info:
+                size = [f"{v:.6g}" for v in info["source_physical_sizes_m"]]
+                extra = " (mirrored: doubled)" if info.get("periodicity") == "mirror" else ""
+                crop = " after crop" if "crop_m" in info else ""
+                sizes.append(
+                    f"[{side}] file {info.get('file')} is {' x '.join(size)} m{crop}{extra}"
+                )
+        if not sizes:
+            raise InputError(f"[lower]/[upper]: {exc}") from None
+        raise InputError(
+            "[upper].physical_sizes: the two surfaces must share a period cell (sizes in an "
+            f"integer ratio up to 64) but {'; '.join(sizes)}: crop them to a common size "
+            "(crop = [x0, x1, y0, y1] in m)"
+        ) from None
+
+
+def _multiscale(data: Any, betas: np.ndarray) -> MultiscaleOptions:
+    v = MULTISCALE.read(data)
+    cutoffs = v["cutoffs"]
+    if not cutoffs or any(not c > 0.0 for c in cutoffs):
+        raise InputError(f"[multiscale].cutoffs = {cutoffs} is invalid: allowed a non-empty list "
+                         "of wavelengths > 0 m")  # fmt: skip
+    ordered = tuple(sorted(cutoffs, reverse=True))
+    if len(set(ordered)) != len(ordered):
+        raise InputError(f"[multiscale].cutoffs = {cutoffs} is invalid: allowed distinct values")
+    return MultiscaleOptions(ordered, _or(v["beta_deg"], betas), v["mu_passed"])
+
+
+def _or(value: Any, default: Any) -> Any:
+    return default if value is None else value
+
+
+def _adhesion(data: Any, betas: np.ndarray, settings: LatticeSettings) -> AdhesionOptions:
+    v = ADHESION.read(data)
+    loads, k_t = v["loads"], v["k_t"]
+    if k_t is not None and not 0.0 <= k_t <= settings.k_c:
+        raise InputError(f"[adhesion].k_t = {k_t!r} is invalid: allowed 0 <= k_t <= k_c = "
+                         f"{settings.k_c:g} N/m")  # fmt: skip
+    kt_value = 0.5 * settings.k_c if k_t is None else k_t
+    if kt_value == 0.0 and np.any(loads <= 0.0):
+        raise InputError("[adhesion].loads: loads <= 0 need tensile springs (k_t > 0)")
+    if settings.control != "load":
+        raise InputError("[adhesion] needs [sliding].control = 'load' (a load sweep)")
+    if v["detachment"] is not None and kt_value == 0.0:
+        raise InputError("[adhesion].detachment needs tensile springs (k_t > 0)")
+    return AdhesionOptions(loads, k_t, _or(v["beta_deg"], betas), v["compare_without_adhesion"],
+                           v["detachment"])  # fmt: skip
+
+
+def _wear(data: Any, betas: np.ndarray) -> WearOptions:
+    v = WEAR.read(data)
+    values = {k: v[k] for k in ("wear_coefficient", "hardness", "normal_load", "velocity",
+                                "nominal_area", "surfaces")}  # fmt: skip
+    try:
+        settings = WearSettings(**values)
+    except ParameterError as exc:
+        raise InputError(f"[wear].{exc}") from None
+    return WearOptions(settings, v["samples"], v["method"], _or(v["beta_deg"], betas))
+
+
+def _hierarchy(
+    table: Table, lower: Surface, upper: Surface, betas: np.ndarray, base_dir: Path
+) -> HierarchyOptions:
+    v = HIERARCHY.read(table)
+    has_inner = "inner" in table
+    if has_inner == (v["levels"] is not None or v["ratio"] is not None):
+        raise InputError(
+            f"{table.where} needs either levels and ratio (self-similar, Eq 28) or "
+            "[[hierarchy.inner]] tables, not both"
+        )
+    try:
+        if not has_inner:
+            if v["levels"] is None or v["ratio"] is None:
+                missing = "levels" if v["levels"] is None else "ratio"
+                raise InputError(f"missing required key {table.where}.{missing}")
+            levels = self_similar_levels(lower, upper, v["levels"], v["ratio"])
+        else:
+            raw = table.raw("inner")
+            if not isinstance(raw, list) or not all(isinstance(item, dict) for item in raw):
+                raise InputError(f"{table.where}.inner must be an array of tables")
+            inner = []
+            for i, item in enumerate(raw, 1):
+                where = f"{table.where}.inner #{i}"
+                level = LEVEL.table(item, where)
+                pair = [_surface(level.raw(side), f"{where}.{side}", base_dir, {}, side)
+                        for side in ("lower", "upper")]  # fmt: skip
+                inner.append(HierarchyLevel(pair[0], pair[1]))
+            levels = (*inner, HierarchyLevel(lower, upper))
+            check_nested(levels)
+    except ParameterError as exc:
+        raise InputError(f"{table.where}: {exc}") from None
+    return HierarchyOptions(levels, v["mu_passed"], v["on_invalid"], v["samples_per_level"],
+                            _or(v["beta_deg"], betas))  # fmt: skip
+
+
+def _surface(data: Any, where: str, base_dir: Path, notes: dict[str, Any], side: str) -> Surface:
+    """Build one surface; its provenance goes to ``notes[side]``, warnings to
+    ``notes["warnings"]``."""
+    v = SURFACE.read(data, where)
+    info: dict[str, Any] = {"kind": v["kind"]}
+    try:
+        surface = _build(v, where, base_dir, info)
+    except ParameterError as exc:
+        raise InputError(f"{where}.{exc}") from None
+    for text in info.pop("warnings", ()):
+        notes.setdefault("warnings", []).append(f"{where}: {text}")
+    notes[side] = info
+    return surface
+
+
+def _build(v: dict[str, Any], where: str, base_dir: Path, info: dict[str, Any]) -> Surface:
+    kind = v["kind"]
+    if kind == "flat":
+        return generators.flat()
+    if kind in ("wedge", "smooth_wedge"):
+        angles = v["angles_deg"]
+        if not all(0.0 < a < 90.0 for a in angles):
+            raise InputError(
+                f"{where}.angles_deg = {angles} is invalid: allowed 0 < angle < 90 degrees"
+            )
+        make = generators.wedge if kind == "wedge" else generators.smooth_wedge
+        return make(angles, v["wavelength"])
+    if kind == "sinusoid":
+        return generators.sinusoid(v["amplitude"], v["wavelengths"])
+    if kind == "self_affine":
+        sizes, points = v["physical_sizes"], v["points"]
+        if len(points) != len(sizes):
+            raise InputError(f"{where}.points must have {len(sizes)} entries, got {len(points)}")
+        check_grid_size(f"{where}.points", points, v["allow_large"])
+        info.update(hurst=v["hurst"], seed=v["seed"], physical_sizes_m=sizes, points=points)
+        return generators.self_affine(
+            v["hurst"], sizes, points, rng=np.random.default_rng(v["seed"]),
+            rms_height=v["rms_height"], rms_slope=v["rms_slope"],
+            short_cutoff=v["short_cutoff"], long_cutoff=v["long_cutoff"],
+        )  # fmt: skip
+    path = Path(v["path"])
+    sizes, crop = v["physical_sizes"], v["crop"]
+    if sizes is not None and any(not s > 0.0 for s in sizes):
+        raise InputError(
+            f"{where}.physical_sizes = {sizes} is invalid: allowed sizes > 0 in `unit`"
+        )
+    prepared = read_prepared(
+        path if path.is_absolute() else base_dir / path, periodicity=v["periodicity"],
+        detrend=v["detrend"], fill_missing=v["fill_missing"], gradient=v["gradient"],
+        format=v["format"], channel=v["channel"], unit=v["unit"],
+        physical_sizes=None if sizes is None else (sizes[0] if len(sizes) == 1 else tuple(sizes)),
+        crop=None if crop is None else tuple(crop), window=v["window"],
+        short_cutoff=v["short_cutoff"], long_cutoff=v["long_cutoff"],
+    )  # fmt: skip
+    info.update(prepared.info)
+    info["warnings"] = list(prepared.warnings)
+    return prepared.surface

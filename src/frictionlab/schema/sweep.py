@@ -1,0 +1,147 @@
+"""The ``frictionlab sweep`` file: declarations and the parser.
+
+A base scenario plus a ``[grid]`` (cartesian product, the last key varying fastest) or a
+``[[case]]`` list of overrides. Keys are the dotted names of ``--set``; ``+`` links keys
+that take the same value. Every key must be present in the base scenario.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from frictionlab.errors import InputError
+from frictionlab.schema.core import REQUIRED, STRING, Field, Section, load
+
+if TYPE_CHECKING:
+    from frictionlab.sweep.cases import Case
+
+__all__ = ["COMMANDS", "SWEEP", "SweepSpec", "load_sweep", "parse_sweep"]
+
+#: Scenario commands a sweep can run.
+COMMANDS = ("simulate", "roughness")
+_FREE = Section("overrides", ())
+SWEEP = Section("sweep", (
+    Field("title", STRING, "names the sweep in the plot", "", ""),
+    Field("base", STRING, "the base scenario file (relative to the sweep file)", "", REQUIRED),
+    Field("command", STRING, "when absent: simulate for a base with [law], roughness for one with "
+          "[lower] or [sliding]", "", None, choices=COMMANDS),
+    Field("grid", table=_FREE, doc='"section.key" = [values]: every combination is a case; '
+          '"a.x+b.y" = [values] links keys (one axis, one column of sweep.csv)',
+          json={"type": "object", "minProperties": 1}),
+    Field("case", table=_FREE, many=True, doc='one table per case: "section.key" = value '
+          '("a.x+b.y" links keys as in [grid])',
+          json={"type": "array", "minItems": 1, "items": {"type": "object", "minProperties": 1}}),
+), "A sweep file of `frictionlab sweep`: a base scenario and a [grid] or [[case]] tables "
+   "of overrides.", extra={"oneOf": [{"required": ["grid"]}, {"required": ["case"]}]})  # fmt: skip
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """A parsed sweep file (the base scenario itself is not read here)."""
+
+    title: str
+    base: Path
+    command: str | None
+    keys: tuple[str, ...]
+    cases: tuple[Case, ...]
+
+
+def parse_sweep(
+    data: Mapping[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
+) -> SweepSpec:
+    """Validate a parsed sweep file and expand its cases."""
+    from frictionlab.sweep.cases import expand_grid, make_cases  # sweep/ imports this module
+
+    if not isinstance(data.get("base", ""), str) or not data.get("base"):
+        SWEEP.table(dict(data), "")  # an unknown key first
+        raise InputError('base must name the base scenario file, e.g. base = "scenario.toml"')
+    values = SWEEP.read(dict(data), "")
+    if ("grid" in data) == ("case" in data):
+        raise InputError("a sweep file needs exactly one of [grid] or [[case]] tables")
+    if "grid" in data:
+        grid = _grid(data["grid"])
+        keys = tuple(grid)
+        overrides = expand_grid(grid)
+    else:
+        overrides = _case_list(data["case"])
+        keys = tuple(dict.fromkeys(k for item in overrides for k in item))
+    base = values["base"]
+    path = Path(base) if Path(base).is_absolute() else Path(base_dir) / base
+    return SweepSpec(values["title"], path, values["command"], keys, make_cases(overrides))
+
+
+def load_sweep(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> SweepSpec:
+    """Read, override (``key=value``) and validate a sweep file."""
+    return load(SWEEP, parse_sweep, path, overrides)
+
+
+def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Nested tables -> dotted keys (bare ``program.2.duration = ...`` nests in TOML)."""
+    out: dict[str, Any] = {}
+    for key, value in table.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(_flatten(value, f"{name}."))
+        else:
+            out[name] = value
+    return out
+
+
+def _check_value(key: str, value: Any) -> None:
+    if isinstance(value, float) and not math.isfinite(value):
+        raise InputError(f"'{key}' = {value} must be finite")
+
+
+LINK = "+"  # links keys that take the same value (frictionlab.sweep.cases.LINK)
+
+
+def _grid(raw: Any) -> dict[str, list[Any]]:
+    if not isinstance(raw, dict):
+        raise InputError('grid must be a table of "section.key" = [values]')
+    grid = _flatten(raw)
+    if not grid:
+        raise InputError('[grid] is empty: give at least one "section.key" = [values]')
+    owner: dict[str, str] = {}
+    for key, values in grid.items():
+        if not all(key.split(LINK)):
+            raise InputError(f"[grid].'{key}' has an empty key around '{LINK}'")
+        for part in key.split(LINK):
+            if part in owner:
+                raise InputError(
+                    f"[grid] sets '{part}' twice ('{owner[part]}' and '{key}'): give each "
+                    "key one axis"
+                )
+            owner[part] = key
+        if not isinstance(values, list) or not values:
+            raise InputError(f"[grid].'{key}' must be a non-empty list of values, got {values!r}")
+        for v in values:
+            _check_value(f"[grid].{key}", v)
+    return grid
+
+
+def _case_list(raw: Any) -> list[dict[str, Any]]:
+    if not isinstance(raw, list) or not all(isinstance(v, dict) for v in raw):
+        raise InputError("case must be an array of tables ([[case]])")
+    if not raw:
+        raise InputError("[[case]] is empty: give at least one case")
+    out = []
+    for i, item in enumerate(raw, 1):
+        flat = _flatten(item)
+        if not flat:
+            raise InputError(f'[[case]] #{i} is empty: give at least one "section.key" = value')
+        linked: dict[str, Any] = {}
+        for key, value in flat.items():
+            _check_value(f"[[case]] #{i}.{key}", value)
+            if not all(key.split(LINK)):
+                raise InputError(f"[[case]] #{i}.'{key}' has an empty key around '{LINK}'")
+            for part in key.split(LINK):  # "a.x+b.y" = v: the same value for each key
+                if part in linked:
+                    raise InputError(f"[[case]] #{i} sets '{part}' twice")
+                linked[part] = value
+        out.append(linked)
+    return out
