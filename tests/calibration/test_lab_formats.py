@@ -192,3 +192,34 @@ def test_a_malformed_file_through_calibrate_exits_2_with_one_line(tmp_path: Path
     assert main(["calibrate", str(path), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "'run.csv' line 4: column 'COF' = 'abc'" in err[0], err
+
+
+@pytest.mark.slow
+def test_data_and_fit_keys_reach_the_reader_and_the_fit(tmp_path: Path, curve) -> None:
+    """[[data]] sep, decimal, encoding, reciprocating, columns/units of a force pair,
+    segment_weights, time_offset; [fit] starts, seed, band_level."""
+    assert curve.slip is not None
+    back = (curve.time >= 6.0) & (curve.time < 338.0)
+    lines = ["t;Ft;Fn"] + [
+        f"{_num(t - 1.0, True)};{_num((-r if b else r) * FN_N, True)};{_num(FN_N, True)}"
+        for t, r, b in zip(curve.time, curve.friction_ratio, back, strict=True)
+        if t >= 1.0
+    ]  # data clock starts 1 s into the programme
+    (tmp_path / "run.csv").write_bytes(("\n".join(lines) + "\n").encode("utf-16"))
+    cfg = config("run.csv", ["mu_k"], dict(mu_k=0.33), profile=False, starts=2, seed=1,
+                 band_level=0.9)  # fmt: skip
+    data = cfg["data"][0]
+    data["columns"] = {"time": "t", "friction_force": "Ft", "normal_force": "Fn"}
+    data["units"] = {"time": "s", "friction_force": "N", "normal_force": "N"}
+    data.update(sep=";", decimal=",", encoding="utf-16", reciprocating=True, time_offset=1.0,
+                segment_weights=[1.0, 0.0, 1.0, 0.0, 1.0])  # fmt: skip
+    path = write_config(tmp_path / "calibrate.toml", cfg)
+    assert main(["calibrate", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    fit = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert fit["parameters"]["mu_k"]["value"] == pytest.approx(TRUE["mu_k"], rel=1e-3)
+    lines = (tmp_path / "out" / "curves.csv").read_text().splitlines()
+    header = next(ln for ln in lines if not ln.startswith("#"))
+    assert "confidence [-]" in header and "prediction [-]" in header
+    data["segment_weights"] = [1.0, 2.0]
+    bad = write_config(tmp_path / "bad.toml", cfg)
+    assert main(["calibrate", str(bad), "--out", str(tmp_path / "out2"), "--quiet"]) == 2

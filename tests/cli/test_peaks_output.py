@@ -46,3 +46,15 @@ def test_slide_hold_slide_says_mu_s_is_not_the_observed_peak(
     assert "is the law's static coefficient" in text and "not an observed peak" in text
     healing = json.loads((out / "summary.json").read_text())["healing"]
     assert "comparison" in healing and "recovery" in healing
+
+
+def test_run_peak_accuracy_0_reports_the_largest_recorded_step(tmp_path: Path) -> None:
+    assert main(["example", "simulate", "--write", str(tmp_path)]) == 0
+    out = tmp_path / "out"
+    code = main(["simulate", str(tmp_path / "simulate.toml"), "--out", str(out), "--quiet",
+                 "--no-plots", "--set", "program.1.steps=100",
+                 "--set", "run.peak_accuracy=0"])  # fmt: skip
+    assert code == 0
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["points"][0]["peak"]["friction_ratio"] < 0.95 * STARTER_PEAK
+    assert not (out / "peaks.csv").exists()

@@ -199,9 +199,9 @@ def fitted_scenario(run: CalibrationRun, k: int, base: Path) -> str:
 
 
 def _curve_columns(run: CalibrationRun) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    names = ("curve", "time", "data", "model", "residual", "confidence_95", "prediction_95")
+    names = ("curve", "time", "data", "model", "residual", "weight", "confidence", "prediction")
     cols: dict[str, list[Any]] = {k: [] for k in names}
-    bands = run.fit.bands(0.95)
+    bands = run.fit.bands(run.config.band_level)
     for i, (c, m, (conf, pred)) in enumerate(
         zip(run.config.curves, run.fit.models, bands, strict=True)
     ):
@@ -210,9 +210,14 @@ def _curve_columns(run: CalibrationRun) -> tuple[dict[str, np.ndarray], dict[str
         cols["data"].append(c.friction_ratio)
         cols["model"].append(m)
         cols["residual"].append(m - c.friction_ratio)
-        cols["confidence_95"].append(conf)  # half-widths of the 95 % bands
-        cols["prediction_95"].append(pred)
+        cols["weight"].append(run.fit.weights[i])
+        # half-widths of the bands at [fit] band_level; none (0) where the weight is 0
+        cols["confidence"].append(np.nan_to_num(conf, nan=0.0))
+        cols["prediction"].append(np.nan_to_num(pred, nan=0.0))
     arrays = {k: np.concatenate(v) for k, v in cols.items()}
+    if not np.all(np.isfinite(run.fit.stderr)):  # no band: a direction is not determined
+        del arrays["confidence"], arrays["prediction"]
+        names = names[:-2]
     units = dict.fromkeys(names, "-") | {"time": "s"}
     return arrays, units
 
@@ -229,7 +234,14 @@ def _files(out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path) -> 
         name = "fitted.toml" if k == 0 else f"fitted_{k + 1}.toml"
         written.append(write_text_atomic(out / name, fitted_scenario(run, k, base)))
     cols, units = _curve_columns(run)
-    comment = "frictionlab calibrate: data and fitted model per curve"
+    comment = (
+        "frictionlab calibrate: data and fitted model per curve; confidence and prediction: "
+        f"half-widths of the {cfg.band_level:.0%} bands of the model and of a new measurement "
+        "(0 where the sample's weight is 0: no band there)"
+    )
+    if "confidence" not in cols:
+        comment = (f"frictionlab calibrate: data and fitted model per curve; no bands: "
+                   f"{', '.join(fit.not_identified())} not determined by the data")  # fmt: skip
     written.append(write_csv_atomic(out / "curves.csv", cols, units, comment))
     report = Report(
         cfg.title or "Calibration of the subloading-friction law",
@@ -259,14 +271,14 @@ def _files(out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path) -> 
     data_sec = report.add_section(Section("Data and model", anchor="curves"))
     for k, (c, m) in enumerate(zip(cfg.curves, fit.models, strict=True)):
         rel = f"curve_{k + 1}.png"
-        band = fit.bands(0.95)[k][0]
+        band = fit.bands(cfg.band_level)[k][0]
         written.append(save_figure(plot_curve_fit(c, m, run.start_models[k], band), out / rel))
         rms = float(np.sqrt(np.mean((m - c.friction_ratio) ** 2)))
         data_sec.add_figure(
             rel,
             f"{c.name}: measured friction ratio (dots), the start law (dashed) and the fitted "
-            f"law (line) with its 95 % confidence band, one panel per sliding segment (holds "
-            f"left out); residuals below (rms {rms:.3g}).",
+            f"law (line) with its {cfg.band_level:.0%} confidence band, one panel per sliding "
+            f"segment (holds left out); residuals below (rms {rms:.3g}).",
         )
     unc = report.add_section(Section("Uncertainty and identifiability", anchor="uncertainty"))
     unc.intro = (
@@ -321,7 +333,7 @@ class Calibrate:
         with progress(f"calibrate {path.name}") as update:
             fit = fit_law(
                 cfg.params, cfg.curves, cfg.names, cfg.bounds,
-                max_nfev=cfg.max_evaluations, progress=update,
+                max_nfev=cfg.max_evaluations, progress=update, starts=cfg.starts, seed=cfg.seed,
             )  # fmt: skip
         profiles = {}
         if cfg.profile:

@@ -49,6 +49,7 @@ def run_scenario(
             scenario.params, scenario.program, scenario.initial, n_points=scenario.n_points,
             accuracy=opts.accuracy, max_halvings=opts.max_halvings, progress=progress,
             recording=scenario.output.recording(sink, keep_rows, keep_points),
+            peak_accuracy=opts.peak_accuracy or None,
         )  # fmt: skip
     assert scenario.machine is not None
     m = scenario.machine

@@ -358,7 +358,8 @@ class FitResult:
         """Per curve, the half-widths (confidence, prediction) of the fitted curve at its
         samples for a two-sided ``level``: ``z sqrt(g_i^T cov_theta g_i)`` with g_i the
         model's gradient in the fitted space, and with the residual variance s^2/w added
-        for a new measurement. Infinite where a parameter is not determined."""
+        for a new measurement. Infinite where a parameter is not determined; NaN at samples
+        of weight 0."""
         from scipy.stats import norm
 
         if not 0 < level < 1:
@@ -374,11 +375,13 @@ class FitResult:
         undetermined = not bool(np.all(np.isfinite(self.stderr)))
         for model, w in zip(self.models, self.weights, strict=True):
             n = model.size
-            g = jac[row : row + n] / np.sqrt(w)[:, None]
+            counted = w > 0  # a sample of weight 0 keeps no gradient in the weighted Jacobian
+            root = np.sqrt(np.where(counted, w, 1.0))
+            g = jac[row : row + n] / root[:, None]
             row += n
             var = np.einsum("ij,jk,ik->i", g, cov_theta, g)
-            conf = z * np.sqrt(np.maximum(var, 0.0))
-            pred = z * np.sqrt(np.maximum(var, 0.0) + s2 / w)
+            conf = np.where(counted, z * np.sqrt(np.maximum(var, 0.0)), np.nan)
+            pred = np.where(counted, z * np.sqrt(np.maximum(var, 0.0) + s2 / root**2), np.nan)
             if undetermined:
                 conf = np.full(n, np.inf)
                 pred = np.full(n, np.inf)
@@ -504,7 +507,11 @@ def fit_law(
         raise ParameterError("fit.starts", starts, "an integer in 1..1000")
     lo, hi = space.theta_bounds()
     res = None
-    for theta0 in _starting_points(space, x0, starts, seed):
+
+    def valid(theta: np.ndarray) -> bool:
+        return valid_column(params, names, space.from_theta(theta))
+
+    for theta0 in _starting_points(space, x0, starts, seed, valid):
         trial = least_squares(
             obj.residuals, theta0, jac=obj.jac, bounds=(lo, hi), method="trf",
             x_scale="jac", xtol=xtol, ftol=ftol, gtol=gtol, max_nfev=max_nfev,
@@ -547,8 +554,16 @@ def fit_law(
     )
 
 
-def _starting_points(space: FitSpace, x0: np.ndarray, starts: int, seed: int) -> list[np.ndarray]:
-    """The start in theta, then ``starts - 1`` scrambled-Halton points inside the bounds."""
+def _starting_points(
+    space: FitSpace,
+    x0: np.ndarray,
+    starts: int,
+    seed: int,
+    valid: Callable[[np.ndarray], bool] = lambda theta: True,
+) -> list[np.ndarray]:
+    """The start in theta, then ``starts - 1`` scrambled-Halton points inside the bounds that
+    make a ``valid`` law (mu_k <= mu_s, ...): the sequence is drawn on until it has them
+    (at most 50 times as many draws)."""
     from scipy.stats import qmc
 
     theta0 = space.to_theta(x0)
@@ -559,7 +574,12 @@ def _starting_points(space: FitSpace, x0: np.ndarray, starts: int, seed: int) ->
         lo = np.where(np.isfinite(lo), lo, theta0 - 10.0 * np.maximum(1.0, np.abs(theta0)))
         hi = np.where(np.isfinite(hi), hi, theta0 + 10.0 * np.maximum(1.0, np.abs(theta0)))
         width = hi - lo
-        unit = qmc.Halton(d=theta0.size, scramble=True, seed=seed).random(starts - 1)
-        # strictly inside: least_squares needs an interior start
-        points += list(lo + width * (1e-6 + (1 - 2e-6) * unit))
+        halton = qmc.Halton(d=theta0.size, scramble=True, seed=seed)
+        for _ in range(50 * (starts - 1)):
+            # strictly inside: least_squares needs an interior start
+            theta = lo + width * (1e-6 + (1 - 2e-6) * halton.random(1)[0])
+            if valid(theta):
+                points.append(theta)
+                if len(points) == starts:
+                    break
     return points

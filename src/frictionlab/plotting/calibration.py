@@ -60,7 +60,7 @@ def plot_curve_fit(
         ax.plot(t, model[sel], "-", lw=1.3, color="C0", label="fitted law")
         if band is not None and np.all(np.isfinite(band[sel])):
             ax.fill_between(t, model[sel] - band[sel], model[sel] + band[sel], color="C0",
-                            alpha=0.25, lw=0, label="95 % confidence")  # fmt: skip
+                            alpha=0.25, lw=0, label="confidence band")  # fmt: skip
         ax.set_title(f"segment {k + 1} ({kinds[k]})", fontsize=9)
         ax.grid(alpha=0.3)
         ax_r.plot(t, model[sel] - curve.friction_ratio[sel], ".", ms=2, color="C3")
@@ -96,7 +96,7 @@ def _single_panel(
     ax.plot(t, model, "-", lw=1.3, color="C0", label="fitted law")
     if band is not None and np.all(np.isfinite(band)):
         ax.fill_between(t, model - band, model + band, color="C0", alpha=0.25, lw=0,
-                        label="95 % confidence")  # fmt: skip
+                        label="confidence band")  # fmt: skip
     ax.set_ylabel("friction ratio |f_t|/f_n [-]")
     ax.set_title(f"{curve.name}: {curve.n_samples} samples", fontsize=10)
     ax.grid(alpha=0.3)
