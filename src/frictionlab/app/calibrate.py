@@ -199,7 +199,16 @@ def fitted_scenario(run: CalibrationRun, k: int, base: Path) -> str:
 
 
 def _curve_columns(run: CalibrationRun) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    names = ("curve", "time", "data", "model", "residual", "weight", "confidence", "prediction")
+    names: tuple[str, ...] = (
+        "curve",
+        "time",
+        "data",
+        "model",
+        "residual",
+        "weight",
+        "confidence",
+        "prediction",
+    )
     cols: dict[str, list[Any]] = {k: [] for k in names}
     bands = run.fit.bands(run.config.band_level)
     for i, (c, m, (conf, pred)) in enumerate(
