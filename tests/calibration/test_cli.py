@@ -100,7 +100,10 @@ def _base() -> dict:
 @pytest.mark.parametrize(
     ("change", "needle"),
     [
-        (lambda d: d["data"][0]["units"].update(time="hours"), "[[data]] #1.units.time"),
+        (
+            lambda d: d["data"][0]["units"].update(time="parsec"),
+            "units.time: 'parsec' is not a unit of time",
+        ),
         (lambda d: d["data"][0]["columns"].update(friction_ratio="mu"), "missing column 'mu'"),
         (lambda d: d["fit"].update(parameters=["mu_s", "lambda"]), "[fit].parameters"),
         (lambda d: d["fit"].update(bounds={"kappa": [1.0, 10.0]}), "[law].kappa"),

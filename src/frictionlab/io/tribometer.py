@@ -220,7 +220,11 @@ def _choose_unit(role: str, title: str, sources: dict[str, str | None], where: s
         given = {k: v for k, v in given.items() if not (k == "units row" and v.strip() == "-")}
     if not given:
         return _SI[role][0] or "-"
-    factors = {k: _factor(v, role, f"{where}: column '{title}'") for k, v in given.items()}
+    factors = {
+        k: _factor(v, role, f"{where}: units.{role}" if k == "units key" else
+                   f"{where}: column '{title}'")
+        for k, v in given.items()
+    }  # fmt: skip
     first = next(iter(given))
     for k, f in factors.items():
         if not np.isclose(f, factors[first], rtol=1e-12):
