@@ -57,3 +57,16 @@ def test_slide_hold_slide_recovers_with_the_law_time_constant_and_stays_below_mu
     note = healing.static_note(mu_s)
     top = max(r.restart_peak for r in healing.records)
     assert top < mu_s and f"{top:.6g}" in note and "mu_s = 0.5 is the law's static" in note
+
+
+def test_healing_figure_draws_the_recovery_form_through_exact_points():
+    from frictionlab.plotting.law import plot_healing
+
+    peaks = 0.48 - (0.48 - 0.31) * np.exp(-HOLDS / 300.0)
+    rec = recovery_fit(HOLDS, peaks)
+    assert rec is not None
+    ax = plot_healing(HOLDS, peaks - 0.3, np.arange(1, 6), None, None,
+                      recovery=(rec.A, rec.mu_0, rec.tau, 0.3))  # fmt: skip
+    (line,) = [ln for ln in ax.get_lines() if "recovery form" in str(ln.get_label())]
+    t, d = np.asarray(line.get_xdata()), np.asarray(line.get_ydata())
+    np.testing.assert_allclose(np.interp(np.log(HOLDS), np.log(t), d), peaks - 0.3, atol=2e-3)

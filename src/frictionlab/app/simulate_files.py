@@ -538,6 +538,15 @@ def _write_healing(out: Path, healing: Healing) -> Path:
     return write_csv_atomic(out / "healing.csv", cols, units, comment)
 
 
+def _recovery_curve(healing: Healing) -> tuple[float, float, float, float] | None:
+    """The recovery form for healing.png when every hold starts from one friction ratio."""
+    rec = healing.recovery
+    before = {r.friction_before for r in healing.records}
+    if rec is None or len(before) != 1:
+        return None
+    return rec.A, rec.mu_0, rec.tau, before.pop()
+
+
 def _plot_healing(out: Path, scenario: Scenario, healing: Healing) -> Path:
     from frictionlab.plotting.law import plot_healing, save_figure
 
@@ -549,6 +558,7 @@ def _plot_healing(out: Path, scenario: Scenario, healing: Healing) -> Path:
         healing.rate_per_decade,
         healing.intercept,
         scenario.labels,
+        recovery=_recovery_curve(healing),
     )
     ax.set_title(scenario.title, fontsize=9)
     return save_figure(ax.figure, out / "healing.png")  # type: ignore[arg-type]
