@@ -5,7 +5,8 @@ Not a timed test: run it by hand and compare the numbers printed on the same mac
     python benchmarks/bench_calibration.py [--repeat 3]
 
 Setup: the packaged calibration example, frictionlab/data/examples/calibrate.toml (one
-slide-hold-slide curve of 4291 samples, about 400 driver steps; six fitted parameters). Measured in the same process:
+slide-hold-slide curve of 4291 samples, about 400 driver steps; six fitted parameters).
+Measured in the same process:
 
 * one Jacobian, batched (the 6 perturbations and the base as 7 contact points of ONE
   driver run) against the naive baseline (7 separate runs), best of ``--repeat``;

@@ -1,8 +1,8 @@
 """Make shs_run12.csv: a synthetic tribometer export of a slide-hold-slide run.
 
 The friction ratio is computed by the law with the TRUE parameters below through the
-programme of the packaged calibrate.toml (one contact point), sampled at 10 Hz, plus Gaussian noise of
-standard deviation NOISE = 0.002 (seeded; the instrument reports its magnitude). The file
+programme of the packaged calibrate.toml (one contact point), sampled at 10 Hz, plus
+Gaussian noise of standard deviation NOISE = 0.002 (seeded; the instrument reports its magnitude). The file
 mimics a lab's export: comment lines, an index column, a units row, time in minutes,
 displacement in millimetres, the friction coefficient as "COF", and an extra normal-load
 column that the fit ignores.
@@ -68,5 +68,6 @@ def make(out: Path) -> Path:
 
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out", nargs="?", type=Path, default=PACKAGED / "calibration" / "shs_run12.csv")
+    default = PACKAGED / "calibration" / "shs_run12.csv"
+    parser.add_argument("out", nargs="?", type=Path, default=default)
     print(f"wrote {make(parser.parse_args().out)}")
