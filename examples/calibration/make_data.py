@@ -2,10 +2,10 @@
 
 The friction ratio is computed by the law with the TRUE parameters below through the
 programme of the packaged calibrate.toml (one contact point), sampled at 10 Hz, plus
-Gaussian noise of standard deviation NOISE = 0.002 (seeded; the instrument reports its magnitude). The file
-mimics a lab's export: comment lines, an index column, a units row, time in minutes,
-displacement in millimetres, the friction coefficient as "COF", and an extra normal-load
-column that the fit ignores.
+Gaussian noise of standard deviation NOISE = 0.002 (seeded; the instrument reports its
+magnitude). The file mimics a lab's export: comment lines, an index column, a units row,
+time in minutes, displacement in millimetres, the friction coefficient as "COF", and an
+extra normal-load column that the fit ignores.
 
 The shipped copy is frictionlab/data/examples/calibration/shs_run12.csv (`frictionlab
 example calibrate --write DIR` writes it with its configuration).
