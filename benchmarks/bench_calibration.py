@@ -4,8 +4,9 @@ Not a timed test: run it by hand and compare the numbers printed on the same mac
 
     python benchmarks/bench_calibration.py [--repeat 3]
 
-Setup: examples/calibration/calibrate.toml (one slide-hold-slide curve of 4291 samples,
-about 400 driver steps; six fitted parameters). Measured in the same process:
+Setup: the packaged calibration example, frictionlab/data/examples/calibrate.toml (one
+slide-hold-slide curve of 4291 samples, about 400 driver steps; six fitted parameters).
+Measured in the same process:
 
 * one Jacobian, batched (the 6 perturbations and the base as 7 contact points of ONE
   driver run) against the naive baseline (7 separate runs), best of ``--repeat``;
@@ -46,7 +47,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
-    cfg = load_calibration(ROOT / "examples" / "calibration" / "calibrate.toml")
+    cfg = load_calibration(ROOT / "src" / "frictionlab" / "data" / "examples" / "calibrate.toml")
     space = make_space(cfg.params, cfg.names, cfg.bounds)
     theta = space.to_theta([float(getattr(cfg.params, n)) for n in cfg.names])
     batched = Objective(cfg.params, cfg.curves, space, jacobian="batched")

@@ -1,11 +1,14 @@
 """Make shs_run12.csv: a synthetic tribometer export of a slide-hold-slide run.
 
 The friction ratio is computed by the law with the TRUE parameters below through the
-programme of calibrate.toml (one contact point), sampled at 10 Hz, plus Gaussian noise of
-standard deviation NOISE = 0.002 (seeded; the instrument reports its magnitude). The file
-mimics a lab's export: comment lines, an index column, a units row, time in minutes,
-displacement in millimetres, the friction coefficient as "COF", and an extra normal-load
-column that the fit ignores.
+programme of the packaged calibrate.toml (one contact point), sampled at 10 Hz, plus
+Gaussian noise of standard deviation NOISE = 0.002 (seeded; the instrument reports its
+magnitude). The file mimics a lab's export: comment lines, an index column, a units row,
+time in minutes, displacement in millimetres, the friction coefficient as "COF", and an
+extra normal-load column that the fit ignores.
+
+The shipped copy is frictionlab/data/examples/calibration/shs_run12.csv (`frictionlab
+example calibrate --write DIR` writes it with its configuration).
 
 Run: ``python examples/calibration/make_data.py [OUT.csv]``
 """
@@ -24,6 +27,8 @@ from frictionlab.io.scenario import parse_initial_table, parse_program_tables
 from frictionlab.subloading import SubloadingParams
 
 HERE = Path(__file__).resolve().parent
+#: The packaged example: the configuration and where its data ship.
+PACKAGED = HERE.parents[1] / "src" / "frictionlab" / "data" / "examples"
 #: The parameters the calibration should find (the rest as in calibrate.toml's [law]).
 TRUE = {"mu_s": 0.5, "mu_k": 0.3, "u": 2.0e4, "kappa": 3000.0, "xi": 5.0e-3, "alpha_t": 5.0e11}
 NOISE = 0.002
@@ -33,13 +38,13 @@ SEED = 12
 
 
 def make(out: Path) -> Path:
-    config = load_toml(HERE / "calibrate.toml")
+    config = load_toml(PACKAGED / "calibrate.toml")
     law = {k: v for k, v in config["law"].items() if k != "surface"}
     law.update(TRUE)
     params = SubloadingParams(**law)
     data = config["data"][0]
     initial, _ = parse_initial_table(data["initial"])
-    program = parse_program_tables(data["program"], HERE)
+    program = parse_program_tables(data["program"], PACKAGED)
     history = simulate(params, program, initial)
     assert history.success, history.message
     t_end = float(history.time[-1, 0])
@@ -63,5 +68,6 @@ def make(out: Path) -> Path:
 
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out", nargs="?", type=Path, default=HERE / "shs_run12.csv")
+    default = PACKAGED / "calibration" / "shs_run12.csv"
+    parser.add_argument("out", nargs="?", type=Path, default=default)
     print(f"wrote {make(parser.parse_args().out)}")

@@ -100,7 +100,10 @@ def _base() -> dict:
 @pytest.mark.parametrize(
     ("change", "needle"),
     [
-        (lambda d: d["data"][0]["units"].update(time="hours"), "[[data]] #1.units.time"),
+        (
+            lambda d: d["data"][0]["units"].update(time="parsec"),
+            "units.time: 'parsec' is not a unit of time",
+        ),
         (lambda d: d["data"][0]["columns"].update(friction_ratio="mu"), "missing column 'mu'"),
         (lambda d: d["fit"].update(parameters=["mu_s", "lambda"]), "[fit].parameters"),
         (lambda d: d["fit"].update(bounds={"kappa": [1.0, 10.0]}), "[law].kappa"),
@@ -155,11 +158,11 @@ _OK = [f"{i},{0.01 * i},{0.001 * i},0.3" for i in range(6)]
     ("lines", "needle"),
     [
         ([*_HEAD, _OK[0], _OK[2], _OK[1], *_OK[3:]], "not strictly increasing"),
-        ([*_HEAD, _OK[0], "1,0.01,0.001,nan", *_OK[2:]], "empty or NaN"),
+        ([*_HEAD, _OK[0], "1,0.01,0.001,nan", *_OK[2:]], "line 4: column 'COF' = 'nan'"),
         (_HEAD + _OK[:3], "only 3 samples"),
         ([",Time,Displacement,mu", ",min,mm,-", *_OK], "missing column 'COF'"),
         ([",Time,Time,Displacement,COF", ",min,min,mm,-"]
-         + [f"{i},{0.01 * i},{0.01 * i},0.0,0.3" for i in range(6)], "appears 2 times"),
+         + [f"{i},{0.01 * i},{0.01 * i},0.0,0.3" for i in range(6)], "2 columns for time"),
         ([*_HEAD, "0,-0.01,0.0,0.3", *_OK[1:]], "is negative"),
         ([*_HEAD, _OK[0], "1,0.01,0.001,-0.3", *_OK[2:]], "is negative"),
     ],

@@ -34,7 +34,7 @@ def test_lab_export_with_index_comments_units_row_and_extra_columns(tmp_path: Pa
     assert m.slip is not None
     np.testing.assert_allclose(m.slip, [0.0, 2.5e-4, 5e-4, 7.5e-4, 1e-3], rtol=1e-15)
     np.testing.assert_array_equal(m.friction_ratio, [0.0, 0.31, 0.32, 0.30, 0.305])
-    assert m.units == {"time": "min", "slip": "mm"}
+    assert m.units == {"time": "min", "slip": "mm", "friction_ratio": "-"}
 
 
 def test_plain_si_file_without_units_row_and_without_slip(tmp_path: Path) -> None:
@@ -49,26 +49,27 @@ def test_plain_si_file_without_units_row_and_without_slip(tmp_path: Path) -> Non
     ("rows", "units", "needle"),
     [
         (["Time,Displacement,COF", "0,0,0.1", "2,1,0.2", "1,2,0.3", "3,3,0.3", "4,4,0.3"],
-         None, "'Time' is not strictly increasing at sample 3"),
+         None, "line 4: column 'Time' is not strictly increasing"),
         (["Time,Displacement,COF", "0,0,0.1", "1,1,nan", "2,2,0.3", "3,3,0.3", "4,4,0.3"],
-         None, "'COF' sample 2 is empty or NaN"),
+         None, "line 3: column 'COF' = 'nan' is not a number"),
         (["Time,Displacement,COF", "0,0,0.1", "1,1,", "2,2,0.3", "3,3,0.3", "4,4,0.3"],
-         None, "'COF' sample 2 is empty or NaN"),
+         None, "line 3: column 'COF' is empty"),
         (["Time,Displacement,COF", "0,0,0.1", "1,1,0.2"], None, "only 2 samples"),
         (["Time,Displacement,Friction", "0,0,0.1", "1,1,0.2", "2,2,0.3", "3,3,0.3", "4,4,0.3"],
          None, "missing column 'COF'"),
         (["Time,COF,Displacement,COF", "0,0.1,0,0.1", "1,0.1,1,0.2", "2,0.1,2,0.3",
-          "3,0.1,3,0.3", "4,0.1,4,0.3"], None, "column 'COF' (friction_ratio) appears 2 times"),
+          "3,0.1,3,0.3", "4,0.1,4,0.3"], None, "2 columns for friction_ratio: 'COF', 'COF'"),
         (["Time,Displacement,COF", "-1,0,0.1", "1,1,0.2", "2,2,0.3", "3,3,0.3", "4,4,0.3"],
-         None, "sample 1 = -1 s is negative"),
+         None, "line 2: column 'Time' = -1 s is negative"),
         (["Time,Displacement,COF", "0,0,0.1", "1,1,-0.2", "2,2,0.3", "3,3,0.3", "4,4,0.3"],
-         None, "'COF' sample 2 = -0.2 is negative"),
+         None, "line 3: column 'COF' is negative (-0.2)"),
         (["Time,Displacement,COF", "0,0,0.1", "1,1,abc", "2,2,0.3", "3,3,0.3", "4,4,0.3"],
-         None, "'COF' sample 2 = 'abc' is not a number"),
+         None, "line 3: column 'COF' = 'abc' is not a number"),
         (["Time,Displacement,COF", "s,mm,-", "0,0,0.1", "1,1,0.1", "2,2,0.3", "3,3,0.3",
-          "4,4,0.3"], {"time": "min"}, "units.time = 'min' but the file's units row says 's'"),
-        (["Time,Displacement,COF", "h,mm,-", "0,0,0.1", "1,1,0.1", "2,2,0.3", "3,3,0.3",
-          "4,4,0.3"], None, "unknown unit 'h' of column 'Time'"),
+          "4,4,0.3"], {"time": "min"},
+         "column 'Time': the units row says 's' but the units key says 'min'"),
+        (["Time,Displacement,COF", "parsec,mm,-", "0,0,0.1", "1,1,0.1", "2,2,0.3", "3,3,0.3",
+          "4,4,0.3"], None, "column 'Time': 'parsec' is not a unit of time"),
     ],
 )  # fmt: skip
 def test_bad_data_is_one_line_naming_the_file_and_column(
@@ -78,7 +79,7 @@ def test_bad_data_is_one_line_naming_the_file_and_column(
     with pytest.raises(InputError) as info:
         read_tribometer(f, LAB, units, where="[[data]] #1.file 'bad.csv'")
     message = str(info.value)
-    assert message.startswith("[[data]] #1.file 'bad.csv': ") and "\n" not in message
+    assert message.startswith("[[data]] #1.file 'bad.csv'") and "\n" not in message
     assert needle in message, message
 
 

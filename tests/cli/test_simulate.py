@@ -194,6 +194,7 @@ def test_outputs_of_a_2d_programme(tmp_path: Path) -> None:
     assert set(s["outputs"]) == {
         "history.csv",
         "points.csv",
+        "peaks.csv",
         "friction.png",
         "traction_path.png",
         "summary.json",

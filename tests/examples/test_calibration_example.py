@@ -1,4 +1,6 @@
-"""examples/calibration: the shipped export is reproducible and calibrates back to the truth."""
+"""The calibration example (shipped in the package; made by examples/calibration/make_data.py):
+the export is reproducible, `frictionlab example calibrate --write` writes it runnable, and
+it calibrates back to the truth."""
 
 from __future__ import annotations
 
@@ -10,6 +12,7 @@ from pathlib import Path
 from frictionlab.cli import main
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "calibration"
+PACKAGED = Path(__file__).resolve().parents[2] / "src" / "frictionlab" / "data" / "examples"
 
 
 def test_make_data_reproduces_the_shipped_export(tmp_path: Path) -> None:
@@ -19,7 +22,7 @@ def test_make_data_reproduces_the_shipped_export(tmp_path: Path) -> None:
         capture_output=True, text=True, timeout=300,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
-    assert out.read_bytes() == (EXAMPLE / "shs_run12.csv").read_bytes()
+    assert out.read_bytes() == (PACKAGED / "calibration" / "shs_run12.csv").read_bytes()
 
 
 def test_example_calibration_recovers_the_true_parameters(tmp_path: Path) -> None:
@@ -28,10 +31,15 @@ def test_example_calibration_recovers_the_true_parameters(tmp_path: Path) -> Non
         from make_data import NOISE, TRUE  # type: ignore[import-not-found]
     finally:
         sys.path.remove(str(EXAMPLE))
-    code = main(["calibrate", str(EXAMPLE / "calibrate.toml"), "--out", str(tmp_path),
+    assert main(["example", "calibrate", "--write", str(tmp_path / "starter")]) == 0
+    config = tmp_path / "starter" / "calibrate.toml"
+    assert (tmp_path / "starter" / "shs_run12.csv").read_bytes() == (
+        PACKAGED / "calibration" / "shs_run12.csv"
+    ).read_bytes()
+    code = main(["calibrate", str(config), "--out", str(tmp_path / "out"),
                  "--quiet", "--set", "fit.profile=false"])  # fmt: skip
     assert code == 0
-    fit = json.loads((tmp_path / "summary.json").read_text())
+    fit = json.loads((tmp_path / "out" / "summary.json").read_text())
     for name, entry in fit["parameters"].items():
         if entry["stderr"] is None:
             # No standard error: the data do not constrain it at all (its Jacobian column

@@ -50,7 +50,9 @@ def bundled() -> list[tuple[str, str, Path]]:
         files.append(("sweep" if "base" in load(p) else "scenario", p))
     for name in EXAMPLES:
         path = DATA / "examples" / f"{name}.toml"
-        files.append(("roughness" if "mu0" in load(path) else "scenario", path))
+        data = load(path)
+        kind = "calibrate" if "fit" in data else "roughness" if "mu0" in data else "scenario"
+        files.append((kind, path))
     return [(kind, p.relative_to(ROOT).as_posix(), p) for kind, p in files]
 
 
@@ -180,8 +182,8 @@ def test_bridge_schema_keys_are_the_parser_keys() -> None:
 
 
 def test_calibrate_schema_keys_are_the_parser_keys() -> None:
-    folder = ROOT / "examples" / "calibration"
-    data = load(folder / "calibrate.toml")
+    data = load(DATA / "examples" / "calibrate.toml")
+    folder = DATA / "examples" / "calibration"  # where its data file ships
 
     def parse(d: dict[str, Any]) -> object:
         return parse_calibration(d, folder)

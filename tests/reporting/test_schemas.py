@@ -43,7 +43,7 @@ def test_simulate_summary_has_the_provenance_block(tmp_path: Path, check_summary
     assert prov["inputs"] == [{"path": str(scenario), "sha256": digest}]
     assert {"numpy", "scipy", "pandas"} <= set(prov["dependencies"])
     # the common keys, and the older names kept for one release
-    files = ["history.csv", "points.csv", "healing.csv", "summary.json"]
+    files = ["history.csv", "points.csv", "peaks.csv", "healing.csv", "summary.json"]
     assert summary["files"] == summary["outputs"] == files
     assert summary["frictionlab_version"] == summary["frictionlab"]
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import argparse
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -69,11 +69,22 @@ def identifiability(fit: FitResult, profiles: dict[str, Profile]) -> list[str]:
             f"of the two better than either one, so raising one can be compensated by {way} "
             f"the other.{still}"
         )
+    missing = fit.not_identified()
     for j, name in enumerate(fit.names):
         rel = fit.relative_stderr[j]
-        if not np.isfinite(fit.stderr[j]):
-            out.append(f"{name} is not determined by these data (the Jacobian has no component "
-                       "along it); fix it in [law] or add data that depend on it.")  # fmt: skip
+        if name in missing:
+            if not np.isfinite(fit.stderr[j]):
+                why = "the Jacobian has no component along it"
+            elif name in profiles and None in profiles[name].interval:
+                why = "its 95 % profile interval is open"
+            else:
+                why = "it ran to an end of its bounds"
+            lo, hi = fit.space.lower[j], fit.space.upper[j]
+            out.append(
+                f"{name} is not identified by these data ({why}): its value "
+                f"{fit.values[j]:.4g} is arbitrary within what they allow (bounds "
+                f"[{lo:.3g}, {hi:.3g}]); fix it in [law] or add data that depend on it."
+            )
         elif rel > RELATIVE_STDERR_LIMIT:
             out.append(
                 f"{name} is poorly identified: its standard error is {rel:.0%} of its value."
@@ -96,6 +107,7 @@ def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
     """The content of ``fit.json``."""
     fit, cfg = run.fit, run.config
     cone = fit.params.is_cone
+    missing = fit.not_identified()
     params = {}
     for j, name in enumerate(fit.names):
         params[name] = {
@@ -106,6 +118,7 @@ def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
             "bounds": [_finite(fit.space.lower[j]), _finite(fit.space.upper[j])],
             "fitted_as": "ln" if fit.space.log[j] else "linear",
             "unit": parameter_unit(name, cone),
+            "identified": name not in missing,
         }
     corr = [[_finite(v) for v in row] for row in fit.correlation]
     curves = []
@@ -136,6 +149,7 @@ def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
         "dof": fit.dof,
         "residual_std": _finite(np.sqrt(fit.residual_variance)),
         "poorly_identified": fit.poorly_identified(),
+        "not_identified": missing,
         "identifiability": identifiability(fit, run.profiles),
         "profiles": profiles,
         "curves": curves,
@@ -177,15 +191,35 @@ def fitted_scenario(run: CalibrationRun, k: int, base: Path) -> str:
 
 
 def _curve_columns(run: CalibrationRun) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    cols: dict[str, list[Any]] = {k: [] for k in ("curve", "time", "data", "model", "residual")}
-    for i, (c, m) in enumerate(zip(run.config.curves, run.fit.models, strict=True)):
+    names: tuple[str, ...] = (
+        "curve",
+        "time",
+        "data",
+        "model",
+        "residual",
+        "weight",
+        "confidence",
+        "prediction",
+    )
+    cols: dict[str, list[Any]] = {k: [] for k in names}
+    bands = run.fit.bands(run.config.band_level)
+    for i, (c, m, (conf, pred)) in enumerate(
+        zip(run.config.curves, run.fit.models, bands, strict=True)
+    ):
         cols["curve"].append(np.full(c.n_samples, i + 1))
         cols["time"].append(c.time)
         cols["data"].append(c.friction_ratio)
         cols["model"].append(m)
         cols["residual"].append(m - c.friction_ratio)
+        cols["weight"].append(run.fit.weights[i])
+        # half-widths of the bands at [fit] band_level; none (0) where the weight is 0
+        cols["confidence"].append(np.nan_to_num(conf, nan=0.0))
+        cols["prediction"].append(np.nan_to_num(pred, nan=0.0))
     arrays = {k: np.concatenate(v) for k, v in cols.items()}
-    units = {"curve": "-", "time": "s", "data": "-", "model": "-", "residual": "-"}
+    if not np.all(np.isfinite(run.fit.stderr)):  # no band: a direction is not determined
+        del arrays["confidence"], arrays["prediction"]
+        names = names[:-2]
+    units = dict.fromkeys(names, "-") | {"time": "s"}
     return arrays, units
 
 
@@ -201,7 +235,14 @@ def _files(out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path) -> 
         name = "fitted.toml" if k == 0 else f"fitted_{k + 1}.toml"
         written.append(write_text_atomic(out / name, fitted_scenario(run, k, base)))
     cols, units = _curve_columns(run)
-    comment = "frictionlab calibrate: data and fitted model per curve"
+    comment = (
+        "frictionlab calibrate: data and fitted model per curve; confidence and prediction: "
+        f"half-widths of the {cfg.band_level:.0%} bands of the model and of a new measurement "
+        "(0 where the sample's weight is 0: no band there)"
+    )
+    if "confidence" not in cols:
+        comment = (f"frictionlab calibrate: data and fitted model per curve; no bands: "
+                   f"{', '.join(fit.not_identified())} not determined by the data")  # fmt: skip
     written.append(write_csv_atomic(out / "curves.csv", cols, units, comment))
     report = Report(
         cfg.title or "Calibration of the subloading-friction law",
@@ -231,12 +272,14 @@ def _files(out_dir: str | os.PathLike[str], run: CalibrationRun, base: Path) -> 
     data_sec = report.add_section(Section("Data and model", anchor="curves"))
     for k, (c, m) in enumerate(zip(cfg.curves, fit.models, strict=True)):
         rel = f"curve_{k + 1}.png"
-        written.append(save_figure(plot_curve_fit(c, m, run.start_models[k]), out / rel))
+        band = fit.bands(cfg.band_level)[k][0]
+        written.append(save_figure(plot_curve_fit(c, m, run.start_models[k], band), out / rel))
         rms = float(np.sqrt(np.mean((m - c.friction_ratio) ** 2)))
         data_sec.add_figure(
             rel,
             f"{c.name}: measured friction ratio (dots), the start law (dashed) and the fitted "
-            f"law (line); residuals below (rms {rms:.3g}).",
+            f"law (line) with its {cfg.band_level:.0%} confidence band, one panel per sliding "
+            f"segment (holds left out); residuals below (rms {rms:.3g}).",
         )
     unc = report.add_section(Section("Uncertainty and identifiability", anchor="uncertainty"))
     unc.intro = (
@@ -294,7 +337,7 @@ class Calibrate:
         with progress(f"calibrate {path.name}") as update:
             fit = fit_law(
                 cfg.params, cfg.curves, cfg.names, cfg.bounds,
-                max_nfev=cfg.max_evaluations, progress=update,
+                max_nfev=cfg.max_evaluations, progress=update, starts=cfg.starts, seed=cfg.seed,
             )  # fmt: skip
         profiles = {}
         if cfg.profile:
@@ -303,6 +346,7 @@ class Calibrate:
                     profiles[name] = profile_likelihood(
                         fit, cfg.curves, name, points=cfg.profile_points, progress=update
                     )
+        fit = replace(fit, profiles=profiles)  # not_identified() reads the profiles
         return CalibrationRun(cfg, fit, start_models, profiles)
 
     def files(self, job: Any, result: CalibrationRun, out: Path, plots: bool) -> list[Path]:
@@ -322,10 +366,12 @@ class Calibrate:
               f"{fit.nfev} evaluations ({fit.runs} driver runs) in {seconds:.2f} s; "
               f"{fit.message}")  # fmt: skip
         print(f"{'parameter':>10} {'start':>12} {'fitted':>12} {'stderr':>10} {'rel':>7}")
+        missing = fit.not_identified()
         for j, name in enumerate(fit.names):
             se, rel = fit.stderr[j], fit.relative_stderr[j]
+            flag = "  not identified" if name in missing else ""
             print(f"{name:>10} {fit.start[j]:>12.5g} {fit.values[j]:>12.6g} {se:>10.3g} "
-                  f"{rel:>7.1%}")  # fmt: skip
+                  f"{rel:>7.1%}{flag}")  # fmt: skip
         print(f"residual std {np.sqrt(fit.residual_variance):.3g} (friction ratio)")
         for line in identifiability(fit, result.profiles):
             print("  " + line)

@@ -14,6 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from frictionlab._progress import ProgressFactory
 from frictionlab.app import simulate_files as files
 from frictionlab.app.outputs import write_outputs
@@ -48,6 +50,7 @@ def run_scenario(
             scenario.params, scenario.program, scenario.initial, n_points=scenario.n_points,
             settings=settings, progress=progress,
             recording=scenario.output.recording(sink, keep_rows, keep_points),
+            peak_accuracy=opts.peak_accuracy or None,
         )  # fmt: skip
     assert scenario.machine is not None
     m = scenario.machine
@@ -123,7 +126,8 @@ class Simulate:
     def report(
         self, job: Scenario, result: SimulateRun, seconds: float, written: list[Path]
     ) -> None:
-        files.print_report(job.labels, result.history, seconds)
+        mu_s = job.params.mu_s if job.params.is_cone and np.ndim(job.params.mu_s) == 0 else None
+        files.print_report(job.labels, result.history, seconds, mu_s)
         print("wrote " + ", ".join(str(p) for p in written))
 
     def notes(self, job: Scenario, result: SimulateRun) -> list[str]:

@@ -456,6 +456,8 @@ def write_files(
         cols, units = history_columns(chosen, cone=scenario.params.is_cone)
         written.append(write_csv_atomic(out / "history.csv", cols, units))
     written.append(_write_points(out, history, scenario.params.is_cone))
+    if len(history.peaks):
+        written.append(_write_peaks(out, history))
     if healing is not None:
         written.append(_write_healing(out, healing))
     if plots and history.n_rows > 1:
@@ -477,6 +479,26 @@ def _write_points(out: Path, history: History, cone: bool) -> Path:
             cols[name] = np.asarray(values)
             units[name] = f_unit if key == "final_F" else "-"
     return _write_csv_blocks(out / "points.csv", cols, units)
+
+
+def _write_peaks(out: Path, history: History) -> Path:
+    """peaks.csv: each segment peak located between steps (``[run] peak_accuracy``)."""
+    pk = history.peaks
+    cols = {
+        "segment": pk.segment, "point": pk.point, "step": pk.step, "offset": pk.offset,
+        "time": pk.time, "slip_1": pk.slip[:, 0], "slip_2": pk.slip[:, 1],
+        "path_length": pk.path_length, "friction_ratio": pk.friction_ratio,
+        "sampled_friction_ratio": pk.sampled_friction_ratio,
+    }  # fmt: skip
+    units = {"segment": "-", "point": "-", "step": "-", "offset": "steps", "time": "s",
+             "slip_1": "m", "slip_2": "m", "path_length": "m", "friction_ratio": "-",
+             "sampled_friction_ratio": "-"}  # fmt: skip
+    comment = (
+        "segment peaks of the friction ratio located between steps: offset is the position "
+        "in steps after step - 1;\nsampled_friction_ratio is the largest recorded step it "
+        "replaces (history.csv keeps the step grid)"
+    )
+    return write_csv_atomic(out / "peaks.csv", cols, units, comment)
 
 
 def scenario_inputs(scenario: Scenario) -> list[Path]:
@@ -508,7 +530,21 @@ def _write_healing(out: Path, healing: Healing) -> Path:
         if rate is not None
         else "healing rate: needs at least two distinct hold times"
     )
+    rec = healing.recovery
+    if rec is not None:
+        comment += (f"\nthe law's recovery form: restart peak = A - (A - mu_0) exp(-t_h/tau) with "
+                    f"A = {rec.A!r}, mu_0 = {rec.mu_0!r}, tau = {rec.tau!r} s")  # fmt: skip
+    comment += "\n" + healing.comparison()
     return write_csv_atomic(out / "healing.csv", cols, units, comment)
+
+
+def _recovery_curve(healing: Healing) -> tuple[float, float, float, float] | None:
+    """The recovery form for healing.png when every hold starts from one friction ratio."""
+    rec = healing.recovery
+    before = {r.friction_before for r in healing.records}
+    if rec is None or len(before) != 1:
+        return None
+    return rec.A, rec.mu_0, rec.tau, before.pop()
 
 
 def _plot_healing(out: Path, scenario: Scenario, healing: Healing) -> Path:
@@ -522,6 +558,7 @@ def _plot_healing(out: Path, scenario: Scenario, healing: Healing) -> Path:
         healing.rate_per_decade,
         healing.intercept,
         scenario.labels,
+        recovery=_recovery_curve(healing),
     )
     ax.set_title(scenario.title, fontsize=9)
     return save_figure(ax.figure, out / "healing.png")  # type: ignore[arg-type]
@@ -568,8 +605,11 @@ def _plots(out: Path, scenario: Scenario, full: History) -> list[Path]:
     return paths
 
 
-def print_report(labels: tuple[str, ...], history: History, elapsed: float) -> None:
-    """The terminal lines of a run: peak and final friction per point, restart peaks."""
+def print_report(
+    labels: tuple[str, ...], history: History, elapsed: float, mu_s: float | None = None
+) -> None:
+    """The terminal lines of a run: peak and final friction per point, restart peaks (and,
+    with the law's ``mu_s``, what it is and is not)."""
     fig = point_figures(history)
     peak, final = fig["peak_friction_ratio"], fig["final_friction_ratio"]
     n = peak.size
@@ -592,3 +632,10 @@ def print_report(labels: tuple[str, ...], history: History, elapsed: float) -> N
               f"{r.restart_peak:>9.5f} {r.delta_mu:>9.5f}")  # fmt: skip
     if healing.rate_per_decade is not None:
         print(f"healing rate d(delta mu)/d log10(t_h) = {healing.rate_per_decade:.5g} per decade")
+    rec = healing.recovery
+    if rec is not None:
+        print(f"the law's recovery form: A = {rec.A:.5g}, mu_0 = {rec.mu_0:.5g}, "
+              f"tau = {rec.tau:.4g} s")  # fmt: skip
+    print(healing.comparison())
+    if mu_s is not None:
+        print(healing.static_note(mu_s))

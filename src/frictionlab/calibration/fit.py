@@ -34,6 +34,7 @@ from scipy.optimize import least_squares
 from frictionlab._frames import TableResult
 from frictionlab.calibration.model import (
     FITTABLE,
+    LOG_BOUNDS,
     Curve,
     FitSpace,
     evaluate_columns,
@@ -102,6 +103,9 @@ def make_space(
             raise ParameterError(f"fit.bounds.{name}", [lo, hi], "[low, high] with low < high")
         if FITTABLE[name] and lo < 0:
             raise ParameterError(f"fit.bounds.{name}", [lo, hi], f"low >= 0 ({name} > 0)")
+        if FITTABLE[name]:  # an open end: the physical range (ln x stays finite)
+            lo = lo if lo > 0 else min(LOG_BOUNDS[name][0], start / 10.0)
+            hi = hi if np.isfinite(hi) else max(LOG_BOUNDS[name][1], start * 10.0)
         if FITTABLE[name] and start <= 0:
             raise ParameterError(f"law.{name}", start, f"{name} > 0 to fit it (fitted as ln)")
         if not lo < start < hi:
@@ -139,7 +143,7 @@ class Objective:
         self.progress = progress
         self.total = total
         self.runs = 0
-        self.sqrt_w = [np.sqrt(c.weight) for c in self.curves]
+        self.sqrt_w = [np.sqrt(c.sample_weights()) for c in self.curves]
         self.n_residuals = sum(c.n_samples for c in self.curves)
 
     def _tick(self) -> None:
@@ -217,7 +221,7 @@ class Objective:
                 for k in range(1, p + 1):
                     rows.append(self._column_or_flip(theta, h, k - 1, curve))
                 values = np.stack(rows)
-            blocks.append(w * (values[1:] - values[0]).T / h)
+            blocks.append(w[:, None] * (values[1:] - values[0]).T / h)
         return np.vstack(blocks)
 
     def _columns(self, theta: np.ndarray, h: np.ndarray) -> np.ndarray:
@@ -283,6 +287,12 @@ class FitResult(TableResult):
         The optimiser's status, function and Jacobian evaluations, driver runs, wall time.
     theta_jacobian:
         (n, p) weighted-residual Jacobian in the fitted space at the optimum.
+    profiles:
+        Profiles (:class:`~frictionlab.calibration.profile.Profile`) by name, once computed.
+    weights:
+        Per curve, the (n,) weight of each sample's squared residual.
+    starts:
+        Starting points tried (the best one is kept).
     """
 
     params: SubloadingParams
@@ -305,6 +315,8 @@ class FitResult(TableResult):
     space: FitSpace
     theta_jacobian: np.ndarray
     profiles: dict[str, Any] = field(default_factory=dict)
+    weights: tuple[np.ndarray, ...] = ()
+    starts: int = 1
 
     @property
     def dof(self) -> int:
@@ -353,6 +365,59 @@ class FitResult(TableResult):
             ):
                 out.append(name)
         return out
+
+    def not_identified(self) -> list[str]:
+        """Names the data do not bound: an undetermined direction (infinite stderr), a value
+        at an end of its bounds, or a profile whose 95 % interval is open on a side.
+
+        Their fitted values are arbitrary within what the data allow; report them as not
+        identified, not as estimates.
+        """
+        lo, hi = self.space.theta_bounds()
+        theta = self.space.to_theta(self.values)
+        span = np.where(np.isfinite(hi - lo), hi - lo, np.maximum(1.0, np.abs(theta)))
+        at_bound = (theta - lo <= 1e-6 * span) | (hi - theta <= 1e-6 * span)
+        out = []
+        for j, name in enumerate(self.names):
+            prof = self.profiles.get(name)
+            open_profile = prof is not None and None in prof.interval
+            if not np.isfinite(self.stderr[j]) or at_bound[j] or open_profile:
+                out.append(name)
+        return out
+
+    def bands(self, level: float = 0.95) -> tuple[tuple[np.ndarray, np.ndarray], ...]:
+        """Per curve, the half-widths (confidence, prediction) of the fitted curve at its
+        samples for a two-sided ``level``: ``z sqrt(g_i^T cov_theta g_i)`` with g_i the
+        model's gradient in the fitted space, and with the residual variance s^2/w added
+        for a new measurement. Infinite where a parameter is not determined; NaN at samples
+        of weight 0."""
+        from scipy.stats import norm
+
+        if not 0 < level < 1:
+            raise ParameterError("band_level", level, "a number in (0, 1)")
+        z = float(norm.ppf(0.5 + 0.5 * level))
+        s2 = self.residual_variance
+        jac = self.theta_jacobian
+        _, sv, vt = np.linalg.svd(jac, full_matrices=False)
+        keep = sv > 1e-10 * sv[0] if sv.size and sv[0] > 0 else np.zeros(sv.size, dtype=bool)
+        cov_theta = s2 * (vt[keep].T / sv[keep] ** 2) @ vt[keep]
+        out = []
+        row = 0
+        undetermined = not bool(np.all(np.isfinite(self.stderr)))
+        for model, w in zip(self.models, self.weights, strict=True):
+            n = model.size
+            counted = w > 0  # a sample of weight 0 keeps no gradient in the weighted Jacobian
+            root = np.sqrt(np.where(counted, w, 1.0))
+            g = jac[row : row + n] / root[:, None]
+            row += n
+            var = np.einsum("ij,jk,ik->i", g, cov_theta, g)
+            conf = np.where(counted, z * np.sqrt(np.maximum(var, 0.0)), np.nan)
+            pred = np.where(counted, z * np.sqrt(np.maximum(var, 0.0) + s2 / root**2), np.nan)
+            if undetermined:
+                conf = np.full(n, np.inf)
+                pred = np.full(n, np.inf)
+            out.append((conf, pred))
+        return tuple(out)
 
     def worst_identified(self, limit: int) -> list[str]:
         """Up to ``limit`` poorly identified names, the largest relative stderr first."""
@@ -417,6 +482,8 @@ def fit_law(
     accuracy: float | None = None,
     max_halvings: int = 10,
     progress: ProgressCallback | None = None,
+    starts: int = 1,
+    seed: int = 0,
 ) -> FitResult:
     """Fit ``names`` of ``params`` (the start; other keys stay fixed) to ``curves``.
 
@@ -440,6 +507,10 @@ def fit_law(
         The driver's step control (see :func:`frictionlab.driver.simulate`).
     progress:
         ``progress(done, total)`` after every driver run.
+    starts, seed:
+        Starting points: the given law, and ``starts - 1`` more from a scrambled Halton
+        sequence (:mod:`scipy.stats.qmc`, seeded) over the bounds in the fitted space; the
+        lowest cost is kept.
 
     Raises
     ------
@@ -463,12 +534,22 @@ def fit_law(
     )  # fmt: skip
     start = _time.perf_counter()
     obj.model(x0)  # fail early, with the driver's message, when the start does not run
-    theta0 = space.to_theta(x0)
+    if isinstance(starts, bool) or not isinstance(starts, int) or not 1 <= starts <= 1000:
+        raise ParameterError("fit.starts", starts, "an integer in 1..1000")
     lo, hi = space.theta_bounds()
-    res = least_squares(
-        obj.residuals, theta0, jac=obj.jac, bounds=(lo, hi), method="trf",
-        x_scale="jac", xtol=xtol, ftol=ftol, gtol=gtol, max_nfev=max_nfev,
-    )  # fmt: skip
+    res = None
+
+    def valid(theta: np.ndarray) -> bool:
+        return valid_column(params, names, space.from_theta(theta))
+
+    for theta0 in _starting_points(space, x0, starts, seed, valid):
+        trial = least_squares(
+            obj.residuals, theta0, jac=obj.jac, bounds=(lo, hi), method="trf",
+            x_scale="jac", xtol=xtol, ftol=ftol, gtol=gtol, max_nfev=max_nfev,
+        )  # fmt: skip
+        if res is None or trial.cost < res.cost:
+            res = trial
+    assert res is not None
     x = space.from_theta(res.x)
     fitted = with_values(params, names, x)
     try:
@@ -499,4 +580,37 @@ def fit_law(
         seconds=_time.perf_counter() - start,
         space=space,
         theta_jacobian=jac,
+        weights=tuple(c.sample_weights() for c in curves),
+        starts=starts,
     )
+
+
+def _starting_points(
+    space: FitSpace,
+    x0: np.ndarray,
+    starts: int,
+    seed: int,
+    valid: Callable[[np.ndarray], bool] = lambda theta: True,
+) -> list[np.ndarray]:
+    """The start in theta, then ``starts - 1`` scrambled-Halton points inside the bounds that
+    make a ``valid`` law (mu_k <= mu_s, ...): the sequence is drawn on until it has them
+    (at most 50 times as many draws)."""
+    from scipy.stats import qmc
+
+    theta0 = space.to_theta(x0)
+    points = [theta0]
+    if starts > 1:
+        lo, hi = space.theta_bounds()
+        # an open end (linear parameters): a decade around the start
+        lo = np.where(np.isfinite(lo), lo, theta0 - 10.0 * np.maximum(1.0, np.abs(theta0)))
+        hi = np.where(np.isfinite(hi), hi, theta0 + 10.0 * np.maximum(1.0, np.abs(theta0)))
+        width = hi - lo
+        halton = qmc.Halton(d=theta0.size, scramble=True, seed=seed)
+        for _ in range(50 * (starts - 1)):
+            # strictly inside: least_squares needs an interior start
+            theta = lo + width * (1e-6 + (1 - 2e-6) * halton.random(1)[0])
+            if valid(theta):
+                points.append(theta)
+                if len(points) == starts:
+                    break
+    return points

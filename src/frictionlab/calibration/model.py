@@ -27,6 +27,7 @@ from frictionlab.subloading import SubloadingParams
 
 __all__ = [
     "FITTABLE",
+    "LOG_BOUNDS",
     "Curve",
     "FitSpace",
     "evaluate_columns",
@@ -51,6 +52,19 @@ FITTABLE: dict[str, bool] = {
     "alpha_t": True,
 }
 
+#: Physical range of each parameter fitted as ln x, used where ``[fit] bounds`` leaves an
+#: end open: u [1/m] (R reaches 1 within 1e-12 m to 100 m of slip), kappa [1/m]
+#: (softening over 1e-10 m to 1 km), xi [1/s] (recovery in 1 us to 3e4 years), alpha_n,
+#: alpha_t [Pa/m] (1 kPa to 1e8 GPa per m: soft foams to stiff asperity contacts). A fit
+#: that runs to one of these ends has not been determined by the data.
+LOG_BOUNDS: dict[str, tuple[float, float]] = {
+    "u": (1e-2, 1e12),
+    "kappa": (1e-3, 1e10),
+    "xi": (1e-12, 1e6),
+    "alpha_n": (1e3, 1e17),
+    "alpha_t": (1e3, 1e17),
+}
+
 
 @dataclass(frozen=True)
 class Curve:
@@ -70,6 +84,11 @@ class Curve:
         Weight of the curve's squared residuals (default 1).
     slip:
         (n,) measured slip [m], or None (used for plots only).
+    segment_weights:
+        Optional weight of each segment's samples (one per segment of ``program``), for
+        example to let short restart peaks count as much as long holds.
+    time_offset:
+        When the data's t = 0 falls in the programme's time [s] (model time = t + offset).
     """
 
     name: str
@@ -79,10 +98,40 @@ class Curve:
     initial: InitialConditions = field(default_factory=InitialConditions)
     weight: float = 1.0
     slip: np.ndarray | None = None
+    segment_weights: tuple[float, ...] | None = None
+    time_offset: float = 0.0
+
+    def __post_init__(self) -> None:
+        sw = self.segment_weights
+        if sw is not None:
+            if len(sw) != len(self.program):
+                raise ParameterError("segment_weights", list(sw),
+                                     f"one weight per segment ({len(self.program)})")  # fmt: skip
+            if not all(np.isfinite(w) and w >= 0 for w in sw) or not any(w > 0 for w in sw):
+                raise ParameterError("segment_weights", list(sw), "weights >= 0, one > 0")
+        if not np.isfinite(self.time_offset):
+            raise ParameterError("time_offset", self.time_offset, "a finite time [s]")
 
     @property
     def n_samples(self) -> int:
         return int(self.time.size)
+
+    @property
+    def model_time(self) -> np.ndarray:
+        """(n,) the samples' times on the programme's clock [s]."""
+        return self.time + self.time_offset
+
+    def segment_of_samples(self) -> np.ndarray:
+        """(n,) 0-based segment of ``program`` in which each sample falls."""
+        ends = np.cumsum(segment_durations(self.program))
+        return np.minimum(np.searchsorted(ends, self.model_time, side="left"), len(ends) - 1)
+
+    def sample_weights(self) -> np.ndarray:
+        """(n,) weight of each sample's squared residual (curve weight x segment weight)."""
+        w = np.full(self.n_samples, float(self.weight))
+        if self.segment_weights is not None:
+            w *= np.asarray(self.segment_weights, dtype=np.float64)[self.segment_of_samples()]
+        return w
 
 
 @dataclass(frozen=True)
@@ -159,13 +208,14 @@ def evaluate_columns(
         curve.initial,
         n_points=k,
         settings=DriverSettings(accuracy=accuracy, max_halvings=max_halvings),
+        peak_accuracy=None,  # the samples are interpolated: peaks between steps are not used
     )
     if not history.success:
         raise ConvergenceError(
             f"curve '{curve.name}': the driver failed ({history.message})",
             mask=np.ones(k, dtype=bool),
         )
-    return model_at_samples(history, curve.time)
+    return model_at_samples(history, curve.model_time)
 
 
 def valid_column(base: SubloadingParams, names: Sequence[str], values: np.ndarray) -> bool:
@@ -177,18 +227,25 @@ def valid_column(base: SubloadingParams, names: Sequence[str], values: np.ndarra
     return True
 
 
-def program_duration(program: Program) -> float:
-    """Total time [s] of a one-point programme (the sum of its segments' durations)."""
+def segment_durations(program: Program) -> list[float]:
+    """Time [s] of each segment of a one-point programme."""
     from frictionlab.driver.program import Table, plan_program
 
-    total = 0.0
+    out = []
     for seg, plan in zip(program, plan_program(program, 1), strict=True):
         resolved = plan.resolved
         if isinstance(seg, Table):
-            total += float(seg.time[-1] - seg.time[0])
+            out.append(float(seg.time[-1] - seg.time[0]))
         elif "duration" in resolved:
-            total += float(np.max(resolved["duration"]))
+            out.append(float(np.max(resolved["duration"])))
         elif plan.kind == "cycle":
             amplitude, velocity = resolved["amplitude"], resolved["velocity"]
-            total += float(np.max(4.0 * amplitude * resolved["cycles"] / velocity))
-    return total
+            out.append(float(np.max(4.0 * amplitude * resolved["cycles"] / velocity)))
+        else:
+            out.append(0.0)
+    return out
+
+
+def program_duration(program: Program) -> float:
+    """Total time [s] of a one-point programme (the sum of its segments' durations)."""
+    return float(sum(segment_durations(program)))

@@ -13,13 +13,20 @@ from pathlib import Path
 
 from frictionlab.errors import InputError
 
-HELP = "print a commented starter scenario (simulate, slide-hold-slide, roughness, measured-file)"
+HELP = (
+    "print a commented starter scenario (simulate, slide-hold-slide, calibrate, roughness, "
+    "measured-file)"
+)
 
 #: Starter name -> (one-line description, data files it reads from frictionlab/data).
 EXAMPLES: dict[str, tuple[str, tuple[str, ...]]] = {
     "simulate": ("monotonic sliding of a contact at 1 MPa (frictionlab simulate)", ()),
     "slide-hold-slide": ("healing: slide, hold, slide again (frictionlab simulate)", ()),
     "roughness": ("friction of a rough surface pair vs direction (frictionlab roughness)", ()),
+    "calibrate": (
+        "fit the law to a slide-hold-slide export (frictionlab calibrate; writes its data)",
+        ("examples/calibration/shs_run12.csv",),
+    ),
     "measured-file": (
         "a measured topography file on a flat face (frictionlab roughness)",
         ("topography/ground_demo.x3p",),

@@ -25,13 +25,21 @@ from frictionlab._progress import ProgressFactory, no_progress
 from frictionlab.io.report import Report, Section
 
 __all__ = [
+    "EXTRAS",
     "DemoContext",
     "SectionBuilder",
     "bundled_scenario",
     "bundled_scenarios",
+    "check_extras",
     "default_builders",
     "run_demo",
 ]
+
+#: Optional extras the demo's sections import: module -> (extra, what needs it).
+EXTRAS: dict[str, tuple[str, str]] = {
+    "skfem": ("fem", "the finite-element contact section (scikit-fem)"),
+    "threadpoolctl": ("fem", "the finite-element contact section (threadpoolctl)"),
+}
 
 
 @dataclass
@@ -88,13 +96,38 @@ INTRO = (
 )
 
 
+def check_extras(builders: Sequence[SectionBuilder] | None = None) -> None:
+    """Raise :class:`~frictionlab.errors.InputError` (one line) when a module an optional
+    extra provides is missing, before anything is computed. Only the default sections and
+    the contact builders need the extras."""
+    import importlib.util
+
+    from frictionlab.errors import InputError
+
+    if builders is not None:
+        from frictionlab.demo.contact import CONTACT_SECTIONS
+
+        if not any(b in CONTACT_SECTIONS for b in builders):
+            return
+    for module, (extra, needed_by) in EXTRAS.items():
+        if importlib.util.find_spec(module) is None:
+            raise InputError(
+                f"frictionlab demo needs the optional extra '{extra}' for {needed_by}: "
+                f"pip install 'frictionlab[{extra}]' (module '{module}' is not installed)"
+            )
+
+
 def run_demo(
     out_dir: str | os.PathLike[str],
     builders: Sequence[SectionBuilder] | None = None,
     progress: ProgressFactory | None = None,
     log: Callable[[str], None] | None = None,
 ) -> Path:
-    """Run every section builder and write ``out_dir/report.html``; return its path."""
+    """Run every section builder and write ``out_dir/report.html``; return its path.
+
+    The optional extras are checked first (:func:`check_extras`): nothing is computed or
+    written when one is missing."""
+    check_extras(builders)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     chosen = list(builders) if builders is not None else default_builders()

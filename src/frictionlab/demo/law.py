@@ -36,6 +36,7 @@ from frictionlab.plotting.law import (
     plot_steady_friction,
     save_figure,
 )
+from frictionlab.plotting.units import show_length_in
 from frictionlab.schema.scenario import Scenario, load_scenario
 from frictionlab.subloading import (
     Status,
@@ -219,6 +220,7 @@ def slide_hold_slide_section(ctx: DemoContext) -> Section:
     # slip window [m]: the end of the first slide, the hold and the restart
     window = (0.9 * first, first + second)
     zoom.axes[0].set_xlim(*window)
+    show_length_in(zoom.axes[0].xaxis, "slip along e_1", *window)  # um, not 0.0009 m
     zoom.axes[0].set_ylim(*_zoom_limits(h.slip[..., 0], h.friction_ratio, window))
     save_figure(zoom, ctx.out_dir / rel / "restart_zoom.png")
     sec = Section("Slide-hold-slide: recovery of static friction", sc.description,

@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from frictionlab._jit import njit
 
 __all__ = ["accumulate", "accumulate_row", "slip_lengths"]
@@ -66,10 +64,11 @@ def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plasti
     Adds to ``time``, ``slip`` (N, 2), ``approach``, ``plastic_work`` and ``path``
     (``dpath``); writes ``ratio`` = |f_t|/f_n (0 where open); where it exceeds ``peak``
     (or ``seg_peak``) records it with the step, time and path (time); raises
-    ``seg_max_fn`` to f_n.
+    ``seg_max_fn`` to f_n. Returns the number of points whose segment peak rose.
     """
     n = traction.shape[0]
     shared = dt.shape[0] == 1
+    rose = 0
     for i in range(n):
         t = time[i] + (dt[0] if shared else dt[i])
         time[i] = t
@@ -84,12 +83,14 @@ def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plasti
         ratio[i] = r
         # in both passes: the arrays stay in the loop (a helper taking them would be
         # reference-counted per point); the shared part, _extremes, takes scalars
+        if r > seg_peak[i]:
+            rose += 1
         if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change
             (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
              seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
                                         peak_path[i], seg_peak[i], seg_peak_time[i],
                                         seg_max_fn[i])  # fmt: skip
-    return np.float64(0.0)
+    return rose
 
 
 @njit(cache=True)
@@ -107,6 +108,7 @@ def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, stat
     """
     n = traction.shape[0]
     shared = dt.shape[0] == 1
+    rose = 0
     for i in range(n):
         t = time[i] + (dt[0] if shared else dt[i])
         time[i] = t
@@ -140,9 +142,11 @@ def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, stat
         ratio[i] = r
         # in both passes: the arrays stay in the loop (a helper taking them would be
         # reference-counted per point); the shared part, _extremes, takes scalars
+        if r > seg_peak[i]:
+            rose += 1
         if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change
             (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
              seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
                                         peak_path[i], seg_peak[i], seg_peak_time[i],
                                         seg_max_fn[i])  # fmt: skip
-    return np.float64(0.0)
+    return rose

@@ -306,8 +306,9 @@ class Recorder:
 
     # ------------------------------------------------------------------ steps
     def add(self, state: Any, dt: Any, du: np.ndarray, work: np.ndarray, status: np.ndarray,
-            substeps: int, solves: int, iterations: np.ndarray, last: bool) -> None:  # fmt: skip
-        """One completed step of the current segment (``last``: the segment's last step)."""
+            substeps: int, solves: int, iterations: np.ndarray, last: bool) -> bool:  # fmt: skip
+        """One completed step of the current segment (``last``: the segment's last step);
+        True when the segment's peak friction ratio rose at some point."""
         s = self.stats
         seg = self._seg
         assert seg is not None
@@ -322,7 +323,7 @@ class Recorder:
         dpath = self._slip_lengths(du)
         if recorded and self.selected is None:  # one pass: running figures and the row
             b, j = self.buf, self.fill
-            accumulate_row(
+            rose = accumulate_row(
                 s.steps, dts, du, dpath, work, state.traction, state.F, state.R, state.plastic_slip,
                 status, iterations, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
                 ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
@@ -334,8 +335,8 @@ class Recorder:
             s.friction_ratio = ratio
             self._row_meta(self._seg_index, substeps, k == 0 or last, False, solves)
             self._last_recorded = True
-            return
-        accumulate(
+            return bool(rose)
+        rose = accumulate(
             s.steps, dts, du, dpath, work,
             state.traction, s.time, s.slip, s.approach, s.plastic_work, s.path_length,
             ratio, s.peak_friction_ratio, s.peak_step, s.peak_time, s.peak_path_length,
@@ -348,6 +349,7 @@ class Recorder:
         else:
             self._last = (status, iterations, 0, substeps, solves)
             self._last_recorded = False
+        return bool(rose)
 
     def _slip_lengths(self, du: np.ndarray) -> np.ndarray:
         """|du_t| per point; kept for the next step when ``du`` is read-only (the driver's

@@ -24,6 +24,12 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab.driver.extrema import (
+    DEFAULT_PEAK_ACCURACY,
+    PeakTracker,
+    RefinedPeaks,
+    check_peak_accuracy,
+)
 from frictionlab.driver.program import (
     NormalStep,
     Segment,
@@ -194,6 +200,10 @@ class History:
     thinned:
         True when rows were dropped beyond the recording's ``every`` to bound the memory
         (a run streamed to a sink with ``keep_rows``): these rows suit plots, not analysis.
+    peaks:
+        :class:`~frictionlab.driver.extrema.RefinedPeaks`: the segment peaks located between
+        steps (``peak_accuracy``); ``stats`` and the segments' stats report these values.
+        The recorded rows stay on the step grid.
     """
 
     time: np.ndarray
@@ -221,6 +231,7 @@ class History:
     points: np.ndarray | None = None
     stats: RunStats | None = None
     thinned: bool = False
+    peaks: RefinedPeaks = field(default_factory=RefinedPeaks.empty)
 
     @property
     def plastic_work(self) -> np.ndarray:
@@ -441,6 +452,7 @@ def simulate(
     recording: Recording | None = None,
     accuracy: Any = _UNSET,
     max_halvings: Any = _UNSET,
+    peak_accuracy: float | None = DEFAULT_PEAK_ACCURACY,
 ) -> History:
     """Run ``program`` for N contact points and record its steps.
 
@@ -466,6 +478,11 @@ def simulate(
         Which steps and points to record and where the rows go (a streaming ``sink``);
         default: every step of every point, kept in memory. See
         :class:`~frictionlab.driver.recorder.Recording`.
+    peak_accuracy:
+        Relative accuracy of the reported peaks of the friction ratio (overall and per
+        segment): a segment's largest sample that is a turn is refined between its
+        neighbouring steps (:mod:`~frictionlab.driver.extrema`). None reports the largest
+        sample.
 
     Returns
     -------
@@ -476,6 +493,7 @@ def simulate(
     """
     chosen = driver_settings(settings, accuracy, max_halvings, "simulate")
     accuracy, max_halvings = chosen.accuracy, chosen.max_halvings
+    peak_accuracy = check_peak_accuracy(peak_accuracy)
     init = InitialConditions() if initial is None else initial
     n = count_points(params, program, init, n_points)
     state = init if isinstance(init, ContactState) else init.state(params, n)
@@ -491,6 +509,8 @@ def simulate(
     )  # fmt: skip
     success, message = True, f"completed {len(plans)} segments"
     pool = OutputPool(n)
+    tracker = None if peak_accuracy is None else PeakTracker(n)
+    refined: list[RefinedPeaks] = []
     for index, plan in enumerate(plans, start=1):
         estimated = plan.estimated_steps
         steps = plan.begin(state.traction)
@@ -499,6 +519,8 @@ def simulate(
             check_snap_back(params, target, f"program[{index}].traction_change")
         total += steps - estimated
         rec.begin_segment(index, plan.kind)
+        if tracker is not None:
+            tracker.begin_segment(state, rec.stats.time, rec.stats.slip, rec.stats.path_length)
         failed = False
         last = steps - 1
         for k in range(steps):
@@ -513,12 +535,21 @@ def simulate(
                     f"segment #{index} ({plan.kind}), step {k + 1} of {steps}: {outcome.reason}"
                 )
                 break
-            state = outcome.state
-            rec.add(state, control.dt, outcome.du, outcome.dissipation, outcome.status,
-                    w.substeps, w.solves, w.iterations, k == last)  # fmt: skip
+            before, state = state, outcome.state
+            rose = rec.add(state, control.dt, outcome.du, outcome.dissipation, outcome.status,
+                           w.substeps, w.solves, w.iterations, k == last)  # fmt: skip
+            if rose and tracker is not None:
+                tracker.observe(k, before, state, control, rec.stats.time, rec.stats.slip,
+                                rec.stats.path_length)  # fmt: skip
             if progress is not None:
                 progress(work["steps"], total)
         seg = rec.end_segment()
+        if seg is not None and tracker is not None and not failed:
+            assert peak_accuracy is not None
+            found = tracker.refine(params, plan, steps, peak_accuracy, max_halvings=max_halvings,
+                                   first_step=seg.first_step, index=index)  # fmt: skip
+            _apply_refined(rec.stats, seg, found)
+            refined.append(found)
         if seg is not None:
             reached = seg.max_normal_traction
             reasons = _snap_back_failures(params, reached)
@@ -552,7 +583,24 @@ def simulate(
         message=message,
         work=work,
         warnings=tuple(warnings),
+        peaks=RefinedPeaks.join(refined),
     )
+
+
+def _apply_refined(run: RunStats, seg: SegmentStats, found: RefinedPeaks) -> None:
+    """Put a segment's refined peaks into its figures and, where larger, the run's."""
+    if not len(found):
+        return
+    i = found.point - 1
+    seg.peak_friction_ratio = seg.peak_friction_ratio.copy()
+    seg.peak_time = seg.peak_time.copy()
+    seg.peak_friction_ratio[i] = found.friction_ratio
+    seg.peak_time[i] = found.time
+    top = run.peak_step[i] == found.step  # the run's peak is this segment's sample
+    j = i[top]
+    run.peak_friction_ratio[j] = found.friction_ratio[top]
+    run.peak_time[j] = found.time[top]
+    run.peak_path_length[j] = found.path_length[top]
 
 
 def _segment_records(

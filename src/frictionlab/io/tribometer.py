@@ -1,33 +1,48 @@
-"""Reading a tribometer export: time, slip and friction ratio from a lab's CSV file.
+"""Reading a tribometer export as labs write it: time, slip and friction from a text table.
 
-Exports differ from lab to lab; :func:`read_tribometer` loads them with pandas and
-accepts comment lines (``#``), an index column, extra columns, a units row right under
-the header (``s``/``min``, ``m``/``mm``/``um``), and the lab's column names through a
-mapping ``{"time": "Time", "slip": "Displacement", "friction_ratio": "COF"}``. Units
-come from ``units = {time = "min", slip = "mm"}`` or, when not given, from the units
-row; SI (s, m) otherwise. The slip column is optional (used for plots only).
+:func:`read_tribometer` accepts:
+
+* encodings by byte-order mark (UTF-8, UTF-16), else UTF-8, else cp1252 (Windows
+  "latin-1"); ``encoding`` forces one;
+* the delimiter (tab, ``;``, ``,``, ``|``) sniffed from the data lines, a decimal comma
+  sniffed where the delimiter is not a comma (``sep`` and ``decimal`` force them);
+* free-text metadata lines before the header (skipped) and ``#`` comment lines;
+* units in the column titles (``Time (min)``, ``time [s]``, ``Displacement/mm``,
+  ``Friction force in N``), in a units row right under the header, or in ``units``;
+  two sources that disagree are an error. Units are read by pint;
+* the friction ratio as a column, or as ``friction_force`` / ``normal_force``;
+* reciprocating tests (``reciprocating``): the friction ratio changes sign with each
+  stroke; its magnitude is used and each sample's stroke is counted.
+
+Columns are found by role (time, slip, friction_ratio, friction_force, normal_force):
+by the name mapped in ``columns`` or, by default, a title whose name (its unit removed)
+is the role or a usual synonym (``COF``, ``Displacement``, ``Normal load``...), case and
+``_``/space ignored. The slip is optional (plots only).
 
 Bad data are refused with one :class:`~frictionlab.errors.InputError` line naming the
-file, the column and the sample: a missing or repeated column, a value that is not a
-number, NaN or an empty cell, fewer than :data:`MIN_SAMPLES` samples, negative time,
-time not strictly increasing, a negative friction ratio.
+file and the line and/or column.
 """
 
 from __future__ import annotations
 
-import io
+import codecs
+import csv
 import os
+import re
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cache
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from frictionlab.errors import InputError
-from frictionlab.io.inputs import read_input_text
+from frictionlab.io.inputs import read_input_bytes
 
 __all__ = [
     "MIN_SAMPLES",
+    "ROLES",
     "SLIP_UNITS",
     "TIME_UNITS",
     "Measured",
@@ -36,47 +51,189 @@ __all__ = [
 
 #: Fewest samples a curve may have.
 MIN_SAMPLES = 5
-#: Time units -> seconds.
-TIME_UNITS: dict[str, float] = {"s": 1.0, "min": 60.0}
-#: Slip units -> metres.
-SLIP_UNITS: dict[str, float] = {"m": 1.0, "mm": 1e-3, "um": 1e-6}
-_ALIASES = {"sec": "s", "second": "s", "seconds": "s", "µm": "um", "μm": "um", "micron": "um"}
-_ROLES = ("time", "slip", "friction_ratio")
+#: Units the calibration input lists as examples (any unit pint knows is read).
+TIME_UNITS: dict[str, float] = {"s": 1.0, "min": 60.0, "h": 3600.0, "ms": 1e-3}
+SLIP_UNITS: dict[str, float] = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}
+#: Column roles of a tribometer file.
+ROLES = ("time", "slip", "friction_ratio", "friction_force", "normal_force")
+#: SI unit and pint dimensionality of each role.
+_SI = {"time": ("s", "[time]"), "slip": ("m", "[length]"), "friction_ratio": ("", ""),
+       "friction_force": ("N", "[force]"), "normal_force": ("N", "[force]")}  # fmt: skip
+#: Usual names of each role (compared with case, spaces and underscores removed).
+_SYNONYMS = {
+    "time": ("time", "t"),
+    "slip": ("slip", "slip_1", "displacement", "distance", "position", "sliding distance"),
+    "friction_ratio": ("friction_ratio", "friction ratio", "cof", "mu", "friction coefficient",
+                       "coefficient of friction"),
+    "friction_force": ("friction_force", "friction force", "tangential force", "ft"),
+    "normal_force": ("normal_force", "normal force", "normal load", "load", "fn"),
+}  # fmt: skip
+_DELIMITERS = ("\t", ";", ",", "|")
+_TITLE = re.compile(
+    r"^(?P<name>.*?)\s*(?:\((?P<p>[^()]*)\)|\[(?P<b>[^\[\]]*)\]|/\s*(?P<s>[^/]+)"
+    r"|\s+in\s+(?P<i>\S+))\s*$"
+)
+_DIMENSIONLESS = {"", "-", "1", "%"}
+_DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d+,\d+(?:[eE][-+]?\d+)?\s*$")
 
 
 @dataclass(frozen=True)
 class Measured:
-    """A loaded curve in SI units: time [s], friction ratio [-], slip [m] or None."""
+    """A loaded curve in SI units: time [s], friction ratio [-] (>= 0), slip [m] or None.
+
+    ``units``: the unit read for each role present; ``stroke``: 0-based stroke of each
+    sample (all 0 unless reciprocating); ``columns``: the file's title of each role.
+    """
 
     source: str
     time: np.ndarray
     friction_ratio: np.ndarray
     slip: np.ndarray | None
     units: dict[str, str]
+    stroke: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    columns: dict[str, str] = field(default_factory=dict)
 
 
-def _unit_token(text: str) -> str:
-    token = text.strip().strip("[]()").strip().lower()
-    return _ALIASES.get(token, token)
+@cache
+def _registry() -> Any:
+    import pint
+
+    return pint.UnitRegistry()
 
 
-def _numbers(where: str, name: str, cells: list[str], offset: int) -> np.ndarray:
-    out = np.empty(len(cells))
-    for i, cell in enumerate(cells):
-        text = "" if cell is None else str(cell).strip()
-        if text == "" or text.lower() == "nan":
-            raise InputError(f"{where}: column '{name}' sample {i + 1 + offset} is empty or NaN")
+def _key(name: str) -> str:
+    return re.sub(r"[\s_]+", " ", name.strip().lower())
+
+
+def _split_title(title: str) -> tuple[str, str | None]:
+    """(name, unit or None) of a column title in the usual forms."""
+    m = _TITLE.match(title.strip())
+    if m is None or not m.group("name"):
+        return title.strip(), None
+    unit = next(m.group(g) for g in "pbsi" if m.group(g) is not None)
+    return m.group("name").strip(), unit.strip()
+
+
+def _factor(unit: str, role: str, where: str) -> float:
+    """The factor from ``unit`` to the role's SI unit; InputError naming ``where``."""
+    si, dim = _SI[role]
+    token = unit.strip()
+    if role == "friction_ratio":
+        if token in _DIMENSIONLESS:
+            return 0.01 if token == "%" else 1.0
+        raise InputError(f"{where}: unit '{unit}' of the friction ratio; it has none ('-')")
+    token = token.replace("μ", "u").replace("µ", "u")
+    try:
+        q = _registry().Quantity(1.0, token)
+        if not q.check(dim):
+            raise ValueError
+        return float(q.to(si).magnitude)
+    except Exception:  # pint raises several kinds for an unknown or wrong unit
+        raise InputError(
+            f"{where}: '{unit}' is not a unit of {role.replace('_', ' ')} ({dim.strip('[]')})"
+        ) from None
+
+
+def _decode(raw: bytes, encoding: str | None, where: str) -> str:
+    if encoding is not None:
         try:
-            out[i] = float(text)
-        except ValueError:
+            return raw.decode(encoding)
+        except LookupError:
+            raise InputError(f"{where}: unknown encoding '{encoding}'") from None
+        except UnicodeDecodeError as exc:
+            raise InputError(f"{where}: not {encoding} at byte {exc.start}") from None
+    if raw.startswith(codecs.BOM_UTF8):
+        return raw[len(codecs.BOM_UTF8) :].decode("utf-8", errors="replace")
+    if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        return raw.decode("utf-16", errors="replace")
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return raw.decode("cp1252", errors="replace")
+
+
+def _fields(line: str, sep: str) -> list[str]:
+    return [c.strip() for c in next(csv.reader([line], delimiter=sep))]
+
+
+def _width(lines: list[str], sep: str) -> tuple[int, float]:
+    """The most common field count of ``lines`` split at ``sep`` and its share."""
+    counts = np.array([len(_fields(t, sep)) for t in lines])
+    values, freq = np.unique(counts, return_counts=True)
+    j = int(np.argmax(freq))
+    return int(values[j]), float(freq[j] / counts.size)
+
+
+def _sniff(lines: list[tuple[int, str]], where: str) -> str:
+    """The first delimiter that splits most of the last lines into one count of >= 2 fields."""
+    tail = [text for _, text in lines[-50:]]
+    for sep in _DELIMITERS:
+        width, share = _width(tail, sep)
+        if width >= 2 and share >= 0.8:
+            return sep
+    raise InputError(
+        f"{where}: no delimiter (tab ; , |) splits the data lines into columns alike; "
+        'give sep = "..."'
+    )
+
+
+def _is_number(cell: str, decimal: str) -> bool:
+    text = cell.replace(decimal, ".") if decimal != "." else cell
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _find_columns(
+    where: str, titles: list[str], mapping: Mapping[str, str]
+) -> tuple[dict[str, int], dict[str, str | None]]:
+    """Index and title unit of each role found (mapped names must exist)."""
+    split = [_split_title(t) for t in titles]
+    index: dict[str, int] = {}
+    for role in ROLES:
+        wanted = mapping.get(role)
+        if wanted is not None:
+            hits = [i for i, t in enumerate(titles) if t == wanted.strip()]
+            hits = hits or [i for i, (n, _) in enumerate(split) if _key(n) == _key(wanted)]
+            if not hits:
+                raise InputError(
+                    f"{where}: missing column '{wanted}' for {role} (columns found: "
+                    f"{', '.join(t for t in titles if t)})"
+                )
+        else:
+            names = {_key(s) for s in _SYNONYMS[role]}
+            hits = [i for i, (n, _) in enumerate(split) if _key(n) in names]
+        if len(hits) > 1:
+            raise InputError(f"{where}: {len(hits)} columns for {role}: "
+                             f"{', '.join(repr(titles[i]) for i in hits)}; map one with "
+                             f'columns.{role} = "..."')  # fmt: skip
+        if hits:
+            index[role] = hits[0]
+    return index, {role: split[i][1] for role, i in index.items()}
+
+
+def _choose_unit(role: str, title: str, sources: dict[str, str | None], where: str) -> str:
+    """One unit from the title, the units row and the ``units`` key; all given must agree."""
+    given = {k: v for k, v in sources.items() if v is not None and v.strip() != ""}
+    if role == "friction_ratio":
+        given = {k: v for k, v in given.items() if not (k == "units row" and v.strip() == "-")}
+    if not given:
+        return _SI[role][0] or "-"
+    factors = {
+        k: _factor(v, role, f"{where}: units.{role}" if k == "units key" else
+                   f"{where}: column '{title}'")
+        for k, v in given.items()
+    }  # fmt: skip
+    first = next(iter(given))
+    for k, f in factors.items():
+        if not np.isclose(f, factors[first], rtol=1e-12):
             raise InputError(
-                f"{where}: column '{name}' sample {i + 1 + offset} = {text!r} is not a number"
-            ) from None
-        if not np.isfinite(out[i]):
-            raise InputError(
-                f"{where}: column '{name}' sample {i + 1 + offset} = {text} is not finite"
+                f"{where}: column '{title}': the {first} says '{given[first]}' but the {k} "
+                f"says '{given[k]}'"
             )
-    return out
+    return given[first]
 
 
 def read_tribometer(
@@ -84,116 +241,157 @@ def read_tribometer(
     columns: Mapping[str, str] | None = None,
     units: Mapping[str, str] | None = None,
     where: str = "",
+    *,
+    sep: str | None = None,
+    decimal: str | None = None,
+    encoding: str | None = None,
+    reciprocating: bool = False,
 ) -> Measured:
-    """Load ``path``; ``columns`` maps roles (time, slip, friction_ratio) to the file's names.
-
-    ``units`` gives ``time`` in ``s`` or ``min`` and ``slip`` in ``m``, ``mm`` or ``um``;
-    ``where`` prefixes messages (e.g. ``"[[data]] #1.file 'run.csv'"``).
-    """
+    """Load ``path`` (see the module docstring); ``columns`` maps roles to the file's titles,
+    ``units`` gives a role's unit (any pint unit, ``-`` for the ratio); ``where`` prefixes
+    messages (e.g. ``"[[data]] #1.file 'run.csv'"``)."""
     import pandas as pd
+
+    from frictionlab.errors import ParameterError
 
     p = Path(path)
     where = where or f"file '{p}'"
-    mapping = {"time": "time", "slip": "slip", "friction_ratio": "friction_ratio"}
-    mapping.update(columns or {})
-    slip_required = bool(columns and "slip" in columns)
+    mapping = dict(columns or {})
+    for role in [*mapping, *(units or {})]:
+        if role not in ROLES:
+            raise ParameterError("columns/units role", role, f"one of {', '.join(ROLES)}")
     if not p.exists() and not p.is_symlink():
         raise InputError(f"{where}: file not found")
-    try:
-        text = read_input_text(p)
+    try:  # FIFOs and devices are refused by their type, before anything is opened
+        raw = read_input_bytes(p)
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
-    try:
-        header = pd.read_csv(io.StringIO(text), comment="#", header=None, nrows=1, dtype=str)
-        frame = pd.read_csv(
-            io.StringIO(text), comment="#", dtype=str, skipinitialspace=True,
-            keep_default_na=False,
-        )  # fmt: skip
-    except pd.errors.EmptyDataError:
-        raise InputError(f"{where}: the file holds no table") from None
-    except pd.errors.ParserError as exc:
-        first = str(exc).strip().splitlines()[-1]
-        raise InputError(f"{where}: not a readable CSV table ({first})") from None
-    names = [str(v).strip() for v in header.iloc[0].tolist() if isinstance(v, str)]
-    for role in _ROLES:
-        name = mapping[role]
-        count = names.count(name)
-        if count > 1:
-            raise InputError(f"{where}: column '{name}' ({role}) appears {count} times")
-        if count == 0 and (role != "slip" or slip_required):
+    text = _decode(raw, encoding, where)
+    lines = [(i + 1, t) for i, t in enumerate(text.splitlines())
+             if t.strip() and not t.lstrip().startswith("#")]  # fmt: skip
+    if not lines:
+        raise InputError(f"{where}: the file holds no table")
+    sep = sep or _sniff(lines, where)
+    rows = [(n, _fields(t, sep)) for n, t in lines]
+    width = _width([t for _, t in lines[-50:]], sep)[0]
+    if decimal is None:
+        cells = [c for _, r in rows[-20:] for c in r]
+        decimal = "," if sep != "," and any(_DECIMAL_COMMA.match(c) for c in cells) else "."
+
+    # the data: from the first line of ``width`` fields that is mostly numbers to the end;
+    # the header (and a units row) right above it, free text before
+    def numeric(cells: list[str]) -> bool:
+        return len(cells) == width and 2 * sum(_is_number(c, decimal) for c in cells if c) > width
+
+    first = next((i for i, (_, cells) in enumerate(rows) if numeric(cells)), None)
+    if first is None:
+        raise InputError(f"{where}: no line of {width} numeric fields (sep {sep!r}, "
+                         f"decimal {decimal!r})")  # fmt: skip
+    above = [r for r in rows[:first] if len(r[1]) == width]
+    if not above:
+        raise InputError(f"{where}: no header line of {width} columns above the first "
+                         f"numeric line (line {rows[first][0]})")  # fmt: skip
+    for n, fields_ in rows[first:]:
+        if len(fields_) != width:
             raise InputError(
-                f"{where}: missing column '{name}' for {role} (columns found: "
-                f'{", ".join(n for n in names if n)}; map yours with columns = {{{role} = "..."}})'
+                f"{where} line {n}: {len(fields_)} fields where the header has {width}"
             )
-    frame.columns = [str(c).strip() for c in frame.columns]
-    present = [r for r in _ROLES if mapping[r] in frame.columns]
-    cells = {r: frame[mapping[r]].tolist() for r in present}
-    # A units row directly under the header: its time cell is not a number.
-    row_units: dict[str, str] = {}
-    offset = 0
-    if cells["time"] and not _is_number(cells["time"][0]):
-        row_units = {r: _unit_token(str(cells[r][0])) for r in present}
-        cells = {r: v[1:] for r, v in cells.items()}
-        offset = 1
-    chosen = _choose_units(where, mapping, units or {}, row_units)
-    n = len(cells["time"])
-    if n < MIN_SAMPLES:
-        raise InputError(f"{where}: only {n} samples; at least {MIN_SAMPLES} are needed")
-    t = _numbers(where, mapping["time"], cells["time"], offset) * TIME_UNITS[chosen["time"]]
-    ratio = _numbers(where, mapping["friction_ratio"], cells["friction_ratio"], offset)
-    slip = None
-    if "slip" in present:
-        slip = _numbers(where, mapping["slip"], cells["slip"], offset) * SLIP_UNITS[chosen["slip"]]
-    if t[0] < 0:
+    header_line, titles = above[-1]
+    units_row: list[str] | None = None
+    if len(above) >= 2 and above[-1][0] > above[-2][0]:
+        cand = above[-1][1]
+        if all(len(c) <= 12 for c in cand) and not _find_columns(where, cand, {})[0]:
+            units_row = cand
+            header_line, titles = above[-2]
+    index, title_units = _find_columns(where, titles, mapping)
+    if "time" not in index:
+        raise InputError(f"{where} line {header_line}: no time column among "
+                         f"{', '.join(titles)}; map yours with columns.time = \"...\"")  # fmt: skip
+    has_ratio = "friction_ratio" in index
+    if not has_ratio and not {"friction_force", "normal_force"} <= set(index):
         raise InputError(
-            f"{where}: column '{mapping['time']}' sample {1 + offset} = {t[0]:g} s is negative"
+            f"{where} line {header_line}: no friction ratio column (or friction_force and "
+            f"normal_force) among {', '.join(titles)}; map yours with columns.friction_ratio"
         )
+    used = [r for r in ROLES if r in index and (has_ratio or r != "friction_ratio")]
+    if has_ratio:
+        used = [r for r in used if r not in ("friction_force", "normal_force")]
+    chosen = {
+        r: _choose_unit(
+            r,
+            titles[index[r]],
+            {"title": title_units[r], "units row": None if units_row is None
+             else units_row[index[r]].strip("[]() "), "units key": (units or {}).get(r)},
+            where,
+        )
+        for r in used
+    }  # fmt: skip
+    data = rows[first:]
+    if len(data) < MIN_SAMPLES:
+        raise InputError(f"{where}: only {len(data)} samples; at least {MIN_SAMPLES} are needed")
+    line_numbers = np.array([n for n, _ in data])
+    values: dict[str, np.ndarray] = {}
+    for r in used:
+        title = titles[index[r]]
+        raw_cells = [row[index[r]] for _, row in data]
+        cells = pd.Series(raw_cells, dtype=str)
+        if decimal != ".":
+            cells = cells.str.replace(decimal, ".", regex=False)
+        col = pd.to_numeric(cells, errors="coerce").to_numpy(dtype=np.float64)
+        bad = ~np.isfinite(col)
+        if bad.any():
+            j = int(np.argmax(bad))
+            what = "is empty" if not raw_cells[j] else f"= {raw_cells[j]!r} is not a number"
+            raise InputError(f"{where} line {line_numbers[j]}: column '{title}' {what}")
+        col = col * _factor(chosen[r], r, f"{where}: column '{title}'")
+        values[r] = col
+    t = values["time"]
+    tt = titles[index["time"]]
+    if t[0] < 0:
+        raise InputError(f"{where} line {line_numbers[0]}: column '{tt}' = {t[0]:g} s is negative")
     steps = np.diff(t)
     if np.any(steps <= 0):
         i = int(np.flatnonzero(steps <= 0)[0])
-        raise InputError(
-            f"{where}: column '{mapping['time']}' is not strictly increasing at sample "
-            f"{i + 2 + offset} ({t[i + 1]:g} s after {t[i]:g} s)"
-        )
-    if np.any(ratio < 0):
-        i = int(np.flatnonzero(ratio < 0)[0])
-        raise InputError(
-            f"{where}: column '{mapping['friction_ratio']}' sample {i + 1 + offset} = "
-            f"{ratio[i]:g} is negative (a friction ratio |f_t|/f_n is >= 0)"
-        )
-    return Measured(str(p), t, ratio, slip, chosen)
-
-
-def _is_number(cell: object) -> bool:
-    try:
-        float(str(cell).strip())
-    except ValueError:
-        return False
-    return True
-
-
-def _choose_units(
-    where: str, mapping: Mapping[str, str], given: Mapping[str, str], row: Mapping[str, str]
-) -> dict[str, str]:
-    """Units of time and slip: as given, else from the units row, else SI."""
-    out = {}
-    for role, table in (("time", TIME_UNITS), ("slip", SLIP_UNITS)):
-        from_row = row.get(role, "")
-        if role in given:
-            unit = given[role]
-            if from_row in table and from_row != unit:
-                raise InputError(
-                    f"{where}: units.{role} = '{unit}' but the file's units row says "
-                    f"'{from_row}' for column '{mapping[role]}'"
-                )
-        elif from_row:
-            if from_row not in table:
-                raise InputError(
-                    f"{where}: unknown unit '{from_row}' of column '{mapping[role]}' in the "
-                    f"units row; give units.{role} = one of {', '.join(table)}"
-                )
-            unit = from_row
-        else:
-            unit = next(iter(table))
-        out[role] = unit
-    return out
+        raise InputError(f"{where} line {line_numbers[i + 1]}: column '{tt}' is not strictly "
+                         f"increasing ({t[i + 1]:g} s after {t[i]:g} s)")  # fmt: skip
+    if has_ratio:
+        signed = values["friction_ratio"]
+        rt = titles[index["friction_ratio"]]
+    else:
+        fn = values["normal_force"]
+        nt = titles[index["normal_force"]]
+        if np.any(fn <= 0):
+            j = int(np.argmax(fn <= 0))
+            raise InputError(f"{where} line {line_numbers[j]}: column '{nt}' = {fn[j]:g} N; "
+                             "the normal force must be > 0 (compression)")  # fmt: skip
+        signed = values["friction_force"] / fn
+        rt = titles[index["friction_force"]]
+    stroke = np.zeros(t.size, dtype=np.int64)
+    if reciprocating:
+        sign = np.sign(signed)
+        nonzero = np.flatnonzero(sign)
+        flips = np.zeros(t.size, dtype=np.int64)
+        if nonzero.size > 1:
+            change = nonzero[1:][sign[nonzero[1:]] != sign[nonzero[:-1]]]
+            flips[change] = 1
+        stroke = np.cumsum(flips)
+        ratio = np.abs(signed)
+    else:
+        if np.any(signed < 0):
+            j = int(np.argmax(signed < 0))
+            raise InputError(
+                f"{where} line {line_numbers[j]}: column '{rt}' is negative ({signed[j]:g}); "
+                "a friction ratio |f_t|/f_n is >= 0 (for a reciprocating test set "
+                "reciprocating = true)"
+            )
+        ratio = signed
+    slip = values.get("slip")
+    return Measured(
+        source=str(p),
+        time=t,
+        friction_ratio=ratio,
+        slip=slip,
+        units={r: chosen[r] for r in used},
+        stroke=stroke,
+        columns={r: titles[index[r]] for r in used},
+    )

@@ -80,6 +80,10 @@ def bridge_figure(
     ax_p.set_rlim(r_lo, r_hi)  # type: ignore[attr-defined]
     origin = f" (radial axis from {r_lo:.3g})" if r_lo > 0 else ""
     ax_p.set_title(f"|mu| against the sliding direction{origin}", fontsize=9)
+    if r_lo > 0:
+        from frictionlab.plotting.roughness import note_radial_origin
+
+        note_radial_origin(ax_p, r_lo, np.concatenate([data_mag, r_c]))
     ax_p.legend(loc="lower left", bbox_to_anchor=(-0.1, -0.16), fontsize=7, ncol=2)
 
     series = {

@@ -23,10 +23,67 @@ if TYPE_CHECKING:
 __all__ = ["plot_correlation", "plot_curve_fit", "plot_profile"]
 
 
+#: Most sliding segments drawn as panels of their own (more: the whole curve in one panel).
+MAX_PANELS = 6
+
+
 def plot_curve_fit(
-    curve: Curve, model: np.ndarray, start_model: np.ndarray | None = None
+    curve: Curve,
+    model: np.ndarray,
+    start_model: np.ndarray | None = None,
+    band: np.ndarray | None = None,
 ) -> Figure:
-    """Measured friction ratio (dots) and the fitted model (line) against time, residuals below."""
+    """Measured friction ratio (dots) and the fitted model (line), residuals below.
+
+    One panel per segment that is not a hold (time from the segment's start), so that
+    seconds of sliding are not lost beside hours of holding; holds are left out (the
+    traction stays constant in them). ``band``: (n,) half-width of the model's confidence
+    band, shaded.
+    """
+    from matplotlib.figure import Figure
+
+    seg = curve.segment_of_samples()
+    kinds = [type(s).__name__.lower() for s in curve.program]
+    shown = [k for k in np.unique(seg) if kinds[k] != "hold"]
+    if not 2 <= len(shown) <= MAX_PANELS:
+        return _single_panel(curve, model, start_model, band)
+    starts = np.concatenate([[0.0], np.cumsum(_durations(curve))])
+    fig = Figure(figsize=(3.0 + 2.2 * len(shown), 5.5), layout="constrained")
+    axes = fig.subplots(2, len(shown), sharey="row", height_ratios=(3, 1), squeeze=False)
+    for col, k in enumerate(shown):
+        sel = seg == k
+        t = curve.model_time[sel] - starts[k]
+        ax, ax_r = axes[0, col], axes[1, col]
+        ax.plot(t, curve.friction_ratio[sel], ".", ms=2, color="0.55", label="data")
+        if start_model is not None:
+            ax.plot(t, start_model[sel], "--", lw=1.0, color="C1", label="start law")
+        ax.plot(t, model[sel], "-", lw=1.3, color="C0", label="fitted law")
+        if band is not None and np.all(np.isfinite(band[sel])):
+            ax.fill_between(t, model[sel] - band[sel], model[sel] + band[sel], color="C0",
+                            alpha=0.25, lw=0, label="confidence band")  # fmt: skip
+        ax.set_title(f"segment {k + 1} ({kinds[k]})", fontsize=9)
+        ax.grid(alpha=0.3)
+        ax_r.plot(t, model[sel] - curve.friction_ratio[sel], ".", ms=2, color="C3")
+        ax_r.axhline(0.0, color="0.3", lw=0.8)
+        ax_r.set_xlabel("time in segment [s]")
+        ax_r.grid(alpha=0.3)
+    axes[0, 0].set_ylabel("friction ratio |f_t|/f_n [-]")
+    axes[1, 0].set_ylabel("model - data [-]")
+    axes[0, 0].legend(fontsize=7, loc="lower right")
+    fig.suptitle(f"{curve.name}: {curve.n_samples} samples (holds not shown)", fontsize=10)
+    return fig
+
+
+def _durations(curve: Curve) -> list[float]:
+    from frictionlab.calibration.model import segment_durations
+
+    return segment_durations(curve.program)
+
+
+def _single_panel(
+    curve: Curve, model: np.ndarray, start_model: np.ndarray | None, band: np.ndarray | None
+) -> Figure:
+    """The whole curve against time in one panel, residuals below."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(9.0, 5.5), layout="constrained")
@@ -37,10 +94,13 @@ def plot_curve_fit(
     if start_model is not None:
         ax.plot(t, start_model, "--", lw=1.0, color="C1", label="start law")
     ax.plot(t, model, "-", lw=1.3, color="C0", label="fitted law")
+    if band is not None and np.all(np.isfinite(band)):
+        ax.fill_between(t, model - band, model + band, color="C0", alpha=0.25, lw=0,
+                        label="confidence band")  # fmt: skip
     ax.set_ylabel("friction ratio |f_t|/f_n [-]")
     ax.set_title(f"{curve.name}: {curve.n_samples} samples", fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="lower right")
     residual = model - curve.friction_ratio
     ax_r.plot(t[::stride], residual[::stride], ".", ms=2, color="C3")
     ax_r.axhline(0.0, color="0.3", lw=0.8)

@@ -344,8 +344,13 @@ def plot_healing(
     intercept: float | None,
     labels: Sequence[str] = (),
     ax: Axes | None = None,
+    recovery: tuple[float, float, float, float] | None = None,
 ) -> Axes:
-    """Restart peak minus friction before the hold against log10 hold time, with the fit line."""
+    """Restart peak minus friction before the hold against log10 hold time, with the fit line.
+
+    ``recovery``: (A, mu_0, tau [s], friction before) of the law's recovery form, drawn as
+    ``A - (A - mu_0) exp(-t_h/tau)`` minus the friction before (dashed).
+    """
     if ax is None:
         ax = new_figure(1, 5.5, 4.0)[1][0]
     points = np.unique(point)
@@ -362,6 +367,11 @@ def plot_healing(
         t = np.geomspace(hold_time[hold_time > 0].min(), hold_time.max(), 50)
         ax.plot(t, intercept + rate * np.log10(t), "-", color="0.3", lw=1.0,
                 label=f"least squares: {rate:.4g} per decade")  # fmt: skip
+    if recovery is not None:
+        a, mu_0, tau, before = recovery
+        t = np.geomspace(hold_time[hold_time > 0].min() / 3, hold_time.max() * 3, 80)
+        ax.plot(t, a - (a - mu_0) * np.exp(-t / tau) - before, "--", color="C0", lw=1.2,
+                label=f"law's recovery form: tau = {tau:.3g} s")  # fmt: skip
     ax.set_xscale("log")
     ax.set_xlabel("hold time t_h [s]")
     ax.set_ylabel("delta mu = restart peak - friction before [-]")

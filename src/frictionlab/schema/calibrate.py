@@ -20,7 +20,7 @@ from frictionlab.calibration.model import FITTABLE, Curve, program_duration
 from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
-from frictionlab.io.tribometer import SLIP_UNITS, TIME_UNITS, read_tribometer
+from frictionlab.io.tribometer import ROLES, read_tribometer
 from frictionlab.schema.core import (
     BOOL,
     INTEGER,
@@ -68,21 +68,36 @@ FIT = Section("fit", (
     Field("profile_points", INTEGER, "grid values per profile", "", 9, low=3,
           high=MAX_PROFILE_POINTS),
     Field("profile_max", INTEGER, "profile at most this many (worst first)", "", 2, low=0),
+    Field("starts", INTEGER, "starting points (the [law] one, then scrambled Halton)", "", 1,
+          low=1, high=1000),
+    Field("seed", INTEGER, "seed of the quasi-random starts", "", 0, low=0),
+    Field("band_level", NUMBER, "level of the confidence and prediction bands", "", 0.95,
+          low=0, high=1, open="both"),
 ), "what to fit", "[fit]")  # fmt: skip
 COLUMNS = Section(
     "columns",
-    tuple(Field(k, STRING, f"title of the {k} column") for k in ("time", "slip", "friction_ratio")),
+    tuple(Field(k, STRING, f"title of the {k} column (default: found by name)") for k in ROLES),
     "column titles of the data file",
 )
-UNITS = Section("units", (
-    Field("time", STRING, "unit of the time column", choices=tuple(TIME_UNITS)),
-    Field("slip", STRING, "unit of the slip column", choices=tuple(SLIP_UNITS)),
-), "units of the data file's columns")  # fmt: skip
+UNITS = Section(
+    "units",
+    tuple(Field(k, STRING, f"unit of the {k} column (any unit pint reads; default: the "
+                "title's or the units row's, else SI)") for k in ROLES),
+    "units of the data file's columns",
+)  # fmt: skip
 DATA = Section("data", (
     Field("file", STRING, "the measured curve (CSV, relative to this file)", "", REQUIRED),
     Field("columns", table=COLUMNS),
     Field("units", table=UNITS),
     Field("weight", NUMBER, "weight of this curve in the fit", "", 1.0, low=0, open="low"),
+    Field("sep", STRING, "delimiter (default: sniffed among tab ; , |)", "", None),
+    Field("decimal", STRING, "decimal mark (default: sniffed)", "", None, choices=(".", ",")),
+    Field("encoding", STRING, "text encoding (default: by BOM, else UTF-8, else cp1252)", "",
+          None),
+    Field("reciprocating", BOOL, "the friction ratio changes sign with each stroke", "", False),
+    Field("segment_weights", listed(float, "number"), "weight of each [[data.program]] "
+          "segment's samples", "", None),
+    Field("time_offset", NUMBER, "when the data's t = 0 falls in the programme", "s", 0.0),
     Field("initial", table=INITIAL, default=REQUIRED),
     Field("program", table=SEGMENT, many=True, default=REQUIRED),
 ), "one measured curve", "[[data]]")  # fmt: skip
@@ -112,6 +127,9 @@ class CalibrationConfig:
     profile_points: int = 9
     profile_max: int = 2
     source: str = ""
+    starts: int = 1
+    seed: int = 0
+    band_level: float = 0.95
 
 
 def _parse_fit(t: Table) -> tuple[dict[str, Any], dict[str, tuple[float, float]]]:
@@ -154,21 +172,31 @@ def _parse_data(t: Table, base: Path) -> tuple[Curve, dict[str, Any]]:
         )
     path = Path(name) if Path(name).is_absolute() else base / name
     where = f"{t.where}.file '{name}'"
-    measured = read_tribometer(path, columns, units, where)
+    measured = read_tribometer(
+        path, columns, units, where, sep=values["sep"], decimal=values["decimal"],
+        encoding=values["encoding"], reciprocating=values["reciprocating"],
+    )  # fmt: skip
     end = program_duration(program)
-    t_last = float(measured.time[-1])
+    offset = values["time_offset"]
+    t_last = float(measured.time[-1]) + offset
     if t_last > end * (1.0 + END_TOLERANCE):
         raise InputError(
             f"{where}: the data run to t = {t_last:g} s, past the end of "
             f"{t.where}.program at {end:g} s (extend the programme or trim the data)"
         )
-    curve = Curve(
-        name=Path(name).name, time=np.minimum(measured.time, end),
-        friction_ratio=measured.friction_ratio, program=program, initial=init,
-        weight=values["weight"], slip=measured.slip,
-    )  # fmt: skip
+    weights = values["segment_weights"]
+    try:
+        curve = Curve(
+            name=Path(name).name, time=np.minimum(measured.time, end - offset),
+            friction_ratio=measured.friction_ratio, program=program, initial=init,
+            weight=values["weight"], slip=measured.slip, time_offset=offset,
+            segment_weights=None if weights is None else tuple(weights),
+        )  # fmt: skip
+    except ParameterError as exc:
+        raise ParameterError(f"{t.where}.{exc.field}", exc.value, exc.allowed) from None
     echo = {
-        "file": name, "columns": columns, "units": measured.units, "weight": values["weight"],
+        "file": name, "columns": measured.columns, "units": measured.units,
+        "weight": values["weight"], "segment_weights": weights, "time_offset": offset,
         "samples": curve.n_samples, "duration": end, "initial": initial, "program": programs,
     }  # fmt: skip
     return curve, echo
@@ -209,7 +237,8 @@ def parse_calibrate(
         curves=tuple(curves), data_echo=tuple(echoes),
         max_evaluations=fit_values["max_evaluations"], profile=fit_values["profile"],
         profile_points=fit_values["profile_points"], profile_max=fit_values["profile_max"],
-        source=source,
+        source=source, starts=fit_values["starts"], seed=fit_values["seed"],
+        band_level=fit_values["band_level"],
     )  # fmt: skip
 
 

@@ -117,6 +117,8 @@ RUN = Section("run", (
           low=0, open="low"),
     Field("max_halvings", INTEGER, "deepest substepping (halvings of a step)", "", 10, low=0,
           high=MAX_HALVINGS),
+    Field("peak_accuracy", NUMBER, "relative accuracy of the reported peaks, refined between "
+          "steps (0: the largest recorded step)", "", 1e-4, low=0, high=0.1),
     Field("allow_large", BOOL, "run past the memory/time estimate", "", False),
 ), "how the run is made", "[run]")  # fmt: skip
 
@@ -259,6 +261,7 @@ class RunOptions:
     n_points: int | None = None
     accuracy: float | None = None
     max_halvings: int = 10
+    peak_accuracy: float = 1e-4
     allow_large: bool = False
 
 
@@ -550,7 +553,12 @@ def parse_scenario(
         "description": top["description"],
         "law": _jsonable(params.as_dict()),
         "initial": _jsonable({**init_echo, "F": _or(init_echo["F"], "static value")}),
-        "run": {"n_points": n, "accuracy": opts.accuracy, "max_halvings": opts.max_halvings},
+        "run": {
+            "n_points": n,
+            "accuracy": opts.accuracy,
+            "max_halvings": opts.max_halvings,
+            "peak_accuracy": opts.peak_accuracy,
+        },
         "output": {"every": output.every, "points": _or(output.points, "all")},
     }
     if program is not None:

@@ -1,0 +1,116 @@
+"""Peaks of the friction ratio located between steps (driver/extrema.py).
+
+The reference for a segment starting from a virgin contact is independent of the driver:
+one update of the law from the initial state, maximised over the slip with SciPy.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from importlib import resources
+
+import numpy as np
+import pytest
+from scipy.optimize import minimize_scalar
+
+from frictionlab.driver import Hold, InitialConditions, Slide, simulate
+from frictionlab.driver.healing import healing_analysis
+from frictionlab.errors import ParameterError
+from frictionlab.subloading import SubloadingParams, initial_state, update
+
+
+def _starter() -> tuple[SubloadingParams, float, np.ndarray, float]:
+    """The starter scenario's law, normal traction, velocities and distance."""
+    text = resources.files("frictionlab.data.examples").joinpath("simulate.toml").read_text()
+    data = tomllib.loads(text)
+    (slide,) = data["program"]
+    velocity = np.asarray(slide["velocity"], dtype=float)
+    return (
+        SubloadingParams(**data["law"]),
+        data["initial"]["normal_traction"],
+        velocity,
+        slide["distance"],
+    )
+
+
+def _one_update_peak(params: SubloadingParams, fn: float, velocity: float) -> float:
+    """max over s of the ratio after one law update of slip s at ``velocity`` from rest."""
+    start = initial_state(params, fn, (0.0, 0.0), n_points=1)
+
+    def negative_ratio(s: float) -> float:
+        t = update(params, start, np.array([[s, 0.0, 0.0]]), s / velocity).state.traction
+        return -float(np.hypot(t[0, 0], t[0, 1]) / t[0, 2])
+
+    # the ratio peaks within a few 1/u of slip (u = 1e6 1/m in the starter)
+    res = minimize_scalar(negative_ratio, bounds=(1e-9, 2e-5), method="bounded",
+                          options={"xatol": 1e-13})  # fmt: skip
+    return -float(res.fun)
+
+
+def test_starter_peak_at_100_steps_equals_converged_peak():
+    params, fn, velocity, distance = _starter()
+    history = simulate(params, (Slide(velocity=velocity, distance=distance, steps=100),),
+                       InitialConditions(normal_traction=fn))  # fmt: skip
+    for i, v in enumerate(velocity):
+        reference = _one_update_peak(params, fn, float(v))
+        assert history.stats.peak_friction_ratio[i] == pytest.approx(reference, rel=1e-4)
+        assert history.segments[0].stats.peak_friction_ratio[i] == pytest.approx(
+            reference, rel=1e-4
+        )
+    # the sampled maximum is 7 % low: the refinement is what makes the difference
+    assert np.all(history.peaks.sampled_friction_ratio < 0.95 * history.peaks.friction_ratio)
+
+
+def test_peak_accuracy_none_reports_the_largest_sample():
+    params, fn, velocity, distance = _starter()
+    program = (Slide(velocity=velocity, distance=distance, steps=100),)
+    sampled = simulate(params, program, InitialConditions(normal_traction=fn), peak_accuracy=None)
+    assert len(sampled.peaks) == 0
+    assert np.array_equal(sampled.stats.peak_friction_ratio, sampled.friction_ratio.max(axis=0))
+
+
+def test_refined_peak_time_and_slip_agree_with_the_reference_slip():
+    params, fn, velocity, distance = _starter()
+    history = simulate(params, (Slide(velocity=velocity[:1], distance=distance, steps=37),),
+                       InitialConditions(normal_traction=fn))  # fmt: skip
+    (slip,) = history.peaks.slip[:, 0]
+    assert history.peaks.time[0] == pytest.approx(slip / velocity[0], rel=1e-12)
+    assert history.stats.peak_path_length[0] == pytest.approx(slip, rel=1e-12)
+    # the ratio's turn lies within the bracket [k - 1, k + 1] steps
+    step = distance / 37
+    k = history.peaks.step[0]
+    assert (k - 1) * step <= slip <= (k + 1) * step
+
+
+@pytest.mark.parametrize("value", [0.0, -1e-4, 0.5, True, "1e-4"])
+def test_invalid_peak_accuracy_is_refused_naming_the_key(value):
+    params = _starter()[0]
+    with pytest.raises(ParameterError, match="peak_accuracy"):
+        simulate(params, (Slide(velocity=1e-4, distance=1e-5, steps=2),), peak_accuracy=value)
+
+
+def test_restart_peaks_of_a_coarse_slide_hold_slide_match_a_converged_run():
+    """The restart peak after a hold: 30 steps of re-slide against 3000 unrefined steps
+    whose own sampling error is below 1e-5 (checked against 6000 steps)."""
+    params = SubloadingParams(surface="coulomb", alpha_n=1e12, alpha_t=1e12, mu_s=0.5,
+                              mu_k=0.3, u=1e5, kappa=1000.0, xi=1e-3)  # fmt: skip
+    hold = np.array([10.0, 1000.0])
+
+    def run(reslide_steps: int, peak_accuracy: float | None) -> np.ndarray:
+        program = (
+            Slide(velocity=1e-4, distance=1e-3, steps=200),
+            Hold(duration=hold, steps=1),
+            Slide(velocity=1e-4, distance=1e-4, steps=reslide_steps),
+        )
+        h = simulate(params, program, InitialConditions(normal_traction=1e6),
+                     peak_accuracy=peak_accuracy)  # fmt: skip
+        healing = healing_analysis(h)
+        assert healing is not None
+        return np.array([r.restart_peak for r in healing.records])
+
+    fine, finer = run(3000, None), run(6000, None)
+    assert np.allclose(fine, finer, rtol=1e-5)
+    coarse_sampled = run(10, None)
+    coarse = run(10, 1e-4)
+    assert np.max(np.abs(coarse_sampled / fine - 1)) > 1e-3  # the grid alone misses it
+    assert np.allclose(coarse, fine, rtol=1e-4)
