@@ -292,13 +292,14 @@ def test_a_grid_over_max_cases_is_refused_naming_the_limit(tmp_path: Path, capsy
 
 # ------------------------------------------------------ sizes refused before the run
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "calibration"
+EXAMPLES = Path(__file__).resolve().parents[2] / "src" / "frictionlab" / "data" / "examples"
+EXAMPLE_DATA = EXAMPLES / "calibration"
 
 
 def _calibration(tmp: Path, steps: str) -> Path:
     text = (EXAMPLES / "calibrate.toml").read_text()
     head, _, tail = text.partition("max_step = 5.0e-6")
-    (tmp / "shs_run12.csv").write_bytes((EXAMPLES / "shs_run12.csv").read_bytes())
+    (tmp / "shs_run12.csv").write_bytes((EXAMPLE_DATA / "shs_run12.csv").read_bytes())
     path = tmp / "calibrate.toml"
     path.write_text(head + steps + tail)
     return path

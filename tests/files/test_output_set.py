@@ -59,7 +59,7 @@ def test_a_2d_run_then_a_1d_run_leaves_no_stale_plot(tmp_path: Path) -> None:
     assert "traction_path.png" in _names(out)
     scenario.write_text(SCENARIO)
     assert main(["simulate", str(scenario), "--out", str(out), "--quiet"]) == 0
-    assert _names(out) == ["friction.png", "history.csv", "points.csv", "summary.json"]
+    assert _names(out) == ["friction.png", "history.csv", "peaks.csv", "points.csv", "summary.json"]
 
 
 def test_a_foreign_directory_is_refused_unless_overwrite(tmp_path: Path) -> None:
