@@ -490,7 +490,7 @@ def _start(
     return q if 0.0 < q < 1.0 else 0.5
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _law(p, ca, sa, surface, tear_k, ulaw, integ, rform):  # fmt: skip
     """The point's constants as a :data:`Law` (``p`` its parameter row, ``(ca, sa)`` the
     cosine and sine of its orthotropy angle; beta in principal axes)."""
@@ -503,7 +503,7 @@ def _law(p, ca, sa, surface, tear_k, ulaw, integ, rform):  # fmt: skip
                rform)  # fmt: skip
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _trial(law, dt, f1, f2, fn, fn_tr, R_old, F_old, F_rec, gap_old, du1, du2, dun):  # fmt: skip
     """Step 1, the elastic predictor, as the straight trial path of a :data:`Trial`.
 
@@ -566,7 +566,7 @@ def _trial(law, dt, f1, f2, fn, fn_tr, R_old, F_old, F_rec, gap_old, du1, du2, d
                  dt_path)  # fmt: skip
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _path_at(law, tr, s):  # fmt: skip
     """:func:`_path_ratio` at ``s`` on the trial path ``tr``."""
     return _path_ratio(s, tr.h1, tr.h2, tr.e1, tr.e2, tr.fn0, tr.dfn, law.A1, law.A2,
@@ -574,7 +574,7 @@ def _path_at(law, tr, s):  # fmt: skip
                        law.n, tr.dt_path, law.integ, law.rform)  # fmt: skip
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _starting_ratio(law, tr, reclosing, F_rec):  # fmt: skip
     """Step 3, the starting ratio: the smallest Phi/F along the trial path (partial
     unloading, T. Chang's correction; F(s) the recovery-only size over s dt), so that the
@@ -633,7 +633,7 @@ def _starting_ratio(law, tr, reclosing, F_rec):  # fmt: skip
     return Start(R_start, corrected, gR1, gR2, gRn)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _elastic(law, tr, F_rec, ca, sa, old, want_tangent):  # fmt: skip
     """Step 4's elastic outcome: the trial state, R = Phi/F (FAILED outside a closed surface)."""
     R_new = tr.phi_tr / F_rec
@@ -654,7 +654,7 @@ def _elastic(law, tr, F_rec, ca, sa, old, want_tangent):  # fmt: skip
                    R_new, 0.0)  # fmt: skip
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _residual(law, tr, q, omq, R_start, y0, s0, F_old, dt):  # fmt: skip
     """:func:`_state_at` for the trial state ``tr``: the corrector's :data:`Residual`."""
     return _state_at(q, omq, tr.fh1t, tr.fh2t, tr.fn_tr, law.A1, law.A2, law.Aref,
@@ -663,7 +663,7 @@ def _residual(law, tr, q, omq, R_start, y0, s0, F_old, dt):  # fmt: skip
                      law.rform)  # fmt: skip
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _plastic(law, tr, st, r0, F_old, F_rec, dt, ca, sa, old, want_tangent):  # fmt: skip
     """Step 5, the plastic corrector on the bracket [0, 1] in q: r(0) = r0 > 0 (the loading
     test), r(1) < 0 (checked here); then steps 6 and 7."""
@@ -717,7 +717,7 @@ def _plastic(law, tr, st, r0, F_old, F_rec, dt, ca, sa, old, want_tangent):  # f
                  tb1, tb2, tr.fn_tr, res.F, res.R, ca, sa, k)  # fmt: skip
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _solve(law, tr, q0, R_start, y0, s0, F_old, dt):  # fmt: skip
     """The local solve of step 5 from ``q0``: a :data:`Solution`.
 
@@ -795,7 +795,7 @@ def _solve(law, tr, q0, R_start, y0, s0, F_old, dt):  # fmt: skip
     return Solution(converged, it, res)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _tangent(law, tr, st, res, y0, s0, d1, d2, a1, a2, fh1, fh2, ca, sa):  # fmt: skip
     """Step 7, the consistent tangent (contact frame) by implicit differentiation of
     r(gamma; fhat^tr, f_n) = 0: a :data:`Tangent`."""
