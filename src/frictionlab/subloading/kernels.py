@@ -26,6 +26,7 @@ The normal traction never changes plastically (no plastic normal sliding, Eq 32)
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 
@@ -51,6 +52,36 @@ from frictionlab.subloading.surfaces import (
 
 # status codes
 STICK, SLIP, OPEN, FAILED = 0, 1, 2, 3
+
+# The steps of one point pass named tuples (values: no reference counting, no positional reads).
+#: The point's constants (parameter row; beta in the contact frame and, as ``b1, b2``, in
+#: principal axes; option codes).
+Law = namedtuple("Law", ["alpha_n", "alpha_t", "Fs", "Fk", "u", "kappa", "xi", "m", "n", "A1",
+                         "A2", "Aref", "beta1", "beta2", "b1", "b2", "surface", "tear_k",
+                         "ulaw", "integ", "rform"])  # fmt: skip
+#: The point's state at the start of the step (contact frame).
+Old = namedtuple("Old", ["t1", "t2", "fn", "F", "R", "gap"])
+#: Step 1: the trial state and the straight trial path (principal axes) with its derivatives.
+Trial = namedtuple("Trial", ["fn_tr", "f1t", "f2t", "fh1t", "fh2t", "w_tr", "phi_tr",
+                             "phi_tr_w", "phi_tr_fn", "et", "h1", "h2", "e1", "e2", "fn0",
+                             "dfn", "hn1", "hn2", "en1", "en2", "f0n", "dfnn", "ext1", "ext2",
+                             "R_prev", "F_path", "dt_path"])  # fmt: skip
+#: A point of the trial path: rho = Phi/F, d rho/ds, F, Phi_w, Phi_fn, w, fhat = (q1, q2).
+PathPoint = namedtuple("PathPoint", ["rho", "drho", "F", "phi_w", "phi_fn", "w", "q1", "q2"])
+#: Step 3: the starting ratio and, when corrected, its gradient in (du1, du2, dun).
+Start = namedtuple("Start", ["R_start", "corrected", "gR1", "gR2", "gRn"])
+#: Step 5: the scalar residual r(q) = Phi - R F and what the solve and the tangent use.
+Residual = namedtuple("Residual", ["r", "r_gamma", "phi_1", "phi_2", "dlam", "R", "dR", "F",
+                                   "dF", "phi_fn", "gamma", "W", "hard", "phi", "dR0",
+                                   "phi_gamma", "rf_gamma", "cond"])  # fmt: skip
+#: Step 5: the outcome of the local solve.
+Solution = namedtuple("Solution", ["converged", "iterations", "res"])
+#: Step 7: the possibly non-zero entries of the consistent tangent (contact frame).
+Tangent = namedtuple("Tangent", ["k00", "k01", "k10", "k11", "k02", "k12", "k22"])
+#: The outcome of one point (what :func:`_store` writes).
+Result = namedtuple("Result", ["status", "iterations", "t1", "t2", "tn", "F", "R", "gap",
+                               "dlam", "vp1", "vp2", "diss", "k00", "k01", "k10", "k11",
+                               "k02", "k12", "k22"])  # fmt: skip
 
 # columns of the parameter table (one row shared by all points, or one row per point)
 P_ALPHA_N, P_ALPHA_T, P_FS, P_FK, P_U, P_KAPPA, P_XI, P_M, P_N = range(9)
@@ -112,15 +143,16 @@ def _state_at(
 
     ``omq`` is 1 - q, passed separately so that q close to 1 keeps full precision.
     ``(y0, s0) = ratio_start(ulaw, R0)``, evaluated once per point by the caller.
-    Entry 14 of the tuple (dR/dR0) is left 0: the caller evaluates it after convergence.
+    Returns a :data:`Residual`; its ``dR0`` (dR/dR0) is left 0: the tangent evaluates it
+    after convergence.
     """
     if omq <= 0.0:  # limit gamma -> infinity: fhat -> 0, dlam -> |fhat^tr|/alpha_t
         dlam = _norm(fh1t, fh2t) / alpha_t
         R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
         F, dF = size_after(F0, Fs, Fk, kappa, xi, m, n, dlam, dt, integ, rform)
         phi = 0.0 if surface == COULOMB else fn * 1.0
-        return (phi - R * F, 0.0, 0.0, 0.0, dlam, R, dR, F, dF, 0.0, 0.0, 0.0, 0.0, phi,
-                0.0, 0.0, 0.0, 0.0)  # fmt: skip
+        return Residual(phi - R * F, 0.0, 0.0, 0.0, dlam, R, dR, F, dF, 0.0, 0.0, 0.0, 0.0,
+                        phi, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
     # Divisions are the kernel's most expensive arithmetic (after the math library): one
     # reciprocal per distinct denominator, and fhat_i / A_i = A_i t_i, fhat_i / A_i^2 = t_i.
     gamma = Aref * Aref * q / omq
@@ -151,8 +183,8 @@ def _state_at(
     phi_gamma = phi_1 * dfh1 + phi_2 * dfh2
     rf_gamma = hard * ddlam
     r_gamma = phi_gamma - rf_gamma
-    return (r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi, 0.0,
-            phi_gamma, rf_gamma, phi_w * w)  # fmt: skip
+    return Residual(r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi,
+                    0.0, phi_gamma, rf_gamma, phi_w * w)  # fmt: skip
 
 
 @njit(cache=True)
@@ -166,8 +198,8 @@ def _path_ratio(
 
     ``fhat(s) = h + s e``, ``f_n(s) = fn0 + s dfn``, F(s) the recovery-only size after
     ``s dt`` (``dF/ds = dt xi psi(F)``, exact for the exponential integrator; the
-    backward-Euler relation otherwise). Returns (rho, drho, F, Phi_w, Phi_fn, w, q1, q2)
-    with q = fhat(s); rho = +inf (drho = +inf) outside the domain of g.
+    backward-Euler relation otherwise). Returns a :data:`PathPoint` (fhat(s) as q);
+    rho = +inf (drho = +inf) outside the domain of g.
     """
     q1 = h1 + s * e1
     q2 = h2 + s * e2
@@ -177,7 +209,7 @@ def _path_ratio(
     F = recovered_size(F_old, Fs, Fk, xi, m, n, s * dt, integ, rform)
     dF = _path_size_slope(F, s, Fs, xi, n, dt, integ, rform)
     rho, drho = _ratio_slope(phi, phi_w, phi_fn, w, q1, q2, e1, e2, dfn, A1, A2, F, dF)
-    return rho, drho, F, phi_w, phi_fn, w, q1, q2
+    return PathPoint(rho, drho, F, phi_w, phi_fn, w, q1, q2)
 
 
 @njit(cache=True)
@@ -241,8 +273,10 @@ def _path_minimum(
             r_b = r1
             d_b = d1
         else:
-            r_b, d_b = _path_ratio(s_b, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k,
-                                   F_old, Fs, Fk, xi, m, n, dt, integ, rform)[:2]  # fmt: skip
+            at_b = _path_ratio(s_b, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k,
+                               F_old, Fs, Fk, xi, m, n, dt, integ, rform)  # fmt: skip
+            r_b = at_b.rho
+            d_b = at_b.drho
             if r_b < best:
                 best = r_b
                 best_s = s_b
@@ -256,7 +290,7 @@ def _path_minimum(
                 if not lo < s_m < hi:
                     s_m = 0.5 * (lo + hi)
                 d_m = _path_ratio(s_m, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k,
-                                  F_old, Fs, Fk, xi, m, n, dt, integ, rform)[1]  # fmt: skip
+                                  F_old, Fs, Fk, xi, m, n, dt, integ, rform).drho  # fmt: skip
                 if d_m == 0.0 or not math.isfinite(d_m):
                     break
                 if d_m < 0.0:
@@ -272,7 +306,7 @@ def _path_minimum(
                 if hi - lo <= 1e-14:
                     break
             r_m = _path_ratio(s_m, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k,
-                              F_old, Fs, Fk, xi, m, n, dt, integ, rform)[0]  # fmt: skip
+                              F_old, Fs, Fk, xi, m, n, dt, integ, rform).rho  # fmt: skip
             if r_m < best:
                 best = r_m
                 best_s = s_m
@@ -456,61 +490,31 @@ def _start(
     return q if 0.0 < q < 1.0 else 0.5
 
 
-@njit(cache=True)
-def _point(
-    dt, ca, sa, p, t1_old, t2_old, fn, F_old, R_old, gap_old, slip1, slip2, dun,
-    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
-):  # fmt: skip
-    """Advance one point by one increment (time increment ``dt`` [s]).
-
-    The readable per-point definition of the update (steps 0-7 of the module docstring);
-    :func:`step_points` and :func:`step_points_parallel` only loop over it. Scalars in,
-    scalars out: the point's old traction ``(t1_old, t2_old, fn)`` [Pa] in the contact
-    frame, its ``F_old`` [Pa], ``R_old``, ``gap_old`` [m], its slip increment ``(slip1,
-    slip2, dun)`` [m] and ``p``, its row of the parameter table as a tuple (columns
-    ``P_*``). ``(ca, sa)`` are the cosine and sine of the row's orthotropy angle (evaluated
-    once by the loops when all points share one row). No array is passed in, so that the
-    compiled loop does no reference counting per point (atomic operations that cost a
-    third of the kernel's time and serialise the threads).
-
-    Returns the tuple of :func:`_result`: status, iterations, the new traction (contact
-    frame), F, R, gap, dlam, plastic slip increment (two tangential components), plastic
-    work increment, then the seven possibly non-zero entries of the consistent tangent
-    (``k00, k01, k10, k11, k02, k12, k22``; zero when ``want_tangent`` is False).
-    """
-    alpha_n = p[P_ALPHA_N]
-    alpha_t = p[P_ALPHA_T]
-    Fs = p[P_FS]
-    Fk = p[P_FK]
-    u = p[P_U]
-    kappa = p[P_KAPPA]
-    xi = p[P_XI]
-    m = p[P_M]
-    n = p[P_N]
+@njit(cache=True, inline="always")
+def _law(p, ca, sa, surface, tear_k, ulaw, integ, rform):  # fmt: skip
+    """The point's constants as a :data:`Law` (``p`` its parameter row, ``(ca, sa)`` the
+    cosine and sine of its orthotropy angle; beta in principal axes)."""
     A1 = p[P_A1]
     A2 = p[P_A2]
-    Aref = max(A1, A2)
-    # 0. into principal axes (contact frame -> (e*_1, e*_2))
-    b1 = ca * p[P_BETA1] + sa * p[P_BETA2]
-    b2 = -sa * p[P_BETA1] + ca * p[P_BETA2]
-    f1 = ca * t1_old + sa * t2_old
-    f2 = -sa * t1_old + ca * t2_old
-    du1 = ca * slip1 + sa * slip2
-    du2 = -sa * slip1 + ca * slip2
+    return Law(p[P_ALPHA_N], p[P_ALPHA_T], p[P_FS], p[P_FK], p[P_U], p[P_KAPPA], p[P_XI],
+               p[P_M], p[P_N], A1, A2, max(A1, A2), p[P_BETA1], p[P_BETA2],
+               ca * p[P_BETA1] + sa * p[P_BETA2],
+               -sa * p[P_BETA1] + ca * p[P_BETA2], surface, tear_k, ulaw, integ,
+               rform)  # fmt: skip
 
-    # 2. recovery-only size
-    F_rec = recovered_size(F_old, Fs, Fk, xi, m, n, dt, integ, rform)
-    # 1. elastic predictor and separation: a trial normal traction that is zero to
-    #    the rounding of its own computation opens the contact
-    closing_in = alpha_n * (dun - gap_old)
-    fn_tr = fn + closing_in
-    if fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in)):
-        return _result(OPEN, 0, 0.0, 0.0, 0.0, F_old if open_frozen else F_rec, 0.0,
-                       max(-fn_tr / alpha_n, 0.0))  # fmt: skip
-    # The straight trial path in (fhat, f_n), s in [0, 1]: fhat(s) = h + s e,
-    # f_n(s) = fn0 + s dfn. Its derivatives with respect to the slip increment (for the
-    # tangent): d e / d du_t = et I, d h / d du_n = hn, d e / d du_n = en,
-    # d fn0 / d du_n = f0n, d dfn / d du_n = dfnn.
+
+@njit(cache=True, inline="always")
+def _trial(law, dt, f1, f2, fn, fn_tr, R_old, F_old, F_rec, gap_old, du1, du2, dun):  # fmt: skip
+    """Step 1, the elastic predictor, as the straight trial path of a :data:`Trial`.
+
+    fhat(s) = h + s e, f_n(s) = fn0 + s dfn, s in [0, 1] (principal axes), with the
+    derivatives the tangent needs: d e / d du_t = et I, d h / d du_n = hn, d e / d du_n = en,
+    d fn0 / d du_n = f0n, d dfn / d du_n = dfnn.
+    """
+    alpha_n = law.alpha_n
+    alpha_t = law.alpha_t
+    b1 = law.b1
+    b2 = law.b2
     if fn > 0.0:
         et = alpha_t
         f1t = f1 + alpha_t * du1
@@ -554,157 +558,190 @@ def _point(
         dt_path = 0.0
     fh1t = f1t - fn_tr * b1
     fh2t = f2t - fn_tr * b2
-    e1 = fh1t - h1
-    e2 = fh2t - h2
-    dfn = fn_tr - fn0
-    w_tr = _norm(fh1t / A1, fh2t / A2)
-    phi_tr, phi_tr_w, phi_tr_fn = potential(surface, tear_k, w_tr, fn_tr)
+    w_tr = _norm(fh1t / law.A1, fh2t / law.A2)
+    phi_tr, phi_tr_w, phi_tr_fn = potential(law.surface, law.tear_k, w_tr, fn_tr)
+    return Trial(fn_tr, f1t, f2t, fh1t, fh2t, w_tr, phi_tr, phi_tr_w, phi_tr_fn, et, h1, h2,
+                 fh1t - h1, fh2t - h2, fn0, fn_tr - fn0, hn1, hn2, en1, en2, f0n, dfnn,
+                 hn1 + en1 + alpha_n * b1, hn2 + en2 + alpha_n * b2, R_prev, F_path,
+                 dt_path)  # fmt: skip
 
-    # 3. starting ratio: the smallest Phi/F along the trial path (partial unloading,
-    #    T. Chang's correction; F(s) the recovery-only size over s dt), so that the
-    #    update is continuous in (du, dt) and equals what many small steps do.
-    R_start = R_prev
+
+@njit(cache=True, inline="always")
+def _path_at(law, tr, s):  # fmt: skip
+    """:func:`_path_ratio` at ``s`` on the trial path ``tr``."""
+    return _path_ratio(s, tr.h1, tr.h2, tr.e1, tr.e2, tr.fn0, tr.dfn, law.A1, law.A2,
+                       law.surface, law.tear_k, tr.F_path, law.Fs, law.Fk, law.xi, law.m,
+                       law.n, tr.dt_path, law.integ, law.rform)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _starting_ratio(law, tr, reclosing, F_rec):  # fmt: skip
+    """Step 3, the starting ratio: the smallest Phi/F along the trial path (partial
+    unloading, T. Chang's correction; F(s) the recovery-only size over s dt), so that the
+    update is continuous in (du, dt) and equals what many small steps do. A :data:`Start`.
+    """
+    A1 = law.A1
+    A2 = law.A2
+    R_start = tr.R_prev
     corrected = False
     gR1 = 0.0  # gradient of R_start with respect to (du1, du2, dun), principal axes
     gR2 = 0.0
     gRn = 0.0
-    w0 = _norm(h1 / A1, h2 / A2)
-    phi0, phi0_w, phi0_fn = potential(surface, tear_k, w0, fn0)
-    dF0 = _path_size_slope(F_path, 0.0, Fs, xi, n, dt_path, integ, rform)
-    r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, h1, h2, e1, e2, dfn, A1, A2,
-                            F_path, dF0)  # fmt: skip
-    dF1 = _path_size_slope(F_rec, 1.0, Fs, xi, n, dt_path, integ, rform)
-    r_1, d_1 = _ratio_slope(phi_tr, phi_tr_w, phi_tr_fn, w_tr, fh1t, fh2t, e1, e2, dfn, A1,
-                            A2, F_rec, dF1)  # fmt: skip
-    s_star = _path_minimum(h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_path,
-                           Fs, Fk, xi, m, n, dt_path, integ, rform, r_0, d_0, r_1,
-                           d_1)  # fmt: skip
+    w0 = _norm(tr.h1 / A1, tr.h2 / A2)
+    phi0, phi0_w, phi0_fn = potential(law.surface, law.tear_k, w0, tr.fn0)
+    dF0 = _path_size_slope(tr.F_path, 0.0, law.Fs, law.xi, law.n, tr.dt_path, law.integ,
+                           law.rform)  # fmt: skip
+    r_0, d_0 = _ratio_slope(phi0, phi0_w, phi0_fn, w0, tr.h1, tr.h2, tr.e1, tr.e2, tr.dfn,
+                            A1, A2, tr.F_path, dF0)  # fmt: skip
+    dF1 = _path_size_slope(F_rec, 1.0, law.Fs, law.xi, law.n, tr.dt_path, law.integ,
+                           law.rform)  # fmt: skip
+    r_1, d_1 = _ratio_slope(tr.phi_tr, tr.phi_tr_w, tr.phi_tr_fn, tr.w_tr, tr.fh1t, tr.fh2t,
+                            tr.e1, tr.e2, tr.dfn, A1, A2, F_rec, dF1)  # fmt: skip
+    s_star = _path_minimum(tr.h1, tr.h2, tr.e1, tr.e2, tr.fn0, tr.dfn, A1, A2, law.surface,
+                           law.tear_k, tr.F_path, law.Fs, law.Fk, law.xi, law.m, law.n,
+                           tr.dt_path, law.integ, law.rform, r_0, d_0, r_1, d_1)  # fmt: skip
     if s_star == 0.0:
         rho = r_0
     elif s_star == 1.0:
-        rho = r_1  # phi_tr / F_rec: the same number as the loading test below
+        rho = r_1  # phi_tr / F_rec: the same number as the loading test
     else:
         rho = math.inf
-    F_s = F_rec
-    phis_w = 0.0
-    phis_fn = 0.0
-    ws = 0.0
-    q1 = 0.0
-    q2 = 0.0
+    at = PathPoint(rho, 0.0, F_rec, 0.0, 0.0, 0.0, 0.0, 0.0)
     if 0.0 < s_star < 1.0:
-        rho, _, F_s, phis_w, phis_fn, ws, q1, q2 = _path_ratio(
-            s_star, h1, h2, e1, e2, fn0, dfn, A1, A2, surface, tear_k, F_path, Fs, Fk,
-            xi, m, n, dt_path, integ, rform,
-        )  # fmt: skip
+        at = _path_at(law, tr, s_star)
     # A re-closing path starts at the virgin point of the end-of-step normal traction: its
     # ratio rho(0) depends on du_n, and so does R_start when the minimum is at s* = 0.
-    reclosing_start = fn <= 0.0 and s_star == 0.0
+    reclosing_start = reclosing and s_star == 0.0
     if reclosing_start:
-        F_s = F_path
-        phis_w = phi0_w
-        phis_fn = phi0_fn
-        ws = w0
-        q1 = h1
-        q2 = h2
-    if rho < R_start:
-        R_start = rho
+        at = PathPoint(rho, 0.0, tr.F_path, phi0_w, phi0_fn, w0, tr.h1, tr.h2)
+    if at.rho < R_start:
+        R_start = at.rho
         if 0.0 < s_star < 1.0 or reclosing_start:
             corrected = True
             # envelope theorem: d rho(s*)/d du at fixed s* (rho'(s*) = 0, or s* = 0 held)
-            if ws > 0.0:
-                # q_i / ws first: |q_i / ws| <= A_i, while A_i^2 ws can underflow
-                u1 = q1 / ws / (A1 * A1)
-                u2 = q2 / ws / (A2 * A2)
+            if at.w > 0.0:
+                # q_i / w first: |q_i / w| <= A_i, while A_i^2 w can underflow
+                u1 = at.q1 / at.w / (A1 * A1)
+                u2 = at.q2 / at.w / (A2 * A2)
             else:
                 u1 = 0.0
                 u2 = 0.0
-            gR1 = phis_w * u1 * s_star * et / F_s
-            gR2 = phis_w * u2 * s_star * et / F_s
-            gRn = (phis_w * (u1 * (hn1 + s_star * en1) + u2 * (hn2 + s_star * en2))
-                   + phis_fn * (f0n + s_star * dfnn)) / F_s  # fmt: skip
-    ext1 = hn1 + en1 + alpha_n * b1  # d fhat^tr / d du_n beyond -alpha_n b (closing)
-    ext2 = hn2 + en2 + alpha_n * b2
+            gR1 = at.phi_w * u1 * s_star * tr.et / at.F
+            gR2 = at.phi_w * u2 * s_star * tr.et / at.F
+            gRn = (at.phi_w * (u1 * (tr.hn1 + s_star * tr.en1) + u2 * (tr.hn2 + s_star * tr.en2))
+                   + at.phi_fn * (tr.f0n + s_star * tr.dfnn)) / at.F  # fmt: skip
+    return Start(R_start, corrected, gR1, gR2, gRn)
 
-    # 4. loading test on the trial state
-    r0 = phi_tr - R_start * F_rec
-    if w_tr == 0.0 or r0 <= RTOL_RESIDUAL * F_rec:
-        R_new = phi_tr / F_rec
-        if surface != COULOMB and R_new > 1.0 + RTOL_ACCEPT:
-            # normal traction pushed the state outside a closed surface: the rate form has
-            # no tangential mechanism that could bring it back
-            return _failed(0, t1_old, t2_old, fn, F_old, R_old, gap_old, alpha_t, alpha_n,
-                           want_tangent)  # fmt: skip
-        if R_new > 1.0:
-            R_new = 1.0
-        # f_t = et du_t: d f_t / d du_n = alpha_t du_t gap / du_n^2 when closing
-        if want_tangent:
-            return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr, F_rec,
-                           R_new, 0.0, k00=et, k11=et, k02=ca * ext1 - sa * ext2,
-                           k12=sa * ext1 + ca * ext2, k22=alpha_n)  # fmt: skip
-        return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr, F_rec,
-                       R_new, 0.0)  # fmt: skip
 
-    # 5. plastic corrector on the bracket [0, 1] in q: r(0) = r0 > 0 (the loading test),
-    #    r(1) < 0 (checked below). cos/sin of pi R_start/2 once per point.
-    y0, s0 = ratio_start(ulaw, R_start)
+@njit(cache=True, inline="always")
+def _elastic(law, tr, F_rec, ca, sa, old, want_tangent):  # fmt: skip
+    """Step 4's elastic outcome: the trial state, R = Phi/F (FAILED outside a closed surface)."""
+    R_new = tr.phi_tr / F_rec
+    if law.surface != COULOMB and R_new > 1.0 + RTOL_ACCEPT:
+        # normal traction pushed the state outside a closed surface: the rate form has
+        # no tangential mechanism that could bring it back
+        return _failed(0, old, law, want_tangent)
+    if R_new > 1.0:
+        R_new = 1.0
+    f1t = tr.f1t
+    f2t = tr.f2t
+    # f_t = et du_t: d f_t / d du_n = alpha_t du_t gap / du_n^2 when closing
+    if want_tangent:
+        return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, tr.fn_tr, F_rec,
+                       R_new, 0.0, k00=tr.et, k11=tr.et, k02=ca * tr.ext1 - sa * tr.ext2,
+                       k12=sa * tr.ext1 + ca * tr.ext2, k22=law.alpha_n)  # fmt: skip
+    return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, tr.fn_tr, F_rec,
+                   R_new, 0.0)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _residual(law, tr, q, omq, R_start, y0, s0, F_old, dt):  # fmt: skip
+    """:func:`_state_at` for the trial state ``tr``: the corrector's :data:`Residual`."""
+    return _state_at(q, omq, tr.fh1t, tr.fh2t, tr.fn_tr, law.A1, law.A2, law.Aref,
+                     law.alpha_t, law.surface, law.tear_k, R_start, y0, s0, law.u, law.ulaw,
+                     F_old, law.Fs, law.Fk, law.kappa, law.xi, law.m, law.n, dt, law.integ,
+                     law.rform)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _plastic(law, tr, st, r0, F_old, F_rec, dt, ca, sa, old, want_tangent):  # fmt: skip
+    """Step 5, the plastic corrector on the bracket [0, 1] in q: r(0) = r0 > 0 (the loading
+    test), r(1) < 0 (checked here); then steps 6 and 7."""
+    R_start = st.R_start
+    y0, s0 = ratio_start(law.ulaw, R_start)  # cos/sin of pi R_start/2 once per point
     # At q = 1 (fhat = 0) Phi is 0 (cone) or f_n g(0) = f_n (closed surfaces), while
     # R F >= R_start F_k (R only grows with dlam, F never leaves [F_k, F_s]): r(1) < 0 is
     # then known without evaluating it, and the evaluation is only needed otherwise.
-    if surface == COULOMB:
+    if law.surface == COULOMB:
         need_end = not R_start > 0.0
     else:
-        need_end = not fn_tr < 0.999 * R_start * Fk
+        need_end = not tr.fn_tr < 0.999 * R_start * law.Fk
     r1 = -math.inf
     if need_end:
-        end = _state_at(1.0, 0.0, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                        R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt,
-                        integ, rform)  # fmt: skip
-        r1 = end[0]
+        end = _residual(law, tr, 1.0, 0.0, R_start, y0, s0, F_old, dt)
+        r1 = end.r
         if not r1 < 0.0:
             # Even a full return to the rotated axis (fhat = 0) cannot absorb the rise of
             # f: only possible for a closed surface loaded normally with a small tangential
             # traction. The rate form flows until fhat = 0 and is elastic afterwards (no
             # tangential mechanism left), so R = f_n g(0)/F if that is <= 1.
-            R_end = end[13] / end[7]
-            if surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
-                return _failed(0, t1_old, t2_old, fn, F_old, R_old, gap_old, alpha_t,
-                               alpha_n, want_tangent)  # fmt: skip
-            norm = _norm(fh1t, fh2t)
+            R_end = end.phi / end.F
+            if law.surface == COULOMB or R_end > 1.0 + RTOL_ACCEPT:
+                return _failed(0, old, law, want_tangent)
+            norm = _norm(tr.fh1t, tr.fh2t)
             # f_t = f_n beta: independent of du_t
-            k02 = alpha_n * p[P_BETA1] if want_tangent else 0.0
-            k12 = alpha_n * p[P_BETA2] if want_tangent else 0.0
-            return _slip(0, end[4], fn_tr * b1, fn_tr * b2, fh1t / norm, fh2t / norm, fn_tr,
-                         end[7], min(R_end, 1.0), ca, sa, 0.0, 0.0, 0.0, 0.0, k02, k12,
-                         alpha_n if want_tangent else 0.0)  # fmt: skip
-    q0 = _start(r0, r1, phi_tr, phi_tr_w, w_tr, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t,
-                surface, tear_k, R_start, y0, s0, u, ulaw, F_rec, Fk, kappa, m)  # fmt: skip
+            k02 = law.alpha_n * law.beta1 if want_tangent else 0.0
+            k12 = law.alpha_n * law.beta2 if want_tangent else 0.0
+            return _slip(0, end.dlam, tr.fn_tr * law.b1, tr.fn_tr * law.b2, tr.fh1t / norm,
+                         tr.fh2t / norm, tr.fn_tr, end.F, min(R_end, 1.0), ca, sa,
+                         Tangent(0.0, 0.0, 0.0, 0.0, k02, k12,
+                                 law.alpha_n if want_tangent else 0.0))  # fmt: skip
+    q0 = _start(r0, r1, tr.phi_tr, tr.phi_tr_w, tr.w_tr, tr.fh1t, tr.fh2t, tr.fn_tr, law.A1,
+                law.A2, law.Aref, law.alpha_t, law.surface, law.tear_k, R_start, y0, s0,
+                law.u, law.ulaw, F_rec, law.Fk, law.kappa, law.m)  # fmt: skip
     if q0 < 0.0:  # trial outside the domain of g: locate the root's half first
-        mid = _state_at(0.5, 0.5, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface,
-                        tear_k, R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt,
-                        integ, rform)[0]  # fmt: skip
+        mid = _residual(law, tr, 0.5, 0.5, R_start, y0, s0, F_old, dt).r
         q0 = 0.75 if mid > 0.0 else 0.25
-    # Unknown t in [0, 1/2]: q = t, or 1 - q = t when q lies in the upper half (switched
-    # as the iterates move), so that a return almost to the axis (q -> 1) keeps full
-    # precision.
+    sol = _solve(law, tr, q0, R_start, y0, s0, F_old, dt)
+    if not sol.converged:
+        return _failed(sol.iterations, old, law, want_tangent)
+    res = sol.res
+    d1, d2, a1, a2, fh1, fh2 = _returned(tr.fh1t, tr.fh2t, law.A1, law.A2, res.gamma)
+    # 6. update (principal axes)
+    tb1 = (tr.fh1t / d1) / res.W  # flow direction t-bar at t_{n+1}, Eqs (87), (99)
+    tb2 = (tr.fh2t / d2) / res.W
+    k = Tangent(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if want_tangent:
+        k = _tangent(law, tr, st, res, y0, s0, d1, d2, a1, a2, fh1, fh2, ca, sa)
+    return _slip(sol.iterations, res.dlam, tr.fn_tr * law.b1 + fh1, tr.fn_tr * law.b2 + fh2,
+                 tb1, tb2, tr.fn_tr, res.F, res.R, ca, sa, k)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _solve(law, tr, q0, R_start, y0, s0, F_old, dt):  # fmt: skip
+    """The local solve of step 5 from ``q0``: a :data:`Solution`.
+
+    Unknown t in [0, 1/2]: q = t, or 1 - q = t when q lies in the upper half (switched as
+    the iterates move), so that a return almost to the axis (q -> 1) keeps full precision.
+    """
     flip = q0 > 0.5
     dqdt = -1.0 if flip else 1.0
     t = 1.0 - q0 if flip else q0
     t_pos = 1.0 if flip else 0.0  # end of the bracket with r > 0 (q = 0)
     t_neg = 0.0 if flip else 1.0  # end with r < 0 (q = 1)
-    log_newton = surface != COULOMB
+    log_newton = law.surface != COULOMB
+    Aref = law.Aref
     converged = False
     it = 0
     dx = 1.0
     dx_old = 1.0
     q = 1.0 - t if flip else t
     omq = t if flip else 1.0 - t
-    res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                    R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt, integ,
-                    rform)  # fmt: skip
+    res = _residual(law, tr, q, omq, R_start, y0, s0, F_old, dt)
     while it < MAX_ITERATIONS:
         it += 1
-        r = res[0]
-        scale = max(res[7], 1e-300)
+        r = res.r
+        scale = max(res.F, 1e-300)
         if abs(r) <= RTOL_RESIDUAL * scale:
             converged = True
             break
@@ -718,7 +755,7 @@ def _point(
             # the bracket has collapsed to round-off: the residual cannot fall below
             # the rounding of Phi, ~ eps Phi_w w (large near the apex of the tear
             # or the parabola, where f_n << F; theory.md, "Accuracy")
-            cond = abs(res[17]) if math.isfinite(res[17]) else 0.0
+            cond = abs(res.cond) if math.isfinite(res.cond) else 0.0
             converged = abs(r) <= RTOL_ACCEPT * max(scale, cond)
             break
         # Newton, safeguarded as in rtsafe: bisect when the step leaves the bracket or
@@ -729,14 +766,14 @@ def _point(
         dgdt = Aref * Aref / (omq * omq) * dqdt  # d gamma / d t
         t_new = -1.0
         if log_newton:
-            phi = res[13]
-            rf = res[5] * res[7]
+            phi = res.phi
+            rf = res.R * res.F
             if phi > 0.0 and math.isfinite(phi) and rf > 0.0:
-                dlog = (res[15] / phi - res[16] / rf) * dgdt
+                dlog = (res.phi_gamma / phi - res.rf_gamma / rf) * dgdt
                 if dlog != 0.0 and math.isfinite(dlog):
                     t_new = t - math.log(phi / rf) / dlog
         else:
-            slope = res[1] * dgdt
+            slope = res.r_gamma * dgdt
             if slope != 0.0 and math.isfinite(slope) and math.isfinite(r):
                 t_new = t - r / slope
         if not (lo < t_new < hi) or abs(t_new - t) > 0.5 * abs(dx_old):
@@ -754,28 +791,27 @@ def _point(
             t_neg = 1.0 - t_neg
         q = 1.0 - t if flip else t
         omq = t if flip else 1.0 - t
-        res = _state_at(q, omq, fh1t, fh2t, fn_tr, A1, A2, Aref, alpha_t, surface, tear_k,
-                        R_start, y0, s0, u, ulaw, F_old, Fs, Fk, kappa, xi, m, n, dt, integ,
-                        rform)  # fmt: skip
-    if not converged:
-        return _failed(it, t1_old, t2_old, fn, F_old, R_old, gap_old, alpha_t, alpha_n,
-                       want_tangent)  # fmt: skip
-    (r, r_gamma, phi_1, phi_2, dlam, R, _, F, _, phi_fn, gamma, W, hard, phi, _,
-     _, _, _) = res  # fmt: skip
-    d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, A1, A2, gamma)
-    # 6. update (principal axes)
-    tb1 = (fh1t / d1) / W  # flow direction t-bar at t_{n+1}, Eqs (87), (99)
-    tb2 = (fh2t / d2) / W
-    if not want_tangent:
-        return _slip(it, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca,
-                     sa, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
-    # 7. consistent tangent: r(gamma; fhat^tr, f_n) = 0
-    #    r_fhtr_j = Phi_j a_j - hard * d(dlam)/d(fhat^tr_j)
-    ddl1 = gamma * (fh1t / (d1 * d1)) / (W * alpha_t)
-    ddl2 = gamma * (fh2t / (d2 * d2)) / (W * alpha_t)
-    c1 = (phi_1 * a1 - hard * ddl1) / r_gamma
-    c2 = (phi_2 * a2 - hard * ddl2) / r_gamma
-    cn = phi_fn / r_gamma
+        res = _residual(law, tr, q, omq, R_start, y0, s0, F_old, dt)
+    return Solution(converged, it, res)
+
+
+@njit(cache=True, inline="always")
+def _tangent(law, tr, st, res, y0, s0, d1, d2, a1, a2, fh1, fh2, ca, sa):  # fmt: skip
+    """Step 7, the consistent tangent (contact frame) by implicit differentiation of
+    r(gamma; fhat^tr, f_n) = 0: a :data:`Tangent`."""
+    alpha_n = law.alpha_n
+    b1 = law.b1
+    b2 = law.b2
+    gamma = res.gamma
+    W = res.W
+    hard = res.hard
+    r_gamma = res.r_gamma
+    # r_fhtr_j = Phi_j a_j - hard * d(dlam)/d(fhat^tr_j)
+    ddl1 = gamma * (tr.fh1t / (d1 * d1)) / (W * law.alpha_t)
+    ddl2 = gamma * (tr.fh2t / (d2 * d2)) / (W * law.alpha_t)
+    c1 = (res.phi_1 * a1 - hard * ddl1) / r_gamma
+    c2 = (res.phi_2 * a2 - hard * ddl2) / r_gamma
+    cn = res.phi_fn / r_gamma
     G1 = -fh1 / d1
     G2 = -fh2 / d2
     # d g / d fhat^tr (2x2) and d g / d f_n (explicit)
@@ -786,30 +822,80 @@ def _point(
     jn1 = b1 - G1 * cn
     jn2 = b2 - G2 * cn
     # d fhat^tr = alpha_t d du_t - beta alpha_n d du_n ; d f_n = alpha_n d du_n
+    et = tr.et
     T11 = et * j11
     T12 = et * j12
     T21 = et * j21
     T22 = et * j22
-    T1n = alpha_n * (jn1 - j11 * b1 - j12 * b2) + j11 * ext1 + j12 * ext2
-    T2n = alpha_n * (jn2 - j21 * b1 - j22 * b2) + j21 * ext1 + j22 * ext2
-    if corrected:  # R_start depends on du: r_R0 = -F dR/dR0
-        dR0 = ratio_sensitivity(ulaw, u, y0, s0, dlam, R)
-        cR = -F * dR0 / r_gamma
-        T11 -= G1 * cR * gR1
-        T12 -= G1 * cR * gR2
-        T21 -= G2 * cR * gR1
-        T22 -= G2 * cR * gR2
-        T1n -= G1 * cR * gRn
-        T2n -= G2 * cR * gRn
+    T1n = alpha_n * (jn1 - j11 * b1 - j12 * b2) + j11 * tr.ext1 + j12 * tr.ext2
+    T2n = alpha_n * (jn2 - j21 * b1 - j22 * b2) + j21 * tr.ext1 + j22 * tr.ext2
+    if st.corrected:  # R_start depends on du: r_R0 = -F dR/dR0
+        dR0 = ratio_sensitivity(law.ulaw, law.u, y0, s0, res.dlam, res.R)
+        cR = -res.F * dR0 / r_gamma
+        T11 -= G1 * cR * st.gR1
+        T12 -= G1 * cR * st.gR2
+        T21 -= G2 * cR * st.gR1
+        T22 -= G2 * cR * st.gR2
+        T1n -= G1 * cR * st.gRn
+        T2n -= G2 * cR * st.gRn
     # back to the contact frame: T_c = Q^T T_p Q, Q = [[ca, sa], [-sa, ca]]
     p11 = ca * T11 - sa * T21
     p12 = ca * T12 - sa * T22
     p21 = sa * T11 + ca * T21
     p22 = sa * T12 + ca * T22
-    return _slip(it, dlam, fn_tr * b1 + fh1, fn_tr * b2 + fh2, tb1, tb2, fn_tr, F, R, ca, sa,
-                 p11 * ca - p12 * sa, p11 * sa + p12 * ca, p21 * ca - p22 * sa,
-                 p21 * sa + p22 * ca, ca * T1n - sa * T2n, sa * T1n + ca * T2n,
-                 alpha_n)  # fmt: skip
+    return Tangent(p11 * ca - p12 * sa, p11 * sa + p12 * ca, p21 * ca - p22 * sa,
+                   p21 * sa + p22 * ca, ca * T1n - sa * T2n, sa * T1n + ca * T2n,
+                   alpha_n)  # fmt: skip
+
+
+@njit(cache=True)
+def _point(
+    dt, ca, sa, p, t1_old, t2_old, fn, F_old, R_old, gap_old, slip1, slip2, dun,
+    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+):  # fmt: skip
+    """Advance one point by one increment (time increment ``dt`` [s]).
+
+    The readable per-point definition of the update (steps 0-7 of the module docstring,
+    one named step each); :func:`step_points` and :func:`step_points_parallel` only loop
+    over it. Scalars in, scalars out: the point's old traction ``(t1_old, t2_old, fn)``
+    [Pa] in the contact frame, its ``F_old`` [Pa], ``R_old``, ``gap_old`` [m], its slip
+    increment ``(slip1, slip2, dun)`` [m] and ``p``, its row of the parameter table as a
+    tuple (columns ``P_*``). ``(ca, sa)`` are the cosine and sine of the row's orthotropy
+    angle (evaluated once by the loops when all points share one row). No array is passed
+    in, so that the compiled loop does no reference counting per point (atomic operations
+    that cost a third of the kernel's time and serialise the threads); the steps pass
+    named tuples, which are values too.
+
+    Returns a :data:`Result`: status, iterations, the new traction (contact frame), F, R,
+    gap, dlam, plastic slip increment (two tangential components), plastic work
+    increment, then the seven possibly non-zero entries of the consistent tangent
+    (``k00, k01, k10, k11, k02, k12, k22``; zero when ``want_tangent`` is False).
+    """
+    law = _law(p, ca, sa, surface, tear_k, ulaw, integ, rform)
+    old = Old(t1_old, t2_old, fn, F_old, R_old, gap_old)
+    # 0. into principal axes (contact frame -> (e*_1, e*_2))
+    f1 = ca * t1_old + sa * t2_old
+    f2 = -sa * t1_old + ca * t2_old
+    du1 = ca * slip1 + sa * slip2
+    du2 = -sa * slip1 + ca * slip2
+    # 2. recovery-only size
+    F_rec = recovered_size(F_old, law.Fs, law.Fk, law.xi, law.m, law.n, dt, integ, rform)
+    # 1. elastic predictor and separation: a trial normal traction that is zero to
+    #    the rounding of its own computation opens the contact
+    closing_in = law.alpha_n * (dun - gap_old)
+    fn_tr = fn + closing_in
+    if fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in)):
+        return _result(OPEN, 0, 0.0, 0.0, 0.0, F_old if open_frozen else F_rec, 0.0,
+                       max(-fn_tr / law.alpha_n, 0.0))  # fmt: skip
+    tr = _trial(law, dt, f1, f2, fn, fn_tr, R_old, F_old, F_rec, gap_old, du1, du2, dun)
+    # 3. starting ratio (partial unloading)
+    st = _starting_ratio(law, tr, fn <= 0.0, F_rec)
+    # 4. loading test on the trial state
+    r0 = tr.phi_tr - st.R_start * F_rec
+    if tr.w_tr == 0.0 or r0 <= RTOL_RESIDUAL * F_rec:
+        return _elastic(law, tr, F_rec, ca, sa, old, want_tangent)
+    # 5.-7. plastic corrector, update, consistent tangent
+    return _plastic(law, tr, st, r0, F_old, F_rec, dt, ca, sa, old, want_tangent)
 
 
 @njit(cache=True)
@@ -882,28 +968,28 @@ def step_points_parallel(
 @njit(cache=True)
 def _result(status, iterations, t1, t2, tn, F, R, gap, dlam=0.0, vp1=0.0, vp2=0.0, diss=0.0,
             k00=0.0, k01=0.0, k10=0.0, k11=0.0, k02=0.0, k12=0.0, k22=0.0):  # fmt: skip
-    """The result tuple of :func:`_point` (the order :func:`_store` writes)."""
-    return (status, iterations, t1, t2, tn, F, R, gap, dlam, vp1, vp2, diss,
-            k00, k01, k10, k11, k02, k12, k22)  # fmt: skip
+    """The :data:`Result` of :func:`_point`."""
+    return Result(status, iterations, t1, t2, tn, F, R, gap, dlam, vp1, vp2, diss,
+                  k00, k01, k10, k11, k02, k12, k22)  # fmt: skip
 
 
 @njit(cache=True)
-def _slip(iterations, dlam, g1, g2, tb1, tb2, fn, F, R, ca, sa,
-          k00, k01, k10, k11, k02, k12, k22):  # fmt: skip
-    """A plastic result given in principal axes: traction (g1, g2, fn), flow t-bar."""
+def _slip(iterations, dlam, g1, g2, tb1, tb2, fn, F, R, ca, sa, k):  # fmt: skip
+    """A plastic result given in principal axes: traction (g1, g2, fn), flow t-bar; the
+    :data:`Tangent` ``k`` already in the contact frame."""
     return _result(SLIP, iterations, ca * g1 - sa * g2, sa * g1 + ca * g2, fn, F, R, 0.0,
                    dlam, dlam * (ca * tb1 - sa * tb2), dlam * (sa * tb1 + ca * tb2),
-                   dlam * (g1 * tb1 + g2 * tb2), k00, k01, k10, k11, k02, k12, k22)  # fmt: skip
+                   dlam * (g1 * tb1 + g2 * tb2), k.k00, k.k01, k.k10, k.k11, k.k02, k.k12,
+                   k.k22)  # fmt: skip
 
 
 @njit(cache=True)
-def _failed(iterations, t1, t2, tn, F_old, R_old, gap_old, alpha_t, alpha_n,
-            want_tangent):  # fmt: skip
-    """A failed point keeps its old state and gets the elastic tangent (never NaN)."""
+def _failed(iterations, old, law, want_tangent):  # fmt: skip
+    """A failed point keeps its :data:`Old` state and gets the elastic tangent (never NaN)."""
     if want_tangent:
-        return _result(FAILED, iterations, t1, t2, tn, F_old, R_old, gap_old,
-                       k00=alpha_t, k11=alpha_t, k22=alpha_n)  # fmt: skip
-    return _result(FAILED, iterations, t1, t2, tn, F_old, R_old, gap_old)
+        return _result(FAILED, iterations, old.t1, old.t2, old.fn, old.F, old.R, old.gap,
+                       k00=law.alpha_t, k11=law.alpha_t, k22=law.alpha_n)  # fmt: skip
+    return _result(FAILED, iterations, old.t1, old.t2, old.fn, old.F, old.R, old.gap)
 
 
 @njit(cache=True)
@@ -917,30 +1003,30 @@ def _row(P, row):  # fmt: skip
 @njit(cache=True)
 def _store(i, res, want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
            out_diss, out_tangent, out_status, out_iter):  # fmt: skip
-    """Write the result tuple of :func:`_point` to row ``i`` of the outputs."""
-    out_status[i] = res[0]
-    out_iter[i] = res[1]
-    out_traction[i, 0] = res[2]
-    out_traction[i, 1] = res[3]
-    out_traction[i, 2] = res[4]
-    out_F[i] = res[5]
-    out_R[i] = res[6]
-    out_gap[i] = res[7]
-    out_dlam[i] = res[8]
-    out_vp[i, 0] = res[9]
-    out_vp[i, 1] = res[10]
+    """Write the :data:`Result` of :func:`_point` to row ``i`` of the outputs."""
+    out_status[i] = res.status
+    out_iter[i] = res.iterations
+    out_traction[i, 0] = res.t1
+    out_traction[i, 1] = res.t2
+    out_traction[i, 2] = res.tn
+    out_F[i] = res.F
+    out_R[i] = res.R
+    out_gap[i] = res.gap
+    out_dlam[i] = res.dlam
+    out_vp[i, 0] = res.vp1
+    out_vp[i, 1] = res.vp2
     out_vp[i, 2] = 0.0
-    out_diss[i] = res[11]
+    out_diss[i] = res.diss
     if want_tangent:
-        out_tangent[i, 0, 0] = res[12]
-        out_tangent[i, 0, 1] = res[13]
-        out_tangent[i, 1, 0] = res[14]
-        out_tangent[i, 1, 1] = res[15]
-        out_tangent[i, 0, 2] = res[16]
-        out_tangent[i, 1, 2] = res[17]
+        out_tangent[i, 0, 0] = res.k00
+        out_tangent[i, 0, 1] = res.k01
+        out_tangent[i, 1, 0] = res.k10
+        out_tangent[i, 1, 1] = res.k11
+        out_tangent[i, 0, 2] = res.k02
+        out_tangent[i, 1, 2] = res.k12
         out_tangent[i, 2, 0] = 0.0
         out_tangent[i, 2, 1] = 0.0
-        out_tangent[i, 2, 2] = res[18]
+        out_tangent[i, 2, 2] = res.k22
 
 
 def empty_outputs(n_points: int, tangent: bool = True) -> dict[str, np.ndarray]:
