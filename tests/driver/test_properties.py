@@ -142,8 +142,7 @@ def test_reclosing_programmes_stay_on_or_inside_the_surface(  # type: ignore[no-
     program = [segment for segments in episodes for segment in segments]
     params = SubloadingParams(surface=surface, alpha_n=ALPHA, alpha_t=ALPHA, F_s=F_S, F_k=F_K,
                               M=0.8, u=U, kappa=kappa, xi=xi, rotation=beta)  # fmt: skip
-    h = simulate(params, tuple(program), InitialConditions(normal_traction=0.5, F=F_K),
-                 accuracy=None)  # fmt: skip
+    h = simulate(params, tuple(program), InitialConditions(normal_traction=0.5, F=F_K))
     for arr in (h.traction, h.F, h.R):
         assert np.all(np.isfinite(arr))
     assert np.all((h.F >= F_K * (1 - 1e-12)) & (h.F <= F_S * (1 + 1e-12)))
