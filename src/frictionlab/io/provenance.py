@@ -40,7 +40,13 @@ DEPENDENCIES = (
     "matplotlib",
     "pandas",
     "SurfaceTopography",
+    "ContactMechanics",
     "scikit-fem",
+    "meshio",
+    "pyamg",
+    "pint",
+    "pyarrow",
+    "orjson",
 )
 
 _COMMAND: ContextVar[tuple[str, ...] | None] = ContextVar("frictionlab_command", default=None)
