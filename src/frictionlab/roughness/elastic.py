@@ -51,6 +51,8 @@ from frictionlab.roughness.lattice import (
     LatticeGeometry,
     check_betas,
     lattice_geometry,
+    masked_columns,
+    polar_head_columns,
 )
 from frictionlab.roughness.surface import Surface
 
@@ -413,14 +415,7 @@ class ElasticPolar:
     def columns(self) -> dict[str, np.ndarray]:
         """Per-direction columns named as the lattice polar's (NaN masked)."""
         n = self.beta_deg.size
-        out: dict[str, np.ndarray] = {
-            "beta_deg": self.beta_deg,
-            "mu_x": self.mu_x,
-            "mu_y": self.mu_y,
-            "mu": self.mu,
-        }
-        if self.mu0 > 0.0:
-            out["mu_over_mu0"] = self.mu_over_mu0
+        out = polar_head_columns(self)
         out.update(
             mu_magnitude=self.mu_magnitude,
             mu_projection=self.mu_projection,
@@ -430,10 +425,7 @@ class ElasticPolar:
         )
         if self.settings.on_invalid == "drop":
             out["invalid_fraction"] = self.invalid_fraction
-        return {
-            k: np.ma.masked_invalid(v) if v.dtype.kind == "f" and not np.all(np.isfinite(v)) else v
-            for k, v in out.items()
-        }
+        return masked_columns(out)
 
     def summary(self) -> dict[str, Any]:
         """JSON-ready contact summary (pressure, modulus, area, mean gap, solver work)."""

@@ -454,14 +454,7 @@ class FrictionPolar(TableResult):
         (``numpy.ma``), written as empty CSV fields by :mod:`frictionlab.io.tables`.
         Forces are included for a numeric load (N per spring).
         """
-        out: dict[str, np.ndarray] = {
-            "beta_deg": self.beta_deg,
-            "mu_x": self.mu_x,
-            "mu_y": self.mu_y,
-            "mu": self.mu,
-        }
-        if self.mu0 > 0.0:
-            out["mu_over_mu0"] = self.mu_over_mu0
+        out = polar_head_columns(self)
         apparent = (
             np.ma.masked_all(self.beta_deg.shape) if self.mu_apparent is None else self.mu_apparent
         )
@@ -482,10 +475,7 @@ class FrictionPolar(TableResult):
                 tensile_fraction_mean=self.tensile_fraction_mean,
                 tensile_fraction_max=self.tensile_fraction_max,
             )
-        return {
-            k: np.ma.masked_invalid(v) if v.dtype.kind == "f" and not np.all(np.isfinite(v)) else v
-            for k, v in out.items()
-        }
+        return masked_columns(out)
 
 
 def merge_polars(first: FrictionPolar, *others: FrictionPolar) -> FrictionPolar:
@@ -649,6 +639,30 @@ def _check_mu0(mu0: Any) -> float:
     if not (_finite(mu0) and float(mu0) >= 0.0):
         raise ParameterError("mu0", mu0, "a finite local friction coefficient >= 0")
     return float(mu0)
+
+
+def polar_head_columns(polar: Any) -> dict[str, np.ndarray]:
+    """The leading columns of a polar table: direction, mu components, mu, mu/mu0 (mu0 > 0).
+
+    Shared by the lattice's and the elastic model's polars (one column layout).
+    """
+    out: dict[str, np.ndarray] = {
+        "beta_deg": polar.beta_deg,
+        "mu_x": polar.mu_x,
+        "mu_y": polar.mu_y,
+        "mu": polar.mu,
+    }
+    if polar.mu0 > 0.0:
+        out["mu_over_mu0"] = polar.mu_over_mu0
+    return out
+
+
+def masked_columns(columns: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """Float columns with NaN or infinite entries masked (empty CSV fields), others as they are."""
+    return {
+        k: np.ma.masked_invalid(v) if v.dtype.kind == "f" and not np.all(np.isfinite(v)) else v
+        for k, v in columns.items()
+    }
 
 
 def check_betas(beta_deg: ArrayLike) -> FloatArray:
