@@ -28,7 +28,7 @@ Optional tables of the scenario add (see :mod:`frictionlab.schema.roughness`):
   retained: ``cutoff_m, beta_deg, mu, mu_over_mu0, valid``) and ``multiscale.png``.
 
 ``--quiet`` hides the progress bar (one step per direction), warnings and the summary
-line; ``--no-plots`` skips every PNG. With ``[sliding] on_invalid = "mask"`` contacts
+line; ``--no-plots`` skips every PNG. With ``[sliding] on_invalid = "drop"`` contacts
 violating Eq 1 are dropped and ``polar.csv`` gains ``invalid_fraction``. summary.json
 records the provenance of each surface (file name, sha256, preparation, rms height and
 slope after filtering; Hurst exponent and seed of generated ones), every direction
@@ -309,7 +309,7 @@ def _ways_forward(scenario: RoughnessScenario) -> str:
     cutoff = f" (e.g. short_cutoff = {4 * min(pixel):.3g} m, four pixels)" if pixel else ""
     return (
         "Ways forward: remove the pixel-scale slopes with short_cutoff in [lower]/[upper]"
-        f'{cutoff}, use a smaller mu0, or set on_invalid = "mask" in [sliding] to drop '
+        f'{cutoff}, use a smaller mu0, or set on_invalid = "drop" in [sliding] to drop '
         "the invalid contacts and report their area fraction"
     )
 
@@ -578,7 +578,7 @@ def _summary(
             "separation_m": s.separation,
             "phase_m": list(s.phase),
             "directions_deg": polar.beta_deg.tolist(),
-            "on_invalid": "mask" if s.on_invalid == "drop" else "error",
+            "on_invalid": s.on_invalid,
             "invalid_fraction": polar.invalid_fraction.tolist(),
         },
         "lattice": {
