@@ -63,5 +63,5 @@ def test_step_defaults_are_per_model_and_max_step_is_shared() -> None:
 
 def test_contact_takes_scalars_only() -> None:
     program = [contact.Slide(velocity=[1e-5, 2e-5], distance=1e-6)]
-    with pytest.raises(ParameterError, match="velocity .*a scalar"):
+    with pytest.raises(ParameterError, match=r"velocity .*a scalar"):
         plan_stages(NORMAL, program)
