@@ -59,7 +59,7 @@ from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
 from frictionlab.app.budget import check_roughness
 from frictionlab.errors import InputError, ParameterError, ValidityError
-from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
+from frictionlab.io.atomic import write_contents_atomic
 from frictionlab.io.config import load_toml
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
@@ -162,13 +162,7 @@ class Roughness:
             if plots:
                 files["polar.png"] = _png(scenario, result.plot_polar)
         files.update(_statistics_outputs(scenario, plots)[0])
-        written = []
-        for name, content in files.items():
-            if isinstance(content, bytes):
-                written.append(write_bytes_atomic(out / name, content))
-            else:
-                written.append(write_text_atomic(out / name, content))
-        return written
+        return write_contents_atomic(out, files)
 
     def summary(
         self, job: RoughnessJob, result: RoughnessRun, files: list[str], seconds: float

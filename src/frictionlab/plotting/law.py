@@ -284,6 +284,18 @@ def plot_spring_slider(
     return fig
 
 
+def _log_x_finish(ax: Axes, xlabel: str, ylabel: str) -> Axes:
+    """Log x axis, labels, grid, legend and readable log ticks: the end of the law's
+    log-x figures."""
+    ax.set_xscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    readable_log_ticks(ax.figure)
+    return ax
+
+
 def plot_steady_friction(
     velocity: np.ndarray,
     simulated: np.ndarray,
@@ -300,13 +312,7 @@ def plot_steady_friction(
     if bounds is not None:
         ax.axhline(bounds[0], color="0.6", ls=":", lw=1.0, label="mu_k")
         ax.axhline(bounds[1], color="0.6", ls="--", lw=1.0, label="mu_s")
-    ax.set_xscale("log")
-    ax.set_xlabel("sliding velocity V [m/s]")
-    ax.set_ylabel("steady friction ratio [-]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
-    readable_log_ticks(ax.figure)
-    return ax
+    return _log_x_finish(ax, "sliding velocity V [m/s]", "steady friction ratio [-]")
 
 
 def plot_restart_peaks(
@@ -327,13 +333,7 @@ def plot_restart_peaks(
     ax.plot(hold_time, recovered, "s", color="C0", mfc="white", label="mu at the end of the hold")
     ax.plot(hold_time, peak, "o", color="C3", label="restart peak of |f_t|/f_n")
     ax.axhline(mu_s, color="0.6", ls="--", lw=1.0, label="mu_s")
-    ax.set_xscale("log")
-    ax.set_xlabel("hold time t_h [s]")
-    ax.set_ylabel("friction ratio [-]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
-    readable_log_ticks(ax.figure)
-    return ax
+    return _log_x_finish(ax, "hold time t_h [s]", "friction ratio [-]")
 
 
 def plot_healing(
@@ -372,13 +372,7 @@ def plot_healing(
         t = np.geomspace(hold_time[hold_time > 0].min() / 3, hold_time.max() * 3, 80)
         ax.plot(t, a - (a - mu_0) * np.exp(-t / tau) - before, "--", color="C0", lw=1.2,
                 label=f"law's recovery form: tau = {tau:.3g} s")  # fmt: skip
-    ax.set_xscale("log")
-    ax.set_xlabel("hold time t_h [s]")
-    ax.set_ylabel("delta mu = restart peak - friction before [-]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
-    readable_log_ticks(ax.figure)
-    return ax
+    return _log_x_finish(ax, "hold time t_h [s]", "delta mu = restart peak - friction before [-]")
 
 
 def plot_ratcheting(
