@@ -277,17 +277,13 @@ ADHESION = Section("adhesion", (
     _BETA,
     Field("compare_without_adhesion", BOOL, "also run without tensile springs", "", True),
 ), "load sweep with tensile springs (Eqs 21-22)", "[adhesion]")  # fmt: skip
-_W: dict[str, Any] = {"default": REQUIRED, "low": 0.0, "open": "low"}
+_W: dict[str, Any] = {"default": REQUIRED, "by": WearSettings}  # > 0: WearSettings checks
 WEAR = Section("wear", (
-    Field("wear_coefficient", NUMBER, "Archard K", "-", allowed="a positive number "
-          "(dimensionless)", **_W),
-    Field("hardness", NUMBER, "hardness", "Pa", allowed="a positive number (Pa)", **_W),
-    Field("normal_load", NUMBER, "force on the nominal area", "N",
-          allowed="a positive number (N)", **_W),
-    Field("velocity", NUMBER, "sliding velocity", "m/s", allowed="a positive number (m/s)",
-          **_W),
-    Field("nominal_area", NUMBER, "nominal contact area", "m^2",
-          allowed="a positive number (m^2)", **_W),
+    Field("wear_coefficient", NUMBER, "Archard K", "-", **_W),
+    Field("hardness", NUMBER, "hardness", "Pa", **_W),
+    Field("normal_load", NUMBER, "force on the nominal area", "N", **_W),
+    Field("velocity", NUMBER, "sliding velocity", "m/s", **_W),
+    Field("nominal_area", NUMBER, "nominal contact area", "m^2", **_W),
     Field("surfaces", STRING, "which surfaces wear", "", "both", choices=WEAR_SURFACES),
     Field("samples", INTEGER, "times from 0 to T_w", "", 21, low=2),
     Field("method", STRING, "how the worn polar is computed", "", "auto", choices=WEAR_METHODS),
