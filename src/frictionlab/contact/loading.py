@@ -207,37 +207,30 @@ def plan_stages(normal: NormalLoad, program: Sequence[Segment]) -> tuple[str, li
     last_speed = 0.0
     direction = 0.0  # the current sliding direction [deg]
     for i, seg in enumerate(program):
-        if isinstance(seg, Slide):
-            speed = _scalar(seg, "velocity") or 0.0
-            distance = _scalar(seg, "distance") or speed * (_scalar(seg, "duration") or 0.0)
-            given = _scalar(seg, "direction_deg")
-            direction = direction if given is None else given
-            step = distance * _unit(direction)
-            stages.append(
-                Stage("slide", control, value, value + step, distance / speed,
-                      _step_count(seg, distance))
-            )  # fmt: skip
-            value = value + step
-            last_step, last_speed = step, speed
-        elif isinstance(seg, Reverse):
-            if last_step is None:
-                raise ParameterError(
-                    f"program[{i + 1}].kind", "reverse", "a reverse after at least one slide"
+        if isinstance(seg, Slide | Reverse):
+            if isinstance(seg, Slide):
+                speed = _scalar(seg, "velocity") or 0.0
+                distance = _scalar(seg, "distance") or speed * (_scalar(seg, "duration") or 0.0)
+                given = _scalar(seg, "direction_deg")
+                direction = direction if given is None else given
+                step = distance * _unit(direction)
+            else:
+                if last_step is None:
+                    raise ParameterError(
+                        f"program[{i + 1}].kind", "reverse", "a reverse after at least one slide"
+                    )
+                speed = _scalar(seg, "velocity") or last_speed
+                length = float(np.hypot(*last_step))
+                duration = _scalar(seg, "duration")
+                distance = _scalar(seg, "distance") or (
+                    length if duration is None else speed * duration
                 )
-            speed = _scalar(seg, "velocity") or last_speed
-            length = float(np.hypot(*last_step))
-            duration = _scalar(seg, "duration")
-            distance = _scalar(seg, "distance") or (
-                length if duration is None else speed * duration
-            )
-            step = -last_step * (distance / length)
-            direction += 180.0
-            stages.append(
-                Stage("reverse", control, value, value + step, distance / speed,
-                      _step_count(seg, distance))
-            )  # fmt: skip
-            value = value + step
-            last_step, last_speed = step, speed
+                step = -last_step * (distance / length)
+                direction += 180.0
+            end = value + step
+            steps = _step_count(seg, distance)
+            stages.append(Stage(seg.kind, control, value, end, distance / speed, steps))
+            value, last_step, last_speed = end, step, speed
         elif isinstance(seg, Hold):
             duration = _scalar(seg, "duration") or 0.0
             stages.append(
