@@ -115,6 +115,21 @@ def _note_subset(ax: Axes, n: int, shown: np.ndarray) -> bool:
     return True
 
 
+def _point_styles(
+    fig: Figure, axes: list[Axes], note_ax: Axes, history: Any, labels: Sequence[str]
+) -> tuple[list[str | None], list[Any], np.ndarray, bool]:
+    """Legend names, colours and the points shown of a per-point figure; notes a subset on
+    ``note_ax`` and adds the point-number colour bar to ``axes`` (many points)."""
+    n = history.n_points
+    names = _labels(labels, n)
+    colors = _colors(n, history.point_numbers)
+    shown_idx = shown_points(n)
+    names = _legend_names(names, shown_idx)
+    subset = _note_subset(note_ax, n, shown_idx)
+    _point_colorbar(fig, axes, history.point_numbers, shown_idx)
+    return names, colors, shown_idx, subset
+
+
 def _log_time(t: np.ndarray) -> bool:
     """A logarithmic time axis when the run spans many decades (long holds, slow slides)."""
     positive = t[t > 0]
@@ -134,7 +149,6 @@ def plot_friction(
         fig, (ax_s, ax_t) = new_figure(2, 5.5, 4.0)
     else:
         ax_s, ax_t = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
-    n = history.n_points
     planar = history.is_planar
     fn = history.traction[..., 2]
     ratio = (
@@ -143,13 +157,8 @@ def plot_friction(
         else history.friction_ratio
     )
     x = history.slip[..., 0] if planar else history.path_length
-    names = _labels(labels, n)
-    colors = _colors(n, history.point_numbers)
     log_time = _log_time(history.time)
-    shown_idx = shown_points(n)
-    names = _legend_names(names, shown_idx)
-    subset = _note_subset(ax_t, n, shown_idx)
-    _point_colorbar(fig, [ax_s, ax_t], history.point_numbers, shown_idx)
+    names, colors, shown_idx, subset = _point_styles(fig, [ax_s, ax_t], ax_t, history, labels)
     for i in shown_idx:
         ax_s.plot(x[:, i], ratio[:, i], color=colors[i], lw=1.2, label=names[i])
         shown = history.time[:, i] > 0 if log_time else slice(None)
@@ -260,13 +269,8 @@ def plot_spring_slider(
     load = history.extra["load_point"]
     speed = history.extra["velocity"]
     V = np.asarray(history.segments[0].resolved["velocity"]) if history.segments else np.ones(n)
-    names = _labels(labels, n)
-    colors = _colors(n, history.point_numbers)
     ratio = history.friction_ratio
-    shown_idx = shown_points(n)
-    names = _legend_names(names, shown_idx)
-    subset = _note_subset(ax_f, n, shown_idx)
-    _point_colorbar(fig, [ax_f, ax_v], history.point_numbers, shown_idx)
+    names, colors, shown_idx, subset = _point_styles(fig, [ax_f, ax_v], ax_f, history, labels)
     for i in shown_idx:
         ax_f.plot(load[:, i], ratio[:, i], color=colors[i], lw=1.0, label=names[i])
         rel = np.abs(speed[:, i]) / (V[i] if V[i] > 0 else 1.0)
