@@ -261,12 +261,13 @@ OUTPUT = Section("output", (
           open="low", allowed="0 < step <= 90"),
     Field("statistics", BOOL, "write the sampled surfaces' statistics (CSV, PNG)", "", False),
 ), "figures", "[output]")  # fmt: skip
+_E: dict[str, Any] = {"by": ElasticSettings}  # > 0 (hardness > pressure): ElasticSettings checks
 CONTACT = Section("contact", (
     Field("model", STRING, "load distribution: the paper's springs or an elastic half-space",
           "", "lattice", choices=CONTACT_MODELS),
-    Field("pressure", NUMBER, "nominal mean pressure (model = elastic)", "Pa", None, **_POS),
-    Field("modulus", NUMBER, "effective contact modulus E*", "Pa", None, **_POS),
-    Field("hardness", NUMBER, "optional cap on the local pressure", "Pa", None, **_POS),
+    Field("pressure", NUMBER, "nominal mean pressure (model = elastic)", "Pa", None, **_E),
+    Field("modulus", NUMBER, "effective contact modulus E*", "Pa", None, **_E),
+    Field("hardness", NUMBER, "optional cap on the local pressure", "Pa", None, **_E),
 ), "the load distribution (roughness.elastic)", "[contact]")  # fmt: skip
 ADHESION = Section("adhesion", (
     Field("loads", LOADS, "loads per spring: a list or {start, stop, count}", "N", REQUIRED),
