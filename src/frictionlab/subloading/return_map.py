@@ -289,28 +289,21 @@ def _solve(
         )
     except ArithmeticError:  # a division by an underflowed value (f_n ~ 1e-300): no result
         _keep_old_state(state, buffers)
-    if not views:
+    if views:  # the caller's buffers are reused: the state views them
+        slip = np.add(state.plastic_slip, buffers["dlam"], out=buffers["plastic_slip"])
+    else:
         slip = state.plastic_slip + buffers["dlam"]
-        new_state = ContactState._trusted(
-            traction=buffers["traction"],
-            F=buffers["F"],
-            R=buffers["R"],
-            plastic_slip=slip,
-            gap=buffers["gap"],
-            frame=state.frame,
-        )
+    new_state = (ContactState._views if views else ContactState._trusted)(
+        traction=buffers["traction"],
+        F=buffers["F"],
+        R=buffers["R"],
+        plastic_slip=slip,
+        gap=buffers["gap"],
+        frame=state.frame,
+    )
+    if not views:
         for key in ("traction", "tangent", "vp", "dlam", "diss", "status", "iterations"):
             buffers[key].setflags(write=False)
-    else:
-        slip = np.add(state.plastic_slip, buffers["dlam"], out=buffers["plastic_slip"])
-        new_state = ContactState._views(
-            traction=buffers["traction"],
-            F=buffers["F"],
-            R=buffers["R"],
-            plastic_slip=slip,
-            gap=buffers["gap"],
-            frame=state.frame,
-        )
     return StepResult(
         state=new_state,
         traction=new_state.traction,
