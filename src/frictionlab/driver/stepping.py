@@ -193,7 +193,8 @@ class SlipSteps:
         self.settings = {shared: kernel_settings(params, shared, False) for shared in (True, False)}
         self.outputs = tuple(kernel_outputs(s) for s in pool.sets)
         self.views: list[ContactState | None] = [None, None]
-        self._inputs: tuple[ContactState | None, tuple[np.ndarray, ...]] = (None, ())
+        # the kernel's inputs per state (the state first, to check the id)
+        self._inputs: dict[int, tuple[Any, ...]] = {}
 
     def step(self, state: ContactState, control: Control) -> tuple[ContactState, np.ndarray] | None:
         """The new state and the (read-only) slip increment; None when a point failed.
@@ -203,17 +204,23 @@ class SlipSteps:
         """
         sets = self.pool.sets
         j = 1 if state.traction is sets[0]["traction"] else 0
-        held, inputs = self._inputs
-        if held is not state:
-            inputs = kernel_inputs(state)
-            self._inputs = (state, inputs)
+        inputs = self._inputs.get(id(state))
+        if inputs is None or inputs[0] is not state:
+            if len(self._inputs) > 2:  # the two views and the latest other state
+                self._inputs = {
+                    id(v): self._inputs[id(v)] for v in self.views if id(v) in self._inputs
+                }
+            inputs = (state, *kernel_inputs(state))
+            self._inputs[id(state)] = inputs
         kernel_du, du = control._slip_increment(state.traction.shape[0])
         dt = control.dt
         if dt.dtype != np.float64 or dt.ndim != 1 or not dt.flags.c_contiguous:
             dt = np.ascontiguousarray(np.atleast_1d(dt), dtype=np.float64)
         out = sets[j]
         try:
-            self.kernel(*inputs, kernel_du, dt, *self.settings[dt.shape[0] == 1], *self.outputs[j])
+            self.kernel(
+                *inputs[1:], kernel_du, dt, *self.settings[dt.shape[0] == 1], *self.outputs[j]
+            )
         except ArithmeticError:  # as update(): no result, a failed step
             _keep_old_state(state, out)
             return None
