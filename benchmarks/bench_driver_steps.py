@@ -100,9 +100,7 @@ def _calibrate(pkg: str, example: Path) -> tuple[float, dict[str, np.ndarray]]:
 
 
 def _compare(label: str, a: dict[str, Any], b: dict[str, Any]) -> bool:
-    same = a.keys() == b.keys() and all(
-        np.array_equal(a[k], b[k], equal_nan=True) for k in a
-    )
+    same = a.keys() == b.keys() and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a)
     print(f"  {label}: outputs {'identical' if same else 'DIFFER'}")
     return same
 

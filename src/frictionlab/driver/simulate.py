@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab.driver import stepping
 from frictionlab.driver.extrema import (
     DEFAULT_PEAK_ACCURACY,
     PeakTracker,
@@ -39,7 +40,7 @@ from frictionlab.driver.program import (
     program_points,
 )
 from frictionlab.driver.recorder import Recorder, Recording, RunStats, SegmentStats
-from frictionlab.driver.stepping import OutputPool, SlipSteps, StepWork, advance
+from frictionlab.driver.stepping import OutputPool, StepWork, advance
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import (
     ContactState,
@@ -509,7 +510,7 @@ def simulate(
     )  # fmt: skip
     success, message = True, f"completed {len(plans)} segments"
     pool = OutputPool(n)
-    slip_steps = SlipSteps(params, pool) if accuracy is None else None
+    direct = stepping.slip_steps(params, pool, accuracy)
     tracker = None if peak_accuracy is None else PeakTracker(n)
     refined: list[RefinedPeaks] = []
     for index, plan in enumerate(plans, start=1):
@@ -527,8 +528,8 @@ def simulate(
         for k in range(steps):
             control = plan.control(k)
             quick = None
-            if slip_steps is not None and control.ft_target is None and control.fn_target is None:
-                quick = slip_steps.step(state, control)
+            if direct is not None and control.ft_target is None and control.fn_target is None:
+                quick = direct.step(state, control)
             if quick is not None:  # one solve, no substeps: advance's result, cheaper
                 before, (state, du) = state, quick
                 out = pool.sets[0] if state.traction is pool.sets[0]["traction"] else pool.sets[1]

@@ -44,6 +44,7 @@ __all__ = [
     "StepWork",
     "advance",
     "combine_attempts",
+    "slip_steps",
     "solve_control",
     "step_error",
     "substep",
@@ -238,6 +239,16 @@ class SlipSteps:
             )  # fmt: skip
             self.views[j] = view
         return view, du
+
+
+def slip_steps(
+    params: SubloadingParams, pool: OutputPool, accuracy: float | None
+) -> SlipSteps | None:
+    """:class:`SlipSteps` where they give :func:`advance`'s result: no accuracy control and
+    the law's own ``update`` (not a replacement of it, e.g. a test's); else None."""
+    if accuracy is not None or update is not _LAW_UPDATE:
+        return None
+    return SlipSteps(params, pool)
 
 
 class _LawStep:
