@@ -1,10 +1,10 @@
 """Sweep workers never compile: the sweep warms the compile cache before its pool starts.
 
-The sweep runs in a fresh process on a copy of this process's compile cache from which the
-driver's kernels (driver/_running.py) were removed. A listener on numba's ``numba:compile``
+The sweep runs in a fresh process on a copy of this process's compile cache from which one
+kernel every simulate uses (the driver's ``slip_lengths``, quick to compile) was removed. A listener on numba's ``numba:compile``
 event (it fires for a real compilation only, not for a load from the cache) is installed in
 the sweep's process and, through the spawned workers' import of the main script, in every
-worker; each compilation is logged with its process id. The driver's kernels must be
+worker; each compilation is logged with its process id. That kernel must be
 compiled by the sweep's own process and nothing by a worker.
 """
 
@@ -54,18 +54,18 @@ def test_sweep_workers_find_every_kernel_compiled(tmp_path: Path) -> None:
     root = tmp_path / "cache"
     copy = root / cache.name
     shutil.copytree(cache, copy, ignore=shutil.ignore_patterns(".frictionlab-in-use"))
-    removed = [p for p in copy.rglob("_running.*") if p.suffix in (".nbi", ".nbc")]
-    assert removed  # the driver's kernels now need compiling
+    removed = [p for p in copy.rglob("_running.slip_lengths-*") if p.suffix in (".nbi", ".nbc")]
+    assert removed  # this kernel now needs compiling
     for path in removed:
         path.unlink()
-    sweep = write_sweep(tmp_path, '[grid]\n"law.mu_s" = [0.5, 0.6]\n', steps=5)
+    sweep = write_sweep(tmp_path, '[grid]\n"law.mu_s" = [0.5]\n', steps=5)
     (tmp_path / "driver.py").write_text(DRIVER)
     log = tmp_path / "compiled.log"
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
     env.update(FRICTIONLAB_CACHE_DIR=str(root), SPY_LOG=str(log))
     done = subprocess.run(
         [sys.executable, str(tmp_path / "driver.py"), "sweep", str(sweep), "--out",
-         str(tmp_path / "out"), "--workers", "2", "--no-plots", "--quiet"],
+         str(tmp_path / "out"), "--workers", "1", "--no-plots", "--quiet"],
         env=env, cwd=tmp_path, capture_output=True, text=True, timeout=600,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
@@ -73,5 +73,5 @@ def test_sweep_workers_find_every_kernel_compiled(tmp_path: Path) -> None:
     events = [line.split(" ", 1) for line in log.read_text().splitlines()]
     by_workers = [name for pid, name in events if pid != parent]
     assert by_workers == [], by_workers
-    assert any(name.endswith("accumulate_row") for pid, name in events if pid == parent)
-    assert len(list((tmp_path / "out" / "cases").iterdir())) == 2
+    assert any(name.endswith("slip_lengths") for pid, name in events if pid == parent)
+    assert len(list((tmp_path / "out" / "cases").iterdir())) == 1
