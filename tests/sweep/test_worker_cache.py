@@ -1,11 +1,11 @@
 """Sweep workers never compile: the sweep warms the compile cache before its pool starts.
 
 The sweep runs in a fresh process on a copy of this process's compile cache from which one
-kernel every simulate uses (the driver's ``slip_lengths``, quick to compile) was removed. A listener on numba's ``numba:compile``
-event (it fires for a real compilation only, not for a load from the cache) is installed in
-the sweep's process and, through the spawned workers' import of the main script, in every
-worker; each compilation is logged with its process id. That kernel must be
-compiled by the sweep's own process and nothing by a worker.
+kernel every simulate uses (the driver's ``slip_lengths``, quick to compile) was removed.
+A listener on numba's ``numba:compile`` event (it fires for a real compilation only, not
+for a load from the cache) is installed in the sweep's process and, through the spawned
+workers' import of the main script, in every worker; each compilation is logged with its
+process id. That kernel must be compiled by the sweep's own process, nothing by a worker.
 """
 
 from __future__ import annotations
