@@ -15,6 +15,7 @@ import shutil
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -75,3 +76,24 @@ def test_sweep_workers_find_every_kernel_compiled(tmp_path: Path) -> None:
     assert by_workers == [], by_workers
     assert any(name.endswith("slip_lengths") for pid, name in events if pid == parent)
     assert len(list((tmp_path / "out" / "cases").iterdir())) == 1
+
+
+def test_a_sweep_warms_the_kernels_of_its_cases_before_its_workers_start(
+    tmp_path: Any, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from frictionlab import warmup as warmup_module
+    from frictionlab.app import sweep as sweep_app
+    from frictionlab.cli import main
+
+    events: list[tuple[str, Any]] = []
+    monkeypatch.setattr(warmup_module, "warm_for", lambda command, points=(): events.append(
+        ("warm", (command, list(points)))))  # fmt: skip
+
+    def run_tasks(tasks: Any, scheduler: Any, workers: Any) -> Any:
+        events.append(("pool", len(tasks)))
+        return iter(())
+
+    monkeypatch.setattr(sweep_app, "run_tasks", run_tasks)
+    sweep = write_sweep(tmp_path, '[grid]\n"law.mu_s" = [0.5, 0.6]\n', steps=5)
+    main(["sweep", str(sweep), "--out", str(tmp_path / "out"), "--no-plots", "--quiet"])
+    assert events == [("warm", ("simulate", [1, 1])), ("pool", 2)]
