@@ -188,7 +188,7 @@ class SlipSteps:
     def __init__(self, params: SubloadingParams, pool: OutputPool) -> None:
         n = pool.sets[0]["traction"].shape[0]
         self.pool = pool
-        self.kernel = (
+        self.kernel: Callable[..., Any] = (
             kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
         )
         self.settings = {shared: kernel_settings(params, shared, False) for shared in (True, False)}

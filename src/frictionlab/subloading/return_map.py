@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import enum
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -258,7 +259,9 @@ def _solve(
     """Run the kernel on checked inputs; the result over ``buffers`` (``views``: left
     writeable, the caller's buffers; otherwise made read-only)."""
     n = state.n_points
-    kernel = kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
+    kernel: Callable[..., Any] = (
+        kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
+    )
     try:
         kernel(
             *kernel_inputs(state),
