@@ -156,7 +156,10 @@ def _files(
 def discretise_scenario(scenario: ContactScenario) -> Discretisation:
     """The scenario's mesh: its [mesh] file assembled, or its [block] meshed."""
     if scenario.mesh is not None:
-        return scenario.mesh.discretise(scenario.block)
+        from frictionlab.schema.contact import mesh_keys
+
+        mesh = scenario.mesh
+        return mesh_keys(lambda: mesh.discretise(scenario.block))  # type: ignore[no-any-return]
     from frictionlab.contact import discretise
 
     return discretise(scenario.block)

@@ -45,7 +45,9 @@ from frictionlab.schema.core import (
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
-__all__ = ["CONTACT_FILE", "ContactScenario", "load_contact", "parse_contact"]
+__all__ = [
+    "CONTACT_FILE", "ContactScenario", "load_contact", "mesh_keys", "parse_contact",
+]  # fmt: skip
 
 _R: dict[str, Any] = {"by": Refinement}
 REFINEMENT = Section("refinement", (
@@ -220,7 +222,7 @@ def _block(t: Any, mesh: MeshSource | None = None) -> tuple[Block, dict[str, Any
                 f"[block].{given[0]} is set by [mesh].file: with [mesh], [block] reads E, nu "
                 "and integration only"
             )
-        block = _mesh_keys(lambda: mesh_block(
+        block = mesh_keys(lambda: mesh_block(
             mesh.mesh, E=echo["E"], nu=echo["nu"], integration=echo["integration"]))  # fmt: skip
         return block, {k: echo[k] for k in ("E", "nu", "integration")}
     for key in _BOX_KEYS:
@@ -237,7 +239,7 @@ def _block(t: Any, mesh: MeshSource | None = None) -> tuple[Block, dict[str, Any
     return reraise("[block]", lambda: Block(**values)), echo
 
 
-def _mesh_keys(call: Any) -> Any:
+def mesh_keys(call: Any) -> Any:
     """Run ``call``; name a ParameterError's key as [mesh].key (mesh.*) or [block].key."""
     try:
         return call()
@@ -255,7 +257,7 @@ def _mesh(data: Any, base_dir: Path) -> tuple[MeshSource, dict[str, Any]]:
         mesh = read_mesh(path)
     except InputError as exc:
         raise InputError(f"[mesh].file = {echo['file']!r}: {exc}") from None
-    source = _mesh_keys(lambda: MeshSource.of(
+    source = mesh_keys(lambda: MeshSource.of(
         str(path), mesh, echo["contact"], echo["loaded"], echo["fixed"]))  # fmt: skip
     return source, echo
 
