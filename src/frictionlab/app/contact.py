@@ -159,7 +159,7 @@ def discretise_scenario(scenario: ContactScenario) -> Discretisation:
         from frictionlab.schema.contact import mesh_keys
 
         mesh = scenario.mesh
-        return mesh_keys(lambda: mesh.discretise(scenario.block))  # type: ignore[no-any-return]
+        return mesh_keys(lambda: mesh.discretise(scenario.block))
     from frictionlab.contact import discretise
 
     return discretise(scenario.block)
