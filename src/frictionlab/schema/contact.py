@@ -145,7 +145,7 @@ _PAIR = listed(float, "number", 2)
 LAW_TABLE = Section("law_table", tuple(
     Field(key, STRING, f"CSV file of {key} along the interface: columns x [m] (2-D) or x, y "
           f"[m] (3-D) and {key}; linearly interpolated onto the contact points")
-    for key in (*FIELD_KEYS[:-1], "orthotropy_angle_deg")
+    for key in (*FIELD_KEYS, "orthotropy_angle_deg")
 ), "law parameters varying along the interface, from tables (applied before the "
    "regions)", "[law_table]")  # fmt: skip
 LAW_REGION = Section("law_region", (
@@ -155,8 +155,8 @@ LAW_REGION = Section("law_region", (
     Field("bridge", STRING, "a `frictionlab bridge` fitted_law.toml: its anisotropy "
           "(rotation, orthotropy, orthotropy angle) in this region", "", None),
     *(dataclasses.replace(LAW[key], kind=_PAIR if LAW[key].kind is PAIRS else NUMBER,
-                          per_point=False)
-      for key in (*FIELD_KEYS[:-1], "orthotropy_angle_deg", *PAIR_KEYS)),
+                          per_point=False, default=None)  # default: the [law]'s value
+      for key in (*FIELD_KEYS, "orthotropy_angle_deg", *PAIR_KEYS)),
 ), "a part of the interface with its own law values (later regions override earlier "
    "ones; keys given here override the bridge's)", "[[law_region]]", ref=True)  # fmt: skip
 CONTACT_FILE = Section("contact", (
@@ -272,6 +272,9 @@ def _check_field(where: str, params: SubloadingParams, values: dict[str, Any]) -
 
 def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -> list[LawTable]:
     given = LAW_TABLE.read(data, "[law_table]", only_given=True)
+    if "orthotropy_angle" in given and "orthotropy_angle_deg" in given:
+        raise InputError("[law_table]: give orthotropy_angle (rad) or orthotropy_angle_deg "
+                         "(deg), not both")  # fmt: skip
     axes = ("x",) if dim == 2 else ("x", "y")
     out = []
     for key, name in given.items():
