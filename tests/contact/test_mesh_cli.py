@@ -11,6 +11,7 @@ import pytest
 
 from frictionlab.app.contact import discretise_scenario
 from frictionlab.cli import main
+from frictionlab.errors import ParameterError
 from frictionlab.io.tables import read_csv
 from frictionlab.schema.contact import load_contact
 
@@ -132,3 +133,26 @@ def test_bad_mesh_input_is_one_line_exit_2(
 
     assert re.search(message, err.removeprefix("frictionlab: error: ")), err
     assert not out.exists() or not any(out.iterdir())
+
+
+def test_law_region_by_mesh_group(tmp_path: Path) -> None:
+    """A region given by a node set of the contact face holds the points of its facets."""
+    from frictionlab.app.contact import scenario_law
+
+    points, quads, bottom, top = _grid()
+    half = np.unique(bottom[: NX // 2])  # the nodes of the left half of the contact face
+    mesh = meshio.Mesh(points[:, :2], [("quad", quads)], point_sets={
+        "BASE": np.unique(bottom), "TOP": np.unique(top), "SOFT": half})  # fmt: skip
+    meshio.write(tmp_path / "block.inp", mesh, file_format="abaqus")
+    text = SCENARIO.replace("block.msh", "block.inp").replace('"contact"', '"BASE"')
+    region = '\n[[law_region]]\ngroup = "SOFT"\nmu_s = 0.3\nmu_k = 0.3\n'
+    text = text.replace('"top"', '"TOP"') + region
+    (tmp_path / "run.toml").write_text(text)
+    scenario = load_contact(tmp_path / "run.toml")
+    disc = discretise_scenario(scenario)
+    law = scenario_law(scenario, disc)
+    x = disc.contact_xy[:, 0]
+    np.testing.assert_array_equal(law.mu_s, np.where(x < 0.05, 0.3, 0.6))
+    np.testing.assert_array_equal(law.mu_k, np.where(x < 0.05, 0.3, 0.4))
+    with pytest.raises(ParameterError, match=r"#1.group = 'HARD' .* BASE, SOFT, TOP"):
+        load_contact(tmp_path / "run.toml", ["law_region.1.group='HARD'"])

@@ -172,7 +172,13 @@ def scenario_law(scenario: ContactScenario, disc: Discretisation) -> Any:
     from frictionlab.errors import InputError, ParameterError
 
     try:
-        return scenario.law_field.resolve(scenario.params, disc.contact_xy)  # type: ignore[arg-type]
+        mesh = scenario.mesh
+        groups = {
+            r.group: mesh.points_in(r.group, disc)
+            for r in scenario.law_field.regions
+            if r.group is not None and mesh is not None
+        }
+        return scenario.law_field.resolve(scenario.params, disc.contact_xy, groups)  # type: ignore[arg-type]
     except ParameterError as exc:  # a table short of the face, a mix no point can take
         if exc.field.startswith("["):
             raise InputError(str(exc)) from None

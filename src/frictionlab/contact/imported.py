@@ -26,7 +26,9 @@ from frictionlab.contact.block import Block
 from frictionlab.contact.mesh import Discretisation, assemble
 from frictionlab.errors import ParameterError
 
-__all__ = ["MESH_CELLS", "MeshSource", "discretise_mesh", "group_nodes", "mesh_block"]
+__all__ = [
+    "MESH_CELLS", "MeshSource", "discretise_mesh", "group_nodes", "mesh_block", "points_on_nodes",
+]  # fmt: skip
 
 #: meshio cell types of the volume elements, and the element family of each.
 MESH_CELLS = {"quad": "quad", "triangle": "triangle", "hexahedron": "hex"}
@@ -198,3 +200,33 @@ class MeshSource:
             self.mesh, E=block.E, nu=block.nu, contact=self.contact, loaded=self.loaded,
             fixed=self.fixed, integration=block.integration,
         )  # fmt: skip
+
+    def check_group(self, name: str) -> None:
+        """Raise ParameterError (listing the groups present) unless ``name`` is a group."""
+        group_nodes(self.mesh, name, "group")
+
+    def points_in(self, name: str, disc: Discretisation) -> np.ndarray:
+        """(P,) True at the contact points of ``disc`` (assembled from this mesh) whose facet
+        has all its nodes in the group ``name``."""
+        _, _, used = _volume(self.mesh)
+        nodes = group_nodes(self.mesh, name, "law_region.group")
+        nodes = np.searchsorted(used, nodes[np.isin(nodes, used)])  # the assembled numbering
+        return points_on_nodes(disc, nodes)
+
+
+def points_on_nodes(disc: Discretisation, nodes: np.ndarray) -> np.ndarray:
+    """(P,) True at the contact points whose facet's nodes all belong to ``nodes``.
+
+    A point's facet nodes are the columns of its row of ``disc.interp[0]`` (the x dofs
+    whose shape functions are nonzero at the point: those of its facet; the shape functions
+    of the other nodes of the element vanish there up to round-off)."""
+    member = np.zeros(disc.nodes.shape[1], dtype=bool)
+    member[np.asarray(nodes, dtype=np.int64)] = True
+    node_of = np.full(disc.n_dofs, -1, dtype=np.int64)
+    node_of[disc.dofs[0]] = np.arange(disc.nodes.shape[1])
+    rows = disc.interp[0].tocoo()
+    facet = np.abs(rows.data) > 1e-9  # round-off values of the nodes off the facet dropped
+    outside = facet & ~member[node_of[rows.col]]
+    inside = np.ones(disc.n_points, dtype=bool)
+    inside[rows.row[outside]] = False
+    return inside

@@ -122,6 +122,10 @@ class LawRegion:
         in the stored conventions (angle in rad, orthotropy "divide").
     x, y:
         Closed coordinate ranges [m] the region covers (None: unbounded along that axis).
+    group:
+        A named group of an imported mesh: the region holds the contact points whose facet
+        has all its nodes in the group (``groups`` of :meth:`LawField.resolve`); with
+        ``x``/``y`` the intersection.
     name:
         Named in messages (e.g. ``[[law_region]] #2``).
     """
@@ -129,6 +133,7 @@ class LawRegion:
     values: Mapping[str, Any]
     x: tuple[float, float] | None = None
     y: tuple[float, float] | None = None
+    group: str | None = None
     name: str = "region"
 
     def __post_init__(self) -> None:
@@ -151,9 +156,16 @@ class LawRegion:
                 )
             object.__setattr__(self, axis, (lo, hi))
 
-    def contains(self, xy: np.ndarray) -> np.ndarray:
-        """(P,) True at the in-plane points ``xy`` (P, d - 1) inside the region."""
+    def contains(
+        self, xy: np.ndarray, groups: Mapping[str, np.ndarray] | None = None
+    ) -> np.ndarray:
+        """(P,) True at the in-plane points ``xy`` (P, d - 1) inside the region;
+        ``groups`` maps a group name to its (P,) membership of the points."""
         inside = np.ones(xy.shape[0], dtype=bool)
+        if self.group is not None:
+            if groups is None or self.group not in groups:
+                raise ParameterError(f"{self.name}.group", self.group, "a group of the mesh")
+            inside &= np.asarray(groups[self.group], dtype=bool)
         for a, span in enumerate((self.x, self.y)):
             if span is None:
                 continue
@@ -173,9 +185,15 @@ class LawField:
     def __bool__(self) -> bool:
         return bool(self.tables or self.regions)
 
-    def resolve(self, params: SubloadingParams, xy: np.ndarray) -> SubloadingParams:
+    def resolve(
+        self,
+        params: SubloadingParams,
+        xy: np.ndarray,
+        groups: Mapping[str, np.ndarray] | None = None,
+    ) -> SubloadingParams:
         """The law at the contact points ``xy`` (P, d - 1) [m]: per-point arrays of the
-        varying parameters (``params`` itself when nothing varies)."""
+        varying parameters (``params`` itself when nothing varies). ``groups``: each
+        region group's (P,) membership."""
         if not self:
             return params
         if params.per_point:
@@ -198,7 +216,7 @@ class LawField:
         for table in self.tables:
             column(table.key)[:] = table.at(xy)
         for region in self.regions:
-            inside = region.contains(xy)
+            inside = region.contains(xy, groups)
             for key, value in region.values.items():
                 column(key)[inside] = value
         return params.replace(**varying, orthotropy_convention="divide")

@@ -152,6 +152,8 @@ LAW_REGION = Section("law_region", (
     Field("x", _PAIR, "x range [from, to] of the region (closed; default all)", "m", None),
     Field("y", _PAIR, "y range [from, to] of the region, 3-D (closed; default all)", "m",
           None),
+    Field("group", STRING, "a named group of the [mesh]: the contact points whose facet "
+          "lies in it (with x, y: the intersection)", "", None),
     Field("bridge", STRING, "a `frictionlab bridge` fitted_law.toml: its anisotropy "
           "(rotation, orthotropy, orthotropy angle) in this region", "", None),
     *(dataclasses.replace(LAW[key], kind=_PAIR if LAW[key].kind is PAIRS else NUMBER,
@@ -332,13 +334,26 @@ def _bridge_anisotropy(where: str, name: str, params: SubloadingParams,
 
 
 def _law_regions(
-    tables: list[Any], params: SubloadingParams, dim: int, base_dir: Path, multiply: bool
+    tables: list[Any],
+    params: SubloadingParams,
+    dim: int,
+    base_dir: Path,
+    multiply: bool,
+    mesh: MeshSource | None,
 ) -> tuple[list[LawRegion], list[dict[str, Any]]]:
     regions, echoes = [], []
     for t in tables:
         where = t.where
         echo = LAW_REGION.read(t, where, only_given=True)
-        values = {k: v for k, v in echo.items() if k not in ("x", "y", "bridge")}
+        values = {k: v for k, v in echo.items() if k not in ("x", "y", "bridge", "group")}
+        if "group" in echo:
+            if mesh is None:
+                raise InputError(f"{where}.group needs a [mesh] (its named groups)")
+            group = echo["group"]
+            try:
+                mesh.check_group(group)
+            except ParameterError as exc:
+                raise ParameterError(f"{where}.group", exc.value, exc.allowed) from None
         if "bridge" in echo:
             values = {**_bridge_anisotropy(where, echo["bridge"], params, base_dir), **values}
         if "orthotropy_angle_deg" in values:
@@ -356,7 +371,8 @@ def _law_regions(
             if getattr(params, key) is None:
                 raise InputError(f"{where}.{key} is not a parameter of surface "
                                  f"'{params.surface}'")  # fmt: skip
-        region = LawRegion(values, x=echo.get("x"), y=echo.get("y"), name=where)
+        region = LawRegion(values, x=echo.get("x"), y=echo.get("y"), group=echo.get("group"),
+                           name=where)  # fmt: skip
         _check_field(where, params, dict(values))
         regions.append(region)
         echoes.append({**echo, **{k: v for k, v in values.items() if k not in echo}})
@@ -382,7 +398,12 @@ def _law(data: Any) -> tuple[SubloadingParams | Frictionless, dict[str, Any]]:
 
 
 def _law_field(
-    root: Any, params: SubloadingParams | Frictionless, dim: int, base_dir: Path, law_t: Any
+    root: Any,
+    params: SubloadingParams | Frictionless,
+    dim: int,
+    base_dir: Path,
+    law_t: Any,
+    mesh: MeshSource | None = None,
 ) -> tuple[LawField, dict[str, Any]]:
     """[law_table] and [[law_region]]: the law's values along the interface."""
     table_data = root.raw("law_table", None)
@@ -397,7 +418,7 @@ def _law_field(
                          "vary it along the interface")  # fmt: skip
     multiply = law_t.mapping().get("orthotropy_convention") == "multiply"
     tables = _law_tables(table_data or {}, params, dim, base_dir)
-    regions, region_echo = _law_regions(region_ts, params, dim, base_dir, multiply)
+    regions, region_echo = _law_regions(region_ts, params, dim, base_dir, multiply, mesh)
     echo: dict[str, Any] = {}
     if table_data is not None:
         echo["law_table"] = LAW_TABLE.read(table_data, "[law_table]", only_given=True)
@@ -478,7 +499,7 @@ def parse_contact(
     base = reraise("[base]", lambda: Base(**base_echo))
     reraise("[base]", lambda: base.check_dim(block.dim))
     params, law_echo = _law(law_t.mapping())
-    law_field, field_echo = _law_field(root, params, block.dim, Path(base_dir), law_t)
+    law_field, field_echo = _law_field(root, params, block.dim, Path(base_dir), law_t, mesh)
     normal, normal_echo = _normal(normal_t)
     parsed = [_segment(t) for t in program_ts]
     program = tuple(seg for seg, _ in parsed)
