@@ -143,3 +143,20 @@ def test_a_table_short_of_the_contact_face_is_refused_before_running(tmp_path: P
     scenario = parse_contact(_scenario(tmp_path, law_table={"mu_s": "t.csv"}), base_dir=tmp_path)
     with pytest.raises(InputError, match=r"\[law_table\].mu_s \('t.csv'\).*outside"):
         scenario_law(scenario, discretise_scenario(scenario))
+
+
+def test_a_3d_table_is_interpolated_over_x_and_y(tmp_path: Path) -> None:
+    """Samples of a linear mu_s(x, y) on a 3 x 3 grid: exact at every contact point."""
+    x, y = np.meshgrid([0.0, 0.01, 0.02], [0.0, 0.01, 0.02])
+    pairs = zip(x.ravel(), y.ravel(), strict=True)
+    rows = "\n".join(f"{a},{b},{0.5 + 3.0 * a + 4.0 * b}" for a, b in pairs)
+    (tmp_path / "mu.csv").write_text("x [m],y [m],mu_s\n" + rows + "\n")
+    data = _scenario(tmp_path, law_table={"mu_s": "mu.csv"})
+    data["block"] = {"E": 3.0e9, "nu": 0.3, "width": 0.02, "depth": 0.02, "height": 0.01,
+                     "element_size": 0.005}  # fmt: skip
+    data["law"]["mu_k"] = 0.4
+    scenario = parse_contact(data, base_dir=tmp_path)
+    disc = discretise_scenario(scenario)
+    law = scenario_law(scenario, disc)
+    xy = disc.contact_xy
+    np.testing.assert_allclose(law.mu_s, 0.5 + 3.0 * xy[:, 0] + 4.0 * xy[:, 1], rtol=1e-12)
