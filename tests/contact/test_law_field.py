@@ -160,3 +160,13 @@ def test_a_3d_table_is_interpolated_over_x_and_y(tmp_path: Path) -> None:
     law = scenario_law(scenario, disc)
     xy = disc.contact_xy
     np.testing.assert_allclose(law.mu_s, 0.5 + 3.0 * xy[:, 0] + 4.0 * xy[:, 1], rtol=1e-12)
+
+
+def test_normal_capacity_of_a_per_point_closed_surface_at_one_traction() -> None:
+    """A field of F_k on a closed surface: the one nominal pressure is checked at every point."""
+    from frictionlab.subloading import check_normal_capacity
+
+    law = SubloadingParams(surface="modified_cam_clay", F_s=[3e6, 3e6], F_k=[2e6, 0.5e6], M=0.5)
+    check_normal_capacity(law, 0.4e6)
+    with pytest.raises(ParameterError, match=r"F_k = 500000"):
+        check_normal_capacity(law, 1.0e6)
