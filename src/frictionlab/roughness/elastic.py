@@ -349,7 +349,7 @@ def _contact(
         raise ConvergenceError(
             f"the elastic contact solve did not converge in max_iterations = "
             f"{settings.max_iterations} to tolerance = {settings.tolerance:g} at pressure = "
-            f"{pressure:g} Pa (raise max_iterations or tolerance)",
+            f"{pressure:g} Pa{_spike_diagnosis(p, composite, geometry, settings)}",
             np.array([True]),
         )
     contact = p > 0.0
@@ -367,6 +367,51 @@ def _contact(
         plastic_fraction=plastic,
         mean_gap=float(gap.mean()),
         iterations=iterations,
+    )
+
+
+#: Local pressure, as a fraction of E*, above which a contact is a spike the linear
+#: half-space cannot flatten (strains of order 10 %): the solver stalls there.
+SPIKE_PRESSURE = 0.05
+
+
+def _spike_diagnosis(
+    p: FloatArray, composite: FloatArray, geometry: LatticeGeometry, settings: ElasticSettings
+) -> str:
+    """Why a solve stalled: pixel-scale spikes needing local pressures of order E*.
+
+    The last iterate's pressure above ``SPIKE_PRESSURE * E*`` marks points whose
+    flattening needs strains beyond linear elasticity (slopes of order 1 at the pixel
+    scale, e.g. isolated outliers or points invented by ``fill_missing``); the
+    conjugate gradients then stall. Capping the pressure (``hardness``) or removing
+    the pixel-scale slopes (``short_cutoff``) makes the problem well conditioned.
+    """
+    limit = SPIKE_PRESSURE * settings.modulus
+    spikes = p > limit
+    if not spikes.any():
+        return " (raise max_iterations or tolerance)"
+    k = int(np.argmax(p))
+    pos = np.unravel_index(k, geometry.shape)
+    xs, ys = geometry.station_coordinates()
+    where = f"x = {float(np.ravel(xs)[pos[0]]):.4g} m"
+    if geometry.dimension == 2:
+        where += f", y = {float(np.ravel(ys)[pos[1]]):.4g} m"
+    spacing = [c / n for c, n in zip(geometry.cell, geometry.shape, strict=False) if c]
+    slope = max(
+        float(np.max(np.abs(np.diff(composite, axis=a, append=np.take(composite, [0], axis=a)))))
+        / spacing[a]
+        for a in range(len(spacing))
+    )
+    keys = "hardness (e.g. 2e9 Pa for steel) to cap them" + (
+        "" if geometry.dimension == 2 else " (maps only)"
+    )
+    return (
+        f": {int(np.count_nonzero(spikes))} points need local pressures above "
+        f"{SPIKE_PRESSURE:g} E* (largest {float(p.flat[k]):.3g} Pa = "
+        f"{float(p.flat[k]) / settings.modulus:.2g} E*, at {where}; steepest pixel slope "
+        f"{slope:.3g}): pixel-scale spikes that a linear elastic half-space cannot flatten. "
+        f"Set {keys}, remove them with short_cutoff (e.g. 4 pixels) in [lower]/[upper], or "
+        "lower the pressure"
     )
 
 
