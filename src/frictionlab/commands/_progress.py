@@ -85,9 +85,8 @@ def progress_lines(
     def update(done: int, total: int) -> None:
         now = clock()
         finished = total > 0 and done >= total
-        if finished and state["wrote"] and not state["finished"]:
-            line(done, total, now)
-        elif now - float(state["last"]) >= interval and not finished:
+        due = now - float(state["last"]) >= interval
+        if (finished and state["wrote"] and not state["finished"]) or (due and not finished):
             line(done, total, now)
         state["finished"] = finished
 

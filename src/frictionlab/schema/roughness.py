@@ -192,8 +192,22 @@ def _pressures(t: Table, f: Field) -> tuple[float, ...]:
 
 
 _MODEL_JSON = {"type": "string", "enum": list(CONTACT_MODELS)}
-MODELS = Kind("model", _models, {"oneOf": [_MODEL_JSON, {"type": "array", "items": _MODEL_JSON,
-                                           "minItems": 1, "maxItems": 2, "uniqueItems": True}]})
+MODELS = Kind(
+    "model",
+    _models,
+    {
+        "oneOf": [
+            _MODEL_JSON,
+            {
+                "type": "array",
+                "items": _MODEL_JSON,
+                "minItems": 1,
+                "maxItems": 2,
+                "uniqueItems": True,
+            },
+        ]
+    },
+)
 PRESSURES = Kind("pressures", _pressures, {"oneOf": [
     {"type": "number", "exclusiveMinimum": 0},
     {"type": "array", "items": {"type": "number", "exclusiveMinimum": 0}, "minItems": 1},

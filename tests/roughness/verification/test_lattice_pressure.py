@@ -12,7 +12,6 @@ from __future__ import annotations
 import math
 import tomllib
 
-import numpy as np
 import pytest
 
 from frictionlab.errors import InputError
@@ -72,17 +71,24 @@ def test_load_per_spring_is_pressure_times_k_c_over_stiffness() -> None:
     [
         ("[contact]\npressure = 1e6\n", ["stiffness_per_area", "missing"]),
         ("[contact]\nstiffness_per_area = 1e12\n", ["stiffness_per_area", "pressure"]),
-        ("load = 1e-9\n[contact]\npressure = 1e6\nstiffness_per_area = 1e12\n",
-         ["[sliding].load", "pressure"]),
-        ('[contact]\nmodel = "lattice"\npressure = [1e6, 1e6]\nstiffness_per_area = 1e12\n',
-         ["pressure", "twice"]),
+        (
+            "load = 1e-9\n[contact]\npressure = 1e6\nstiffness_per_area = 1e12\n",
+            ["[sliding].load", "pressure"],
+        ),
+        (
+            '[contact]\nmodel = "lattice"\npressure = [1e6, 1e6]\nstiffness_per_area = 1e12\n',
+            ["pressure", "twice"],
+        ),
         ('[contact]\nmodel = ["elastic", "elastic"]\n', ["model", "distinct"]),
-        ("[contact]\npressure = [1e6, 2e6]\nstiffness_per_area = 1e12\n"
-         "[multiscale]\ncutoffs = [1e-5]\n", ["[multiscale]", "list"]),
+        (
+            "[contact]\npressure = [1e6, 2e6]\nstiffness_per_area = 1e12\n"
+            "[multiscale]\ncutoffs = [1e-5]\n",
+            ["[multiscale]", "list"],
+        ),
     ],
 )
 def test_pressure_keys_are_checked(extra: str, words: list[str]) -> None:
-    text = BASE.replace('beta_deg = [0.0]\n', 'beta_deg = [0.0]\n' + extra.split("[contact]")[0])
+    text = BASE.replace("beta_deg = [0.0]\n", "beta_deg = [0.0]\n" + extra.split("[contact]")[0])
     text += "[contact]" + extra.split("[contact]", 1)[1] if "[contact]" in extra else ""
     with pytest.raises(InputError) as info:
         parse_roughness(tomllib.loads(text))
