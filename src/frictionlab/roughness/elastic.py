@@ -266,6 +266,7 @@ def _solve(
     settings: ElasticSettings,
     pressure: float,
     initial: FloatArray | None,
+    warm: FloatArray | None = None,
 ) -> tuple[FloatArray, FloatArray, FloatArray, int, bool]:
     """ContactMechanics' constrained conjugate gradients: pressure (Pa), gap, displacement."""
     from ContactMechanics import PeriodicFFTElasticHalfSpace
@@ -291,7 +292,10 @@ def _solve(
         topo,
         hardness=hardness,
         external_force=pressure * area,
-        initial_displacements=initial,
+        initial_displacements=initial if warm is None else None,
+        # a pressure field (Pa) of a nearby load, scaled to this one: ContactMechanics'
+        # forces are negative in compression
+        initial_forces=None if warm is None else -warm * (pixel * pressure / float(warm.mean())),
         pentol=settings.tolerance * rms,
         # excess over the cap (a force per pixel, N) allowed at convergence
         forcetol=settings.tolerance * (hardness if hardness is not None else pressure * pixel),
@@ -334,6 +338,7 @@ def _contact(
     pressure: float,
     shift: Sequence[float],
     initial: FloatArray | None,
+    warm: FloatArray | None = None,
 ) -> ContactState:
     z1 = _evaluate(lower, geometry, (0.0, 0.0))[0]
     z2 = _evaluate(upper, geometry, shift)[0]
@@ -344,7 +349,7 @@ def _contact(
             (float(shift[0]), float(shift[1])), np.full(shape, pressure), np.zeros(shape),
             np.zeros(shape), 1.0, 0.0, 0.0, 0,
         )  # fmt: skip
-    p, gap, u, iterations, ok = _solve(composite, geometry, settings, pressure, initial)
+    p, gap, u, iterations, ok = _solve(composite, geometry, settings, pressure, initial, warm)
     if not ok:
         raise ConvergenceError(
             f"the elastic contact solve did not converge in max_iterations = "
@@ -542,8 +547,9 @@ def pressure_sweep(
 ) -> list[ElasticPolar]:
     """:func:`elastic_polar` at each nominal pressure (Pa), solved in rising order.
 
-    Each solve starts from the displacement of the previous (lower) pressure; the
-    polars are returned in the order of ``pressures``.
+    Each solve starts from the pressure field of the previous (lower) pressure scaled to
+    the new mean (far fewer iterations for close pressures: about 26 instead of 150 for
+    +5 % on a 512^2 map); the polars are returned in the order of ``pressures``.
     """
     base = _settings(settings, {"pressure": 1.0, **options} if settings is None else options)
     values = np.array(pressures, dtype=np.float64, ndmin=1)
@@ -558,7 +564,7 @@ def pressure_sweep(
         s = ElasticSettings(**{**base.as_dict(), "pressure": float(values[i]),
                                "stations": base.stations})  # fmt: skip
         polar = _polar(lower, upper, m0, betas, s, None, initial)
-        initial = [st.displacement for st in polar.states]
+        initial = [st.pressure for st in polar.states]
         out[int(i)] = polar
         if progress is not None:
             progress(done + 1, values.size)
@@ -590,7 +596,7 @@ def _polar(
     for k, shift in enumerate(shifts):
         state = _contact(
             lower, upper, geometry, settings, settings.pressure, shift,
-            None if initial is None else initial[k],
+            None, None if initial is None else initial[k],
         )  # fmt: skip
         states.append(state)
         g2 = _evaluate(upper, geometry, shift)
