@@ -714,7 +714,7 @@ def _model_files(job: RoughnessJob, runs: Any, plots: bool) -> dict[str, str | b
         from frictionlab.plotting.roughness import figure_png_bytes
 
         title = scenario.title or job.path.name
-        files[f"{name}.png"] = figure_png_bytes(model_figure(scenario, runs, title))
+        files[f"{name}.png"] = figure_png_bytes(model_figure(runs, scenario.mu0, title))
         elastic = [r for r in runs if r.model == "elastic"]
         if elastic:
             files["pressure_map.png"] = _pressure_png(elastic[0].polar)

@@ -156,24 +156,30 @@ def model_summary(scenario: RoughnessScenario, runs: list[ModelRun]) -> dict[str
     }
 
 
-def model_figure(scenario: RoughnessScenario, runs: list[ModelRun], title: str) -> Any:
+_COLORS = {"lattice": "k", "elastic": "C3"}
+
+
+def model_figure(runs: list[ModelRun], mu0: float, title: str) -> Any:
     """mu/mu0 of every run on polar axes and the contact area against the pressure."""
     from frictionlab.plotting.roughness import new_figure, radial_limits
 
     fig = new_figure(10.0, 4.8)
     ax = fig.add_subplot(1, 2, 1, projection="polar")
     styles = {"lattice": "-", "elastic": "--"}
-    pressures = list(scenario.pressures)
+    pressures = sorted({r.pressure for r in runs})
+    models = list(dict.fromkeys(r.model for r in runs))
     radii = []
     for run in runs:
         polar = run.polar if run.plot is None else run.plot
         beta = np.mod(np.asarray(polar.beta_deg, dtype=np.float64), 360.0)
         order = np.argsort(beta, kind="stable")
         theta = np.radians(np.append(beta[order], beta[order][0] + 360.0))
-        r = np.asarray(polar.mu, dtype=np.float64)[order] / scenario.mu0
+        r = np.asarray(polar.mu, dtype=np.float64)[order] / mu0
         r = np.append(r, r[0])
         radii.append(r)
-        color = f"C{pressures.index(run.pressure) % 10}"
+        color = (
+            _COLORS[run.model] if len(pressures) == 1 else f"C{pressures.index(run.pressure) % 10}"
+        )
         label = f"{run.model}, {run.pressure:.3g} Pa" if len(pressures) > 1 else run.model
         ax.plot(theta, r, styles[run.model], color=color, lw=1.4, label=label)
     lo, hi = radial_limits(np.concatenate(radii))
@@ -182,11 +188,20 @@ def model_figure(scenario: RoughnessScenario, runs: list[ModelRun], title: str) 
     ax.set_title(f"mu/mu0 vs sliding direction{origin}", fontsize=9)
     ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(-0.15, -0.15))
     area = fig.add_subplot(1, 2, 2)
-    for model in scenario.models:
+    if len(pressures) == 1:  # one pressure: the areas side by side
+        values = [100.0 * next(r.contact_fraction for r in runs if r.model == m) for m in models]
+        area.bar(models, values, color=[_COLORS[m] for m in models])
+        for k, value in enumerate(values):
+            area.text(k, value, f"{value:.3g} %", ha="center", va="bottom", fontsize=9)
+        area.set_ylabel("contact area [% of the nominal area]")
+        area.set_title(f"contact area at {pressures[0]:.3g} Pa", fontsize=9)
+        fig.suptitle(title, fontsize=10)
+        return fig
+    for model in models:
         mine = [r for r in runs if r.model == model]
         area.plot(
             [r.pressure for r in mine], [100.0 * r.contact_fraction for r in mine],
-            styles[model], marker="o", color="k" if model == "lattice" else "C3", label=model,
+            styles[model], marker="o", color=_COLORS[model], label=model,
         )  # fmt: skip
     if len(pressures) > 1 and max(pressures) / min(pressures) > 10.0:
         area.set_xscale("log")
