@@ -407,7 +407,7 @@ def _spike_diagnosis(
         / spacing[a]
         for a in range(len(spacing))
     )
-    keys = "hardness (e.g. 2e9 Pa for steel) to cap them" + (
+    keys = "hardness ([contact] hardness; e.g. 2e9 Pa for steel) to cap them" + (
         "" if geometry.dimension == 2 else " (maps only)"
     )
     return (
