@@ -108,6 +108,7 @@ class RoughnessRun:
     plot_polar: FrictionPolar
     extensions: dict[str, Any]
     elastic: Any = None  # ElasticPolar of [contact] model = "elastic" (all directions)
+    runs: Any = None  # list of roughness_models.ModelRun: a comparison or a pressure sweep
 
 
 class Roughness:
@@ -128,6 +129,8 @@ class Roughness:
 
     def run(self, job: RoughnessJob, progress: ProgressFactory, staging: Path) -> RoughnessRun:
         scenario = job.scenario
+        if scenario.compares:
+            return _run_models(job, progress)
         if scenario.contact is not None:
             return _run_elastic(job, progress)
         try:
@@ -154,7 +157,9 @@ class Roughness:
 
     def files(self, job: RoughnessJob, result: RoughnessRun, out: Path, plots: bool) -> list[Path]:
         scenario = job.scenario
-        if result.elastic is not None:
+        if result.runs is not None:
+            files = _model_files(job, result.runs, plots)
+        elif result.elastic is not None:
             files = _elastic_files(job, result.elastic, plots)
         else:
             files = {"polar.csv": _csv_text(scenario, result.polar, job.path)}
@@ -168,7 +173,9 @@ class Roughness:
         self, job: RoughnessJob, result: RoughnessRun, files: list[str], seconds: float
     ) -> dict[str, Any]:
         scenario = job.scenario
-        if result.elastic is not None:
+        if result.runs is not None:
+            summary = _model_summary(job, result.runs, seconds)
+        elif result.elastic is not None:
             summary = _elastic_summary(job, result.elastic, seconds)
         else:
             summary = _summary(scenario, result.polar, result.plot_polar, job.path, seconds)
@@ -197,6 +204,12 @@ class Roughness:
                 f"elastic contact ({100 * result.elastic.contact_fraction_mean:.3g} % in contact), "
             )
         )
+        if result.runs is not None:
+            areas = ", ".join(
+                f"{r.model} at {r.pressure:.3g} Pa: {100 * r.contact_fraction:.3g} %"
+                for r in result.runs
+            )
+            model = f"contact area {areas}; {result.runs[0].model} at the first pressure: "
         print(
             f"frictionlab roughness: {model}{n} directions in "
             f"{seconds:.3g} s, mu/mu0 from {np.nanmin(ratio):.6g} to {np.nanmax(ratio):.6g}; "
@@ -204,7 +217,7 @@ class Roughness:
         )
 
     def notes(self, job: RoughnessJob, result: RoughnessRun) -> list[str]:
-        if job.quiet or result.elastic is not None:
+        if job.quiet or result.elastic is not None or result.runs is not None:
             return []
         return [f"frictionlab roughness: note: {text}" for text in result.polar.notes]
 
@@ -220,7 +233,7 @@ def _names(files: list[str]) -> list[str]:
     """The output names in summary order: polar.csv, summary.json, polar.png, the rest."""
     fixed = ("polar.csv", "summary.json", "polar.png")
     extra = sorted(name for name in files if name not in fixed)
-    return ["polar.csv", "summary.json", *(["polar.png"] if "polar.png" in files else []), *extra]
+    return [*(name for name in fixed if name in files or name == "summary.json"), *extra]
 
 
 def _station_gradients(
@@ -590,6 +603,19 @@ def _summary(
             "contact_fraction_min": float(polar.contact_fraction_min.min()),
         },
         "closed_form_check": _closed_form_check(scenario, polar),
+        **(
+            {}
+            if not scenario.pressures
+            else {
+                "contact": {
+                    "model": "lattice",
+                    "pressure_pa": scenario.pressures[0],
+                    "stiffness_per_area_pa_per_m": scenario.stiffness_per_area,
+                    "load_per_spring_N": s.load,
+                    "contact_fraction": float(np.mean(polar.contact_fraction_mean)),
+                }
+            }
+        ),
         "work": {
             "spring_station_evaluations": int(polar.spring_evaluations),
             "plot_directions": int(plot_polar.beta_deg.size),
@@ -644,6 +670,73 @@ def _run_elastic(job: RoughnessJob, progress: ProgressFactory) -> RoughnessRun:
             settings=settings, progress=update,
         )  # fmt: skip
     return RoughnessRun(whole, whole, {}, whole)  # type: ignore[arg-type]
+
+
+def _run_models(job: RoughnessJob, progress: ProgressFactory) -> RoughnessRun:
+    """Two models or several pressures (app.roughness_models)."""
+    from frictionlab.app.roughness_models import run_models
+
+    scenario = job.scenario
+    requested = np.mod(np.asarray(scenario.beta_deg, dtype=np.float64), 360.0)
+    circle = (
+        np.arange(0.0, 360.0 - 1e-9, scenario.plot_step_deg)
+        if job.plots and scenario.plot_full_circle
+        else np.empty(0)
+    )
+    extra = circle[~np.isin(np.round(circle, 9), np.round(requested, 9))]
+    runs = run_models(scenario, extra, progress, job.path.name)
+    first = runs[0].polar
+    return RoughnessRun(first, first, {}, None, runs)
+
+
+def _model_name(scenario: RoughnessScenario) -> str:
+    return "comparison" if len(scenario.models) > 1 else "sweep"
+
+
+def _model_files(job: RoughnessJob, runs: Any, plots: bool) -> dict[str, str | bytes]:
+    from frictionlab.app.roughness_models import model_columns, model_figure, model_units
+
+    scenario = job.scenario
+    name = _model_name(scenario)
+    files: dict[str, str | bytes] = {
+        f"{name}.csv": format_csv(model_columns(scenario, runs), model_units(scenario))
+    }
+    if plots:
+        from frictionlab.plotting.roughness import figure_png_bytes
+
+        title = scenario.title or job.path.name
+        files[f"{name}.png"] = figure_png_bytes(model_figure(runs, scenario.mu0, title))
+        elastic = [r for r in runs if r.model == "elastic"]
+        if elastic:
+            files["pressure_map.png"] = _pressure_png(elastic[0].polar)
+    return files
+
+
+def _model_summary(job: RoughnessJob, runs: Any, seconds: float) -> dict[str, Any]:
+    from frictionlab.app.roughness_models import model_summary
+
+    scenario = job.scenario
+    contact = model_summary(scenario, runs)
+    rows = contact["runs"]
+    return {
+        "frictionlab_version": __version__,
+        "command": "roughness",
+        "scenario_file": str(job.path),
+        "title": scenario.title,
+        "mu0": scenario.mu0,
+        "mu_definition": scenario.settings.mu_definition,
+        "lower": scenario.lower.describe(),
+        "upper": scenario.upper.describe(),
+        "sources": scenario.sources,
+        "warnings": list(scenario.warnings),
+        "contact": contact,
+        "results": {
+            "directions_deg": scenario.beta_deg.tolist(),
+            "mu_over_mu0_min": min(r["mu_over_mu0_min"] for r in rows),
+            "mu_over_mu0_max": max(r["mu_over_mu0_max"] for r in rows),
+        },
+        "work": {"seconds": round(seconds, 3)},
+    }
 
 
 def _elastic_files(job: RoughnessJob, whole: Any, plots: bool) -> dict[str, str | bytes]:

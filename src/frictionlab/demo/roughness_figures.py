@@ -308,6 +308,10 @@ def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
         "(mu(0)/mu(90) - 1).",
     )
     step()
+    _measured_statistics(writer, section, prepared.surface, path.name)
+    step()
+    _measured_models(writer, section, prepared.surface, path.name)
+    step()
     sizes = " x ".join(f"{v * 1e3:g}" for v in info["source_physical_sizes_m"])
     points = " x ".join(str(v) for v in info["source_points"])
     rms = f"{info['rms_height_m']:.3g}, {info['rms_slope']:.3g}"
@@ -318,8 +322,88 @@ def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
         ("rms height, rms slope (prepared)", rms, "m, 1"),
         ("local coefficient mu0", f"{MU0:g}", "1"),
         ("band edges (wavelengths)", ", ".join(f"{c * 1e6:g}" for c in MEASURED_CUTOFFS), "um"),
-    ]
+        ("elastic model: nominal pressure, E*", f"{MEASURED_PRESSURE:g}, {MEASURED_MODULUS:g}",
+         "Pa, Pa"),
+    ]  # fmt: skip
     return section
+
+
+#: The measured section's load distribution comparison: nominal pressure and E* (Pa).
+MEASURED_PRESSURE = 3.0e8
+MEASURED_MODULUS = 1.1e11
+
+
+def _measured_statistics(writer: _Writer, section: Section, surface: Any, name: str) -> None:
+    """The surface statistics of roughness.statistics (PSDs, rms slope per direction)."""
+    from frictionlab.plotting.roughness import plot_statistics
+    from frictionlab.roughness.statistics import surface_statistics
+
+    stats = surface_statistics(surface)
+    for table, columns in stats.tables().items():
+        writer.table(f"measured_statistics_{table}", columns, {}, f"{name}: {table}")
+    summary = stats.summary()
+    section.add_figure(
+        writer.figure("measured_statistics", plot_statistics(stats, title=name)),
+        f"SurfaceTopography's statistics of the prepared map: rms height "
+        f"{summary['rms_height_m'] * 1e6:.3g} um, rms slope {summary['rms_slope']:.3g}; the "
+        f"slope is largest across the grooves ({summary['rms_slope_max']:.3g} at "
+        f"{summary['rms_slope_max_theta_deg']:g} deg) and smallest along them "
+        f"({summary['rms_slope_min']:.3g} at {summary['rms_slope_min_theta_deg']:g} deg).",
+    )
+
+
+def _measured_models(writer: _Writer, section: Section, surface: Any, name: str) -> None:
+    """The lattice and the elastic half-space at the same pressure and contact area."""
+    from frictionlab.app.roughness_models import ModelRun, model_figure
+    from frictionlab.roughness.elastic import elastic_polar
+    from frictionlab.roughness.generators import flat
+    from frictionlab.roughness.lattice import friction_polar
+
+    betas = np.arange(0.0, 360.0, 15.0)
+    elastic = elastic_polar(surface, flat(), MU0, betas, pressure=MEASURED_PRESSURE,
+                            modulus=MEASURED_MODULUS)  # fmt: skip
+    area = elastic.contact_fraction_mean
+    # The lattice on a flat face compresses the springs on the highest points: its
+    # stiffness per area k is chosen to touch the same area, k = p / (mean compression).
+    heights = np.asarray(surface.heights, dtype=np.float64)
+    level = float(np.quantile(heights, 1.0 - area))
+    compression = float(np.mean(np.clip(heights - level, 0.0, None)))
+    kappa = MEASURED_PRESSURE / compression
+    lattice = friction_polar(surface, flat(), MU0, betas, load=compression)  # k_c = 1 N/m
+    runs = [
+        ModelRun("lattice", MEASURED_PRESSURE, lattice,
+                 float(np.mean(lattice.contact_fraction_mean))),
+        ModelRun("elastic", MEASURED_PRESSURE, elastic, area),
+    ]  # fmt: skip
+    writer.table(
+        "measured_models",
+        {"beta_deg": betas, "mu_lattice": lattice.mu, "mu_elastic": elastic.mu},
+        {"beta_deg": "deg"},
+        f"{name}: lattice and elastic half-space at {MEASURED_PRESSURE:g} Pa",
+    )
+    elastic_set = elastic.states[0].pressure > 0.0
+    overlap = float(np.count_nonzero(elastic_set & (heights > level))) / max(
+        int(np.count_nonzero(elastic_set)), 1
+    )
+
+    def spread(mu: np.ndarray) -> float:
+        return 100.0 * (float(np.max(mu)) / float(np.min(mu)) - 1.0)
+
+    def excess(mu: np.ndarray) -> float:
+        return 100.0 * (float(np.mean(mu)) / MU0 - 1.0)
+
+    fig = model_figure(runs, MU0, f"{name}: where the load goes")
+    section.add_figure(
+        writer.figure("measured_models", fig),
+        f"Pressed at {MEASURED_PRESSURE / 1e6:g} MPa on an elastic half-space "
+        f"(E* = {MEASURED_MODULUS / 1e9:g} GPa, ContactMechanics' FFT boundary elements) the "
+        f"map touches {100 * area:.2g} % of its area, and the lattice, its spring stiffness "
+        f"per area set to {kappa:.3g} Pa/m to touch the same area on the highest points "
+        f"({100 * overlap:.0f} % of the elastic contact points are among them), gives a mean "
+        f"friction excess mu/mu0 - 1 of {excess(lattice.mu):.2f} % against "
+        f"{excess(elastic.mu):.2f} % and an anisotropy mu_max/mu_min - 1 of "
+        f"{spread(lattice.mu):.2f} % against {spread(elastic.mu):.2f} % (lattice first).",
+    )
 
 
 def _slug(name: str) -> str:
@@ -353,7 +437,7 @@ def single_level_section(out_dir: Path, progress: ProgressFactory | None = None)
 
 def measured_section(out_dir: Path, progress: ProgressFactory | None = None) -> Section:
     """A measured topography file: mu(beta) and scale-resolved friction."""
-    return _run(_measured, out_dir, progress, "roughness: measured file", 2)
+    return _run(_measured, out_dir, progress, "roughness: measured file", 4)
 
 
 def life_section(out_dir: Path, progress: ProgressFactory | None = None) -> Section:

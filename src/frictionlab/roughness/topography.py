@@ -237,8 +237,11 @@ def prepare_topography(
         info["crop_m"] = [float(v) for v in crop]
         info["cropped_points"] = [int(v) for v in np.ravel(topography.nb_grid_pts)]
     n_bad = 0
+    islands = 0
     if topography.has_undefined_data:
-        n_bad = int(np.count_nonzero(np.ma.getmaskarray(topography.heights())))
+        missing = np.ma.getmaskarray(topography.heights())
+        n_bad = int(np.count_nonzero(missing))
+        islands = _isolated_points(missing)
         if not fill_missing:
             raise ParameterError(
                 "heights",
@@ -260,12 +263,20 @@ def prepare_topography(
     info["filled_points"] = n_bad
     info["filled_fraction"] = n_bad / total_points
     if n_bad > FILL_WARNING * total_points:
+        cones = (
+            f"; {islands} measured points stand alone inside the gaps and become cones, "
+            "steep at the pixel scale (the contact concentrates on them)"
+            if islands
+            else ""
+        )
         warnings.append(
             f"fill_missing invented {n_bad} of {total_points} points "
             f"({100.0 * n_bad / total_points:.1f} %, above {100 * FILL_WARNING:.0f} %) by "
             "harmonic interpolation: they are smooth, so the friction of this map is "
-            "underestimated where they lie; crop the defined region instead"
+            f"underestimated where they lie{cones}; crop the defined region instead"
         )
+    if n_bad:
+        info["isolated_measured_points"] = islands
     info["detrend"] = detrend
     if detrend != "none":
         topography = topography.detrend(detrend_mode=detrend)
@@ -536,6 +547,16 @@ def read_surface(
     except ParameterError as exc:
         raise InputError(f"surface file '{os.fspath(path)}': {exc}") from None
     return prepared.surface
+
+
+def _isolated_points(missing: np.ndarray) -> int:
+    """Measured points whose every neighbour (4 in a map, 2 on a line) is missing."""
+    defined = ~missing
+    alone = defined.copy()
+    for axis in range(missing.ndim):
+        for shift in (1, -1):
+            alone &= np.roll(missing, shift, axis=axis)
+    return int(np.count_nonzero(alone))
 
 
 def read_prepared(

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -175,6 +175,59 @@ _RESAMPLE = Kind(
     {"type": "string", "enum": list(RESAMPLE_MODES)},
 )
 CONTACT_MODELS = ("lattice", "elastic")
+
+
+def _models(t: Table, f: Field) -> tuple[str, ...]:
+    name = f"{t.where}.{f.name}"
+    raw = t.raw(f.name)
+    values = [raw] if isinstance(raw, str) else raw if isinstance(raw, list) else None
+    if (
+        not values
+        or not all(isinstance(v, str) and v in CONTACT_MODELS for v in values)
+        or len(set(values)) != len(values)
+    ):
+        raise InputError(
+            f"{name} = {raw!r} is invalid: allowed one of {CONTACT_MODELS} or a list of "
+            "distinct ones (a comparison)"
+        )
+    return tuple(values)
+
+
+def _pressures(t: Table, f: Field) -> tuple[float, ...]:
+    name = f"{t.where}.{f.name}"
+    raw = t.raw(f.name)
+    values = t.get_list(f.name, float) if isinstance(raw, list) else [t.get(f.name, float)]
+    if not values or len(values) > MAX_DIRECTIONS:
+        raise InputError(f"{name} must list 1 to {MAX_DIRECTIONS} pressures (Pa)")
+    bad = [v for v in values if not (math.isfinite(v) and v > 0.0)]
+    if bad:
+        raise InputError(f"{name} = {bad[0]!r} is invalid: allowed a positive value (Pa)")
+    if len(set(values)) != len(values):
+        raise InputError(f"{name} lists a pressure twice: allowed distinct pressures (Pa)")
+    return tuple(float(v) for v in values)
+
+
+_MODEL_JSON = {"type": "string", "enum": list(CONTACT_MODELS)}
+MODELS = Kind(
+    "model",
+    _models,
+    {
+        "oneOf": [
+            _MODEL_JSON,
+            {
+                "type": "array",
+                "items": _MODEL_JSON,
+                "minItems": 1,
+                "maxItems": 2,
+                "uniqueItems": True,
+            },
+        ]
+    },
+)
+PRESSURES = Kind("pressures", _pressures, {"oneOf": [
+    {"type": "number", "exclusiveMinimum": 0},
+    {"type": "array", "items": {"type": "number", "exclusiveMinimum": 0}, "minItems": 1},
+]})  # fmt: skip
 _SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
 SURFACE = Section("surface", (
     Field("kind", STRING, "surface kind", "", REQUIRED, choices=SURFACE_KINDS),
@@ -263,11 +316,15 @@ OUTPUT = Section("output", (
 ), "figures", "[output]")  # fmt: skip
 _E: dict[str, Any] = {"by": ElasticSettings}  # > 0 (hardness > pressure): ElasticSettings checks
 CONTACT = Section("contact", (
-    Field("model", STRING, "load distribution: the paper's springs or an elastic half-space",
-          "", "lattice", choices=CONTACT_MODELS),
-    Field("pressure", NUMBER, "nominal mean pressure (model = elastic)", "Pa", None, **_E),
-    Field("modulus", NUMBER, "effective contact modulus E*", "Pa", None, **_E),
-    Field("hardness", NUMBER, "optional cap on the local pressure", "Pa", None, **_E),
+    Field("model", MODELS, "load distribution: 'lattice' (the paper's springs), 'elastic' "
+          "(half-space, BEM) or both as a list (a comparison)", "", ("lattice",)),
+    Field("pressure", PRESSURES, "nominal mean pressure; a list gives a load sweep", "Pa",
+          None),
+    Field("modulus", NUMBER, "effective contact modulus E* (elastic)", "Pa", None, **_E),
+    Field("hardness", NUMBER, "optional cap on the local pressure (elastic)", "Pa", None, **_E),
+    Field("stiffness_per_area", NUMBER, "the lattice at a pressure: spring stiffness per "
+          "nominal area, k_c / station area; load per spring = pressure k_c / "
+          "stiffness_per_area", "Pa/m", None, **_POS),
 ), "the load distribution (roughness.elastic)", "[contact]")  # fmt: skip
 ADHESION = Section("adhesion", (
     Field("loads", LOADS, "loads per spring: a list or {start, stop, count}", "N", REQUIRED),
@@ -405,6 +462,30 @@ class RoughnessScenario:
     multiscale: MultiscaleOptions | None = None
     contact: ElasticSettings | None = None
     statistics: bool = False
+    models: tuple[str, ...] = ("lattice",)
+    pressures: tuple[float, ...] = ()
+    stiffness_per_area: float | None = None
+
+    @property
+    def compares(self) -> bool:
+        """Several models or several pressures (the comparison and sweep files)."""
+        return len(self.models) > 1 or len(self.pressures) > 1
+
+    def lattice_load(self, pressure: float) -> float:
+        """The lattice's mean force per spring (N) at a nominal pressure (Pa).
+
+        A spring of stiffness k_c stands for the station area A, so the foundation's
+        stiffness per area is k = k_c / A and the mean force per spring L = p A =
+        p k_c / k: the mean spring compression L / k_c = p / k does not depend on the
+        station grid.
+        """
+        assert self.stiffness_per_area is not None
+        return pressure * self.settings.k_c / self.stiffness_per_area
+
+    def elastic(self, pressure: float) -> ElasticSettings:
+        """The elastic settings at a nominal pressure (Pa)."""
+        assert self.contact is not None
+        return replace(self.contact, pressure=pressure)
 
 
 def parse_roughness(
@@ -419,6 +500,7 @@ def parse_roughness(
     upper = _surface(top.raw("upper"), "[upper]", base, notes, "upper")
     _check_cell(lower, upper, notes)
     sliding = SLIDING.read(top.raw("sliding"), only_given=True)
+    load_given = "load" in sliding
     betas = sliding.pop("beta_deg")
     sliding["on_invalid"] = _on_invalid("sliding", sliding.get("on_invalid", "error"), notes)
     sliding.setdefault("load", "full")
@@ -443,7 +525,16 @@ def parse_roughness(
         hierarchy = _hierarchy(top.table("hierarchy"), lower, upper, betas, base, notes)  # type: ignore[arg-type]
     if "multiscale" in top:
         multiscale = _multiscale(top.raw("multiscale"), betas)
-    contact = _contact(CONTACT.read(top.raw("contact", {})), settings)
+    given = CONTACT.read(top.raw("contact", {}))
+    contact = _contact(given, settings)
+    settings = _lattice_pressure(given, settings, load_given)
+    if len(given["model"]) > 1 or len(given["pressure"] or ()) > 1:
+        extra = [n for n in ("adhesion", "wear", "hierarchy", "multiscale") if n in top]
+        if extra:
+            raise InputError(
+                f"[{extra[0]}] is invalid with a list in [contact].model or [contact].pressure:"
+                " allowed only for one model at one load"
+            )
     try:  # the station count is checked against the surfaces now, not mid-computation
         lattice_geometry(lower, upper, settings.stations)
     except ParameterError as exc:
@@ -455,18 +546,21 @@ def parse_roughness(
         plot_step_deg=output["plot_step_deg"], adhesion=adhesion, wear=wear,
         hierarchy=hierarchy, sources={k: v for k, v in notes.items() if k in ("lower", "upper")},
         warnings=tuple(notes.get("warnings", ())), multiscale=multiscale, contact=contact,
-        statistics=output["statistics"],
+        statistics=output["statistics"], models=given["model"],
+        pressures=given["pressure"] or (), stiffness_per_area=given["stiffness_per_area"],
     )  # fmt: skip
 
 
 def _contact(v: dict[str, Any], settings: LatticeSettings) -> ElasticSettings | None:
-    """``[contact]``: ``model = "elastic"`` gives the BEM settings; ``"lattice"`` None."""
-    if v["model"] == "lattice":
-        given = [k for k in ("pressure", "modulus", "hardness") if v[k] is not None]
+    """``[contact]``: the BEM settings (at the first pressure) when ``model`` lists
+    ``"elastic"``; None for the lattice alone."""
+    if "elastic" not in v["model"]:
+        given = [k for k in ("modulus", "hardness") if v[k] is not None]
         if given:
             raise InputError(
                 f"[contact].{given[0]} is invalid with model = 'lattice': allowed only with "
-                "model = 'elastic' (the lattice's load is [sliding].load, N per spring)"
+                "model = 'elastic' (the lattice's load is [sliding].load, N per spring, or "
+                "[contact].pressure with stiffness_per_area)"
             )
         return None
     for key in ("pressure", "modulus"):
@@ -474,12 +568,43 @@ def _contact(v: dict[str, Any], settings: LatticeSettings) -> ElasticSettings | 
             raise InputError(f"[contact].{key} is missing: required with model = 'elastic'")
     try:
         return ElasticSettings(
-            pressure=v["pressure"], modulus=v["modulus"], hardness=v["hardness"],
+            pressure=v["pressure"][0], modulus=v["modulus"], hardness=v["hardness"],
             stations=settings.stations, mu_definition=settings.mu_definition,
             on_invalid=settings.on_invalid,
         )  # fmt: skip
     except ParameterError as exc:
         raise InputError(f"[contact].{exc}") from None
+
+
+def _lattice_pressure(
+    v: dict[str, Any], settings: LatticeSettings, load_given: bool
+) -> LatticeSettings:
+    """The lattice at ``[contact].pressure``: its load per spring from stiffness_per_area."""
+    kappa = v["stiffness_per_area"]
+    at_pressure = "lattice" in v["model"] and v["pressure"] is not None
+    if not at_pressure:
+        if kappa is not None:
+            raise InputError(
+                f"[contact].stiffness_per_area = {kappa!r} is invalid here: allowed only with "
+                "model 'lattice' and a [contact].pressure"
+            )
+        return settings
+    if kappa is None:
+        raise InputError(
+            "[contact].stiffness_per_area is missing: required for model 'lattice' at a "
+            "[contact].pressure (Pa/m, the springs' stiffness per nominal area; the load "
+            "per spring is pressure * k_c / stiffness_per_area)"
+        )
+    if load_given or settings.control != "load":
+        key = "load" if load_given else "control"
+        raise InputError(
+            f"[sliding].{key} is invalid with [contact].pressure: allowed one way to load "
+            "the lattice (remove [sliding].load or [contact].pressure)"
+        )
+    try:
+        return replace(settings, load=v["pressure"][0] * settings.k_c / kappa)
+    except ParameterError as exc:
+        raise InputError(f"[contact].pressure: {exc}") from None
 
 
 def load_roughness(

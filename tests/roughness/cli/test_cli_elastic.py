@@ -55,9 +55,13 @@ def test_elastic_model_writes_contact_outputs(tmp_path: Path, check_summary) -> 
 @pytest.mark.parametrize(
     ("extra", "words"),
     [
-        ('[contact]\nmodel = ["lattice", "elastic"]\n', ["model", "string"]),
-        ('[contact]\nmodel = "elastic"\npressure = [1e6, 2e6]\nmodulus = 1e9\n', ["pressure"]),
-        ("[contact]\npressure = 1e6\n", ["pressure", "model = 'elastic'"]),
+        ('[contact]\nmodel = ["lattice", "elastic"]\n', ["pressure", "missing"]),
+        ('[contact]\nmodel = ["lattice", "plastic"]\n', ["model", "'plastic'"]),
+        (
+            '[contact]\nmodel = "elastic"\npressure = [1e6, -2e6]\nmodulus = 1e9\n',
+            ["pressure", "positive"],
+        ),
+        ("[contact]\npressure = 1e6\n", ["stiffness_per_area", "missing"]),
         (
             '[contact]\nmodel = "elastic"\npressure = -1.0\nmodulus = 1e9\n',
             ["[contact].pressure = -1.0", "pressure > 0 Pa"],
@@ -113,3 +117,58 @@ def test_statistics_output(tmp_path: Path, check_summary) -> None:
     # rms_slope = 0.3 by the generator (spectral); SurfaceTopography's forward difference
     # reads the finest wavelengths a little lower
     assert 0.2 < summary["statistics"]["lower"]["rms_slope"] <= 0.3
+
+
+@pytest.mark.slow
+def test_comparison_and_sweep_write_their_files(tmp_path: Path, check_summary) -> None:
+    """model = ["lattice", "elastic"] at two pressures: comparison.csv/png; each row agrees
+    with the library's own runs of each model at that pressure."""
+    from frictionlab.roughness.elastic import elastic_polar
+    from frictionlab.roughness.lattice import friction_polar
+
+    path = tmp_path / "s.toml"
+    path.write_text(
+        BASE + '[contact]\nmodel = ["lattice", "elastic"]\npressure = [1e8, 3e8]\n'
+        "modulus = 1e11\nstiffness_per_area = 1e14\n[output]\nplot_step_deg = 30.0\n"
+    )
+    assert main(["roughness", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    out = tmp_path / "out"
+    assert sorted(p.name for p in out.iterdir()) == [
+        "comparison.csv", "comparison.png", "pressure_map.png", "summary.json"
+    ]  # fmt: skip
+    summary = check_summary(out / "summary.json")
+    rows = np.genfromtxt(out / "comparison.csv", delimiter=",", skip_header=1)
+    assert rows.shape == (4, 8)  # 2 pressures x 2 directions
+    assert rows[:, 0].tolist() == [1e8, 1e8, 3e8, 3e8] and rows[:, 1].tolist() == [0, 90, 0, 90]
+    surface = self_affine(0.8, (1e-4, 1e-4), (32, 32), rng=np.random.default_rng(1),
+                          rms_slope=0.3)  # fmt: skip
+    for k, p in enumerate((1e8, 3e8)):
+        lattice = friction_polar(surface, flat(), 0.3, [0.0, 90.0], load=p * 1.0 / 1e14)
+        elastic = elastic_polar(surface, flat(), 0.3, [0.0, 90.0], pressure=p, modulus=1e11)
+        block = rows[2 * k : 2 * k + 2]
+        np.testing.assert_allclose(block[:, 2], lattice.mu, rtol=1e-12)
+        np.testing.assert_allclose(block[:, 5], elastic.mu, rtol=1e-6)
+        assert block[0, 7] == pytest.approx(elastic.contact_fraction_mean)
+    runs = summary["contact"]["runs"]
+    assert [(r["model"], r["pressure_pa"]) for r in runs] == [
+        ("lattice", 1e8), ("lattice", 3e8), ("elastic", 1e8), ("elastic", 3e8)
+    ]  # fmt: skip
+    # more load, more contact, in both models
+    assert runs[1]["contact_fraction"] > runs[0]["contact_fraction"]
+    assert runs[3]["contact_fraction"] > runs[2]["contact_fraction"]
+
+
+def test_lattice_pressure_sweep_writes_sweep_files(tmp_path: Path, check_summary) -> None:
+    path = tmp_path / "s.toml"
+    path.write_text(
+        BASE + "[contact]\npressure = [1e8, 2e8, 4e8]\nstiffness_per_area = 1e14\n"
+        "[output]\nplot_full_circle = false\n"
+    )
+    assert main(["roughness", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    out = tmp_path / "out"
+    assert sorted(p.name for p in out.iterdir()) == ["summary.json", "sweep.csv", "sweep.png"]
+    summary = check_summary(out / "summary.json")
+    loads = [r["load_per_spring_N"] for r in summary["contact"]["runs"]]
+    assert loads == pytest.approx([1e-6, 2e-6, 4e-6])
+    header = (out / "sweep.csv").read_text().splitlines()[0]
+    assert "contact_fraction_lattice" in header and "elastic" not in header

@@ -58,7 +58,12 @@ def test_measured_section(tmp_path) -> None:
     section = measured_section(tmp_path)
     assert section.title == "Lattice-spring roughness: a measured topography file"
     paths = [f.path for f in section.figures]
-    assert paths == [f"{FOLDER}/measured_polar.png", f"{FOLDER}/measured_multiscale.png"]
+    assert paths == [
+        f"{FOLDER}/measured_polar.png",
+        f"{FOLDER}/measured_multiscale.png",
+        f"{FOLDER}/measured_statistics.png",
+        f"{FOLDER}/measured_models.png",
+    ]
     for fig in section.figures:
         assert (tmp_path / fig.path).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
         caption = fig.caption.strip()
@@ -68,4 +73,8 @@ def test_measured_section(tmp_path) -> None:
     assert np.all(np.asarray(table["valid"]))
     mu = np.asarray(table["mu_over_mu0"], dtype=float).reshape(4, 3)
     assert np.all(mu >= 1.0)  # rough bands only add friction to a flat counter-face
+    models = read_csv(tmp_path / FOLDER / "measured_models.csv")
+    for key in ("mu_lattice", "mu_elastic"):  # rough on flat: friction rises above mu0
+        assert np.all(np.asarray(models[key], dtype=float) > 0.3)
+    assert "touches" in section.figures[3].caption
     assert section.parameters

@@ -90,6 +90,20 @@ def test_large_fill_fraction_warns() -> None:
     assert not any("fill_missing" in w for w in small.warnings)
 
 
+def test_fill_warning_counts_isolated_measured_points() -> None:
+    """frt-2's case: measured pixels alone inside a gap become cones once filled."""
+    heights = _map()
+    mask = np.zeros(heights.shape, dtype=bool)
+    mask[:16, :] = True  # 25 % undefined
+    lone = [(3, 5), (8, 20), (12, 40)]
+    for i, j in lone:
+        mask[i, j] = False  # measured, every neighbour missing
+    mask[5, 50] = mask[5, 51] = False  # a measured pair: not alone
+    filled = _prepare(_topo(np.ma.masked_array(heights, mask)), fill_missing=True)
+    assert filled.info["isolated_measured_points"] == len(lone)
+    assert any("3 measured points stand alone" in w and "cones" in w for w in filled.warnings)
+
+
 def test_window_on_a_non_square_map_is_separable() -> None:
     nx, ny = 64, 16
     heights = _map(nx, ny)

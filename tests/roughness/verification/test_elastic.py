@@ -222,3 +222,20 @@ def test_invalid_contact_raises_or_masks() -> None:
     polar = elastic_polar(w, flat(), 0.7, [0.0, 90.0], on_invalid="mask", **kwargs)
     assert not polar.valid[0] and polar.valid[1]
     assert math.isnan(polar.mu[0])
+
+
+def test_pressure_sweep_warm_start_gives_the_cold_solutions_in_fewer_iterations() -> None:
+    """Each pressure of a sweep starts from the previous pressure field: same answer as
+    a solve from scratch (to the solver's tolerance), fewer conjugate-gradient steps."""
+    lam, n = 1e-4, 128
+    heights = _anisotropic_self_affine(n, lam, np.random.default_rng(5))
+    heights *= 1e-6 / np.std(heights)
+    surface = from_array(heights, (lam, lam))
+    pressures = [1.0e6, 1.05e6, 1.1e6]
+    swept = pressure_sweep(surface, flat(), 0.2, [0, 90], pressures, modulus=E_STAR)
+    for p, polar in zip(pressures, swept, strict=True):
+        cold = elastic_polar(surface, flat(), 0.2, [0, 90], pressure=p, modulus=E_STAR)
+        assert polar.contact_fraction_mean == pytest.approx(cold.contact_fraction_mean, abs=2e-3)
+        np.testing.assert_allclose(polar.mu, cold.mu, atol=1e-4)
+        if p > pressures[0]:
+            assert polar.states[0].iterations < 0.7 * cold.states[0].iterations
