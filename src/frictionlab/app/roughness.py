@@ -619,7 +619,7 @@ def _input_files(scenario_path: Path, data: dict[str, Any]) -> list[Path]:
 
 
 def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:
-    from frictionlab.plotting.roughness import figure_png_bytes, scenario_figure
+    from frictionlab.plotting.roughness import figure_png_bytes, mirrored_scans, scenario_figure
 
     fig = scenario_figure(
         plot_polar,
@@ -627,6 +627,7 @@ def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:
         scenario.upper,
         requested=scenario.beta_deg,
         title=scenario.title or None,
+        scans=mirrored_scans(scenario.sources),
     )
     return figure_png_bytes(fig)
 
