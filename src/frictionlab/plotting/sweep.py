@@ -29,6 +29,7 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
     ][:MAX_PANELS]  # fmt: skip
     fig = new_figure(5.0 * max(1, min(len(names), 2)), 3.6 * max(1, (len(names) + 1) // 2))
     ok = table[table["status"] == "ok"]
+    units = table.attrs.get("units", {})
     x_key = keys[0] if keys and _numeric(ok[keys[0]]) else None
     groups = [k for k in keys if k != x_key][:3]
     if not names:
@@ -46,8 +47,8 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
         positive = x_key is not None and bool((ok[x_key].astype(float) > 0).all())
         if positive and ok[x_key].astype(float).max() >= 100 * ok[x_key].astype(float).min():
             ax.set_xscale("log")
-        ax.set_xlabel(x_key or "case")
-        ax.set_ylabel(name)
+        ax.set_xlabel(_titled(x_key, units) if x_key else "case")
+        ax.set_ylabel(_titled(name, units))
         ax.grid(alpha=0.3)
         if groups and i == 0:
             ax.legend(fontsize=7)
@@ -56,6 +57,11 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
     fig.suptitle(f"{title or 'sweep'}: {len(ok)} of {len(table)} cases{note}", fontsize=10)
     readable_log_ticks(fig)
     return fig
+
+
+def _titled(name: str, units: Any) -> str:
+    unit = units.get(name)
+    return name if unit is None else f"{name} [{unit}]"
 
 
 def _numeric(column: Any) -> bool:
