@@ -72,6 +72,7 @@ def test_a_fixed_offset_misplaced_by_the_recording_start_fits_worse(tmp_path: Pa
     _late_recording(tmp_path)
     (curve,) = load_calibrate(_config(tmp_path)).curves
     h = simulate(true_params(), PROGRAM, curve.initial)
+
     def rms(offset: float) -> float:
         model = np.interp(curve.time + offset, h.time[:, 0], h.friction_ratio[:, 0])
         return float(np.sqrt(np.mean((model - curve.friction_ratio) ** 2)))

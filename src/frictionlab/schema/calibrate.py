@@ -108,7 +108,8 @@ DATA = Section("data", (
     Field("weight", NUMBER, "weight of this curve in the fit", "", 1.0, low=0, open="low"),
     Field("sep", STRING, "delimiter (default: sniffed among tab ; , |)", "", None),
     Field("decimal", STRING, "decimal mark (default: sniffed)", "", None, choices=(".", ",")),
-    Field("encoding", STRING, "text encoding (default: by BOM, else UTF-8, else cp1252)", "",
+    Field("encoding", STRING, "text encoding (default: by BOM, else UTF-16 by its NUL "
+          "bytes, else UTF-8, else cp1252)", "",
           None),
     Field("reciprocating", BOOL, "the friction ratio changes sign with each stroke", "", False),
     Field("segment_weights", listed(float, "number"), "weight of each [[data.program]] "
