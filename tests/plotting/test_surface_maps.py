@@ -48,7 +48,7 @@ def test_the_demo_and_cli_figure_draw_the_scan_not_the_double() -> None:
     )
     (image,) = [im for ax in fig.axes for im in ax.get_images()]
     assert image.get_extent()[1] == pytest.approx(100.0)
-    assert "the scan; mirrored for the model" in image.axes.get_title()
+    assert "the scan (mirrored for the model)" in image.axes.get_title()
 
 
 def test_unmirrored_maps_keep_their_period_and_units_follow_the_scale() -> None:

@@ -286,7 +286,7 @@ def scenario_figure(
         scan = scans.get(side)
         heading = f"{side} ({role}): {surface.kind}"
         if scan is not None:
-            heading += " (the scan; mirrored for the model)"
+            heading += "\nthe scan (mirrored for the model)"
         plot_surface(
             surface, ax=fig.add_subplot(grid[row, 1]), title=heading, length=cell, scan=scan
         )
