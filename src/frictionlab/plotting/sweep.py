@@ -43,7 +43,7 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
             x = part[x_key].to_numpy(float) if x_key else part["case"].to_numpy(float)
             y = part[name].to_numpy(float)
             order = np.argsort(x)
-            ax.plot(x[order], y[order], marker="o", label=_label(groups, label))
+            ax.plot(x[order], y[order], marker="o", label=_label(groups, label, units))
         positive = x_key is not None and bool((ok[x_key].astype(float) > 0).all())
         if positive and ok[x_key].astype(float).max() >= 100 * ok[x_key].astype(float).min():
             ax.set_xscale("log")
@@ -72,8 +72,12 @@ def _numeric(column: Any) -> bool:
     return len(column) > 0
 
 
-def _label(groups: list[str], value: Any) -> str | None:
+def _label(groups: list[str], value: Any, units: Any) -> str | None:
     if not groups:
         return None
     values = value if isinstance(value, tuple) else (value,)
-    return ", ".join(f"{k} = {v}" for k, v in zip(groups, values, strict=False))
+    shown = (
+        f"{k} = {v}" + (f" {units[k]}" if units.get(k) not in (None, "-") else "")
+        for k, v in zip(groups, values, strict=False)
+    )
+    return ", ".join(shown)
