@@ -244,10 +244,13 @@ class Objective:
                 except FrictionlabError:
                     values = None
             if values is None:
-                base = self._run(columns[:, [0]], curve)[0]
+                found: list[float] = []
+                base = self._run(columns[:, [0]], curve, found)[0]
                 rows = [base]
+                # the perturbations at the base's offset, as in the batched run
+                alone = replace(curve, time_offset=found[0], offset_bounds=None) if found else curve
                 for k in range(1, p + 1):
-                    rows.append(self._column_or_flip(theta, h, k - 1, curve))
+                    rows.append(self._column_or_flip(theta, h, k - 1, alone))
                 values = np.stack(rows)
             blocks.append(w[:, None] * (values[1:] - values[0]).T / h)
         return np.vstack(blocks)
