@@ -63,6 +63,23 @@ def test_no_release_gives_zero_and_full_release_the_width() -> None:
     assert front.tolist() == [0.0, WIDTH]
 
 
+def test_a_3d_block_measures_the_front_on_the_mid_depth_line() -> None:
+    # three lines of points at y = 0, 5, 10 mm, listed out of x order; only the middle
+    # line has a released zone (up to between x = 30 and 50 mm)
+    xs = np.array([0.05, 0.01, 0.03, 0.07, 0.09])
+    x = np.tile(xs, 3)
+    y = np.repeat([0.0, 0.005, 0.01], xs.size)
+    R = np.full((1, x.size), 0.5)
+    middle = y == 0.005
+    R[0, middle & (x < 0.04)] = 1.0
+    h = _history(R, np.ones((1, x.size), dtype=np.int8), x)
+    h.y = y
+    h.nodes = np.array([[0.0, WIDTH], [0.0, 0.01], [0.0, 0.02]])
+    assert h.dim == 3
+    expected = 0.03 + (1.0 - 0.99) / (1.0 - 0.5) * (0.05 - 0.03)
+    assert slip_front(h, 0.99)[0] == pytest.approx(expected, abs=1e-15)
+
+
 def test_front_of_a_first_slide_grows_monotonically() -> None:
     history = run_contact(pmma_block(element_size=0.005), law(), NORMAL, SLIDE)
     assert history.success
