@@ -64,3 +64,25 @@ def test_a_very_elongated_map_says_it_is_not_to_scale() -> None:
     ax = plot_surface(sinusoid(1e-6, (1e-3, 1e-5)), points=20)
     assert ax.get_aspect() == "auto"
     assert "not to scale" in ax.get_title()
+
+
+def test_the_elastic_pressure_map_of_a_mirrored_scan_shows_the_scan(monkeypatch) -> None:
+    from types import SimpleNamespace
+
+    from frictionlab.app import roughness as app
+
+    drawn = []
+    monkeypatch.setattr(
+        "frictionlab.plotting.roughness.figure_png_bytes", lambda fig: drawn.append(fig) or b""
+    )
+    pressure = np.arange(48 * 24, dtype=float).reshape(48, 24)  # the doubled grid
+    polar = SimpleNamespace(
+        states=[SimpleNamespace(pressure=pressure)],
+        geometry=SimpleNamespace(cell=(480e-6, 240e-6), dimension=2),
+        settings=SimpleNamespace(pressure=1e6),
+        contact_fraction_mean=0.1,
+    )
+    app._pressure_png(polar, [240e-6, 120e-6])
+    (image,) = drawn[0].axes[0].get_images()
+    assert image.get_extent() == pytest.approx((0.0, 240.0, 0.0, 120.0))
+    np.testing.assert_array_equal(np.asarray(image.get_array()), pressure[:24, :12].T / 1e6)
