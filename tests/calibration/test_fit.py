@@ -83,20 +83,20 @@ def test_uncertainty_of_a_linear_model_matches_regression_formulas() -> None:
     se_b = np.sqrt(s2 / sxx)
     se_a = np.sqrt(s2 * (1 / 11 + t.mean() ** 2 / sxx))
     lin = FitSpace(("mu_s", "mu_k"), np.zeros(2), np.full(2, np.inf))
-    stderr, _, corr = uncertainty(X, cost, lin, np.array([1.0, 2.0]))
+    stderr, _, corr, _ = uncertainty(X, cost, lin, np.array([1.0, 2.0]))
     np.testing.assert_allclose(stderr, [se_a, se_b], rtol=1e-12)
     np.testing.assert_allclose(corr[0, 1], -t.mean() / np.sqrt(np.mean(t**2)), rtol=1e-12)
     # Log parameters: the delta method gives stderr(x) = x stderr(ln x).
     logs = FitSpace(("u", "kappa"), np.zeros(2), np.full(2, np.inf))
     x = np.array([3.0, 0.5])
-    stderr_log, _, _ = uncertainty(X, cost, logs, x)
+    stderr_log, _, _, _ = uncertainty(X, cost, logs, x)
     np.testing.assert_allclose(stderr_log, x * np.array([se_a, se_b]), rtol=1e-12)
 
 
 def test_undetermined_parameter_gets_infinite_stderr() -> None:
     X = np.column_stack([np.ones(5), np.zeros(5)])  # the second parameter changes nothing
     lin = FitSpace(("mu_s", "mu_k"), np.zeros(2), np.full(2, np.inf))
-    stderr, _, corr = uncertainty(X, 0.5, lin, np.ones(2))
+    stderr, _, corr, _ = uncertainty(X, 0.5, lin, np.ones(2))
     assert np.isfinite(stderr[0]) and np.isinf(stderr[1])
     assert np.isnan(corr[0, 1])
 

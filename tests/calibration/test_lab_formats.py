@@ -46,6 +46,15 @@ def utf16_tab_forces(c: Curve) -> bytes:
     return "\n".join(lines).encode("utf-16")
 
 
+def utf16_without_bom(c: Curve, byteorder: str = "le") -> bytes:
+    """UTF-16 as some loggers write it, with no byte-order mark, degC in a title."""
+    assert c.slip is not None
+    lines = ["time [s];slip [mm];COF [-];Temperature [°C]"]
+    for t, s, r in zip(c.time, c.slip, c.friction_ratio, strict=True):
+        lines.append(";".join([_num(t), _num(s * 1e3), _num(r), "23.5"]))
+    return ("\r\n".join(lines) + "\r\n").encode(f"utf-16-{byteorder}")
+
+
 def bom_units_row(c: Curve) -> bytes:
     """UTF-8 with BOM, commas, '#' comments, an index column and a units row."""
     assert c.slip is not None
@@ -76,6 +85,8 @@ def own_history_titles(c: Curve) -> bytes:
 FORMATS: dict[str, Callable[[Curve], bytes]] = {
     "semicolon_decimal_comma_cp1252": semicolon_decimal_comma_cp1252,
     "utf16_tab_forces": utf16_tab_forces,
+    "utf16le_without_bom": utf16_without_bom,
+    "utf16be_without_bom": lambda c: utf16_without_bom(c, "be"),
     "bom_units_row": bom_units_row,
     "pipe_in_units": pipe_in_units,
     "own_history_titles": own_history_titles,

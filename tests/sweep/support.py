@@ -4,6 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pandas as pd
+
+from frictionlab._frames import split_title
+
 BASE = """\
 title = "tiny slide-hold-slide"
 [law]
@@ -44,3 +48,9 @@ def write_sweep(tmp: Path, body: str, steps: int = 20) -> Path:
     path = tmp / "sweep.toml"
     path.write_text(f'base = "base.toml"\n{body}')
     return path
+
+
+def read_sweep_table(out: Path) -> pd.DataFrame:
+    """``out/sweep.csv`` by pandas, columns named without their ``[unit]``."""
+    table = pd.read_csv(out / "sweep.csv", keep_default_na=False)
+    return table.rename(columns=lambda title: split_title(title)[0])

@@ -160,5 +160,9 @@ def test_figures_and_table() -> None:
     import pandas as pd
 
     back = pd.read_csv(io.StringIO(format_table(table)), keep_default_na=False)
-    assert back["error"].tolist() == ["", "bad, news #1"]
-    assert back["status"].tolist() == ["ok", "failed"]
+    assert list(back.columns) == [
+        "case [-]", "id [-]", "status [-]", "k.x", "peak_friction_ratio [-]", "seconds [s]",
+        "error [-]",
+    ]  # fmt: skip
+    assert back["error [-]"].tolist() == ["", "bad, news #1"]
+    assert back["status [-]"].tolist() == ["ok", "failed"]

@@ -17,7 +17,7 @@ import pytest
 
 from frictionlab.cli import main
 
-from .support import write_sweep
+from .support import read_sweep_table, write_sweep
 
 ROUGH = """\
 mu0 = 0.3
@@ -37,7 +37,7 @@ time_samples = 4
 
 
 def read_table(out: Path) -> pd.DataFrame:
-    return pd.read_csv(out / "sweep.csv", keep_default_na=False)
+    return read_sweep_table(out)
 
 
 @pytest.mark.slow

@@ -19,13 +19,12 @@ import time
 from collections.abc import Iterator
 from pathlib import Path
 
-import pandas as pd
 import pytest
 
 from frictionlab.cli import main
 from frictionlab.sweep import executors
 
-from .support import write_sweep
+from .support import read_sweep_table, write_sweep
 
 #: The longest a fake listener lives [s].
 LISTEN_S = 30.0
@@ -214,7 +213,7 @@ def test_a_lost_scheduler_is_one_line_exit_1_and_leaves_cases_pending(tmp_path: 
                 p.wait()
     assert sweep_proc.returncode == 1, err
     assert err.count("\n") == 1 and "lost the Dask scheduler" in err, err
-    table = pd.read_csv(out / "sweep.csv", keep_default_na=False)
+    table = read_sweep_table(out)
     done = table["status"] == "ok"
     assert done.sum() >= 1 and set(table["status"][~done]) == {"pending"}
     assert "failed" not in set(table["status"])

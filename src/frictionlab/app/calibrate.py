@@ -122,11 +122,16 @@ def fit_summary(run: CalibrationRun, outputs: list[str]) -> dict[str, Any]:
         }
     corr = [[_finite(v) for v in row] for row in fit.correlation]
     curves = []
-    for c, r, echo in zip(cfg.curves, fit.residuals, cfg.data_echo, strict=True):
+    for k, (c, r, echo) in enumerate(zip(cfg.curves, fit.residuals, cfg.data_echo, strict=True)):
+        offset = fit.offsets[k] if fit.offsets else None
+        offset_se = fit.offset_stderr[k] if fit.offset_stderr else None
         curves.append({
             "file": echo["file"], "samples": c.n_samples, "weight": c.weight,
             "units": echo["units"], "rms_residual": float(np.sqrt(np.mean(r**2))),
-            "max_abs_residual": float(np.max(np.abs(r))),
+            "max_abs_residual": float(np.max(np.abs(r))), "time_offset": c.time_offset,
+            "time_offset_fitted": offset is not None,
+            "time_offset_stderr": None if offset_se is None else _finite(offset_se),
+            "time_offset_bounds": echo.get("time_offset_bounds"),
         })  # fmt: skip
     profiles = {
         name: {
@@ -347,7 +352,12 @@ class Calibrate:
                         fit, cfg.curves, name, points=cfg.profile_points, progress=update
                     )
         fit = replace(fit, profiles=profiles)  # not_identified() reads the profiles
-        return CalibrationRun(cfg, fit, start_models, profiles)
+        # the outputs show each curve at its fitted offset, now fixed
+        curves = tuple(
+            c if o is None else replace(c, time_offset=o, offset_bounds=None)
+            for c, o in zip(cfg.curves, fit.offsets, strict=True)
+        )
+        return CalibrationRun(replace(cfg, curves=curves), fit, start_models, profiles)
 
     def files(self, job: Any, result: CalibrationRun, out: Path, plots: bool) -> list[Path]:
         return _files(out, result, job[1].parent)
@@ -372,6 +382,9 @@ class Calibrate:
             flag = "  not identified" if name in missing else ""
             print(f"{name:>10} {fit.start[j]:>12.5g} {fit.values[j]:>12.6g} {se:>10.3g} "
                   f"{rel:>7.1%}{flag}")  # fmt: skip
+        for c, offset, se in zip(cfg.curves, fit.offsets, fit.offset_stderr, strict=True):
+            if offset is not None:
+                print(f"{c.name}: time offset fitted {offset:.6g} s ± {se:.3g} s")
         print(f"residual std {np.sqrt(fit.residual_variance):.3g} (friction ratio)")
         for line in identifiability(fit, result.profiles):
             print("  " + line)

@@ -636,7 +636,7 @@ def _input_files(scenario_path: Path, data: dict[str, Any]) -> list[Path]:
 
 
 def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:
-    from frictionlab.plotting.roughness import figure_png_bytes, scenario_figure
+    from frictionlab.plotting.roughness import figure_png_bytes, mirrored_scans, scenario_figure
 
     fig = scenario_figure(
         plot_polar,
@@ -644,6 +644,7 @@ def _png(scenario: RoughnessScenario, plot_polar: FrictionPolar) -> bytes:
         scenario.upper,
         requested=scenario.beta_deg,
         title=scenario.title or None,
+        scans=mirrored_scans(scenario.sources),
     )
     return figure_png_bytes(fig)
 
@@ -755,7 +756,7 @@ def _elastic_files(job: RoughnessJob, whole: Any, plots: bool) -> dict[str, str 
     files: dict[str, str | bytes] = {"polar.csv": format_csv(columns, {"beta_deg": "deg"}, header)}
     if plots:
         files["polar.png"] = _png(scenario, whole)
-        files["pressure_map.png"] = _pressure_png(whole)
+        files["pressure_map.png"] = _pressure_png(whole, _pressure_scan(scenario))
     return files
 
 
@@ -789,30 +790,49 @@ def _elastic_summary(job: RoughnessJob, whole: Any, seconds: float) -> dict[str,
     }
 
 
-def _pressure_png(polar: Any) -> bytes:
-    """The contact pressure of the first shift (a map, or a profile's line)."""
+def _pressure_scan(scenario: RoughnessScenario) -> list[float] | None:
+    """The scan sizes (m) to which the pressure map is cut: a mirrored measured map against
+    a flat face (the grid is then the map's); None otherwise."""
+    from frictionlab.plotting.roughness import mirrored_scans
+
+    scans = mirrored_scans(scenario.sources)
+    other = {"lower": scenario.upper, "upper": scenario.lower}
+    mine = [side for side in scans if other[side].kind == "flat"]
+    return scans[mine[0]] if len(scans) == 1 and mine else None
+
+
+def _pressure_png(polar: Any, scan: list[float] | None = None) -> bytes:
+    """The contact pressure of the first shift (a map, or a profile's line); ``scan`` (m):
+    only that part from the origin (the measured scan of a mirrored map)."""
     from frictionlab.plotting.roughness import figure_png_bytes, new_figure
 
     fig = new_figure(5.5, 4.5)
     ax = fig.add_subplot()
     state = polar.states[0]
     cell = [c for c in polar.geometry.cell if c is not None]
-    if state.pressure.ndim == 2 and polar.geometry.dimension == 2:
+    pressure = np.asarray(state.pressure)
+    if scan is not None:
+        keep = [max(1, round(n * min(s / c, 1.0))) for n, s, c in
+                zip(pressure.shape, scan, cell, strict=False)]  # fmt: skip
+        cell = [c * k / n for c, k, n in zip(cell, keep, pressure.shape, strict=False)]
+        pressure = pressure[tuple(slice(0, k) for k in keep)]
+    if pressure.ndim == 2 and polar.geometry.dimension == 2:
         image = ax.imshow(
-            state.pressure.T / 1e6, origin="lower", cmap="magma",
+            pressure.T / 1e6, origin="lower", cmap="magma",
             extent=(0.0, cell[0] * 1e6, 0.0, cell[1] * 1e6),
         )  # fmt: skip
         fig.colorbar(image, ax=ax, label="contact pressure [MPa]")
         ax.set_ylabel("y [um]")
     else:
-        p = np.ravel(state.pressure)
+        p = np.ravel(pressure)
         x = (np.arange(p.size) + 0.5) * cell[0] / p.size
         ax.plot(x * 1e6, p / 1e6, lw=1.0)
         ax.set_ylabel("contact pressure [MPa]")
     ax.set_xlabel("x [um]")
     ax.set_title(
         f"elastic contact: {polar.settings.pressure:g} Pa nominal, "
-        f"{100 * polar.contact_fraction_mean:.3g} % in contact",
+        f"{100 * polar.contact_fraction_mean:.3g} % in contact"
+        + ("\nthe scan (mirrored for the model)" if scan is not None else ""),
         fontsize=9,
     )
     return figure_png_bytes(fig)

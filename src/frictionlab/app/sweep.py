@@ -220,7 +220,9 @@ class _TableWriter:
         for cid, record in records.items():
             if record["status"] == "ok" and cid not in self.figures:
                 self.figures[cid] = self._figures(cid)
-        self.table = sweep_table(self.spec.cases, self.spec.keys, records, self.figures)
+        self.table = sweep_table(
+            self.spec.cases, self.spec.keys, records, self.figures, self.command
+        )
         write_text_atomic(self.out / TABLE, format_table(self.table))
         self.last = now
 

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import time as _time
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -145,6 +145,7 @@ class Objective:
         self.runs = 0
         self.sqrt_w = [np.sqrt(c.sample_weights()) for c in self.curves]
         self.n_residuals = sum(c.n_samples for c in self.curves)
+        self.offsets: list[float | None] = []
 
     def _tick(self) -> None:
         self.runs += 1
@@ -152,7 +153,9 @@ class Objective:
             self.total = max(self.total, self.runs)
             self.progress(self.runs, self.total)
 
-    def _run(self, columns: np.ndarray, curve: Curve) -> np.ndarray:
+    def _run(
+        self, columns: np.ndarray, curve: Curve, offsets: list[float] | None = None
+    ) -> np.ndarray:
         self._tick()
         return evaluate_columns(
             self.base,
@@ -161,11 +164,36 @@ class Objective:
             curve,
             accuracy=self.accuracy,
             max_halvings=self.max_halvings,
+            offsets=offsets,
         )
 
     def model(self, x: np.ndarray) -> list[np.ndarray]:
-        """Model friction ratio of every curve at physical values ``x`` (p,)."""
-        return [self._run(x[:, None], c)[0] for c in self.curves]
+        """Model friction ratio of every curve at physical values ``x`` (p,); the offsets
+        of the curves that fit theirs are left in :attr:`offsets` (None for the others)."""
+        models, self.offsets = [], []
+        for c in self.curves:
+            found: list[float] = []
+            models.append(self._run(x[:, None], c, found)[0])
+            self.offsets.append(found[0] if found else None)
+        return models
+
+    def offset_columns(self, x: np.ndarray) -> np.ndarray:
+        """(n, q) Jacobian of the weighted residuals with respect to the q fitted offsets
+        at law ``x`` and the offsets of the last :meth:`model` call: the model's slope in
+        time at each sample (central differences on the interpolated run)."""
+        fitted = [j for j, o in enumerate(self.offsets) if o is not None]
+        out = np.zeros((self.n_residuals, len(fitted)))
+        starts = np.cumsum([0] + [c.n_samples for c in self.curves])
+        for col, j in enumerate(fitted):
+            curve, offset = self.curves[j], self.offsets[j]
+            assert offset is not None and curve.offset_bounds is not None
+            h = 1e-6 * max(float(np.ptp(curve.time)), 1e-300)
+            ahead, behind = (
+                self._run(x[:, None], replace(curve, time_offset=offset + d, offset_bounds=None))[0]
+                for d in (h, -h)
+            )
+            out[starts[j] : starts[j + 1], col] = self.sqrt_w[j] * (ahead - behind) / (2 * h)
+        return out
 
     def residuals(self, theta: np.ndarray) -> np.ndarray:
         x = self.space.from_theta(theta)
@@ -216,10 +244,13 @@ class Objective:
                 except FrictionlabError:
                     values = None
             if values is None:
-                base = self._run(columns[:, [0]], curve)[0]
+                found: list[float] = []
+                base = self._run(columns[:, [0]], curve, found)[0]
                 rows = [base]
+                # the perturbations at the base's offset, as in the batched run
+                alone = replace(curve, time_offset=found[0], offset_bounds=None) if found else curve
                 for k in range(1, p + 1):
-                    rows.append(self._column_or_flip(theta, h, k - 1, curve))
+                    rows.append(self._column_or_flip(theta, h, k - 1, alone))
                 values = np.stack(rows)
             blocks.append(w[:, None] * (values[1:] - values[0]).T / h)
         return np.vstack(blocks)
@@ -293,6 +324,9 @@ class FitResult(TableResult):
         Per curve, the (n,) weight of each sample's squared residual.
     starts:
         Starting points tried (the best one is kept).
+    offsets, offset_stderr:
+        Per curve, the fitted time offset [s] and its standard error (None for a curve
+        with a fixed offset). The law's standard errors account for the fitted offsets.
     """
 
     params: SubloadingParams
@@ -317,10 +351,13 @@ class FitResult(TableResult):
     profiles: dict[str, Any] = field(default_factory=dict)
     weights: tuple[np.ndarray, ...] = ()
     starts: int = 1
+    offsets: tuple[float | None, ...] = ()
+    offset_stderr: tuple[float | None, ...] = ()
 
     @property
     def dof(self) -> int:
-        return self.n_points - len(self.names)
+        """Samples less the fitted parameters (the law's and the fitted time offsets)."""
+        return self.n_points - len(self.names) - sum(o is not None for o in self.offsets)
 
     @property
     def residual_variance(self) -> float:
@@ -439,25 +476,38 @@ class FitResult(TableResult):
 
 
 def uncertainty(
-    jac_theta: np.ndarray, cost: float, space: FitSpace, x: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(stderr, covariance, correlation) in physical units from the Jacobian in theta.
+    jac_theta: np.ndarray,
+    cost: float,
+    space: FitSpace,
+    x: np.ndarray,
+    nuisance: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(stderr, covariance, correlation, nuisance stderr) in physical units from the
+    Jacobian in theta.
 
     ``cov_theta = s^2 (J^T J)^-1``, s^2 = 2 cost/(n - p); directions that the data do not
     determine (singular values below 1e-10 of the largest) get an infinite stderr.
+    ``nuisance`` (n, q): Jacobian columns of parameters fitted beside the law (the time
+    offsets); they join J, so the law's covariance is the marginal one, and their own
+    standard errors come back last.
     """
+    q = 0 if nuisance is None else nuisance.shape[1]
+    full = jac_theta if nuisance is None else np.hstack([jac_theta, nuisance])
     n, p = jac_theta.shape
-    s2 = 2.0 * cost / (n - p) if n > p else np.inf
-    _, sv, vt = np.linalg.svd(jac_theta, full_matrices=False)
-    keep = sv > 1e-10 * sv[0] if sv.size and sv[0] > 0 else np.zeros(p, dtype=bool)
+    s2 = 2.0 * cost / (n - p - q) if n > p + q else np.inf
+    _, sv, vt = np.linalg.svd(full, full_matrices=False)
+    keep = sv > 1e-10 * sv[0] if sv.size and sv[0] > 0 else np.zeros(p + q, dtype=bool)
     inv = (vt[keep].T / sv[keep] ** 2) @ vt[keep]
-    cov_theta = s2 * inv
+    undetermined = np.zeros(p + q, dtype=bool)
+    if not keep.all():
+        undetermined = np.any(np.abs(vt[~keep]) > 1e-8, axis=0)
+    cov_all = s2 * inv
+    extra = np.where(undetermined[p:], np.inf, np.sqrt(np.maximum(np.diag(cov_all)[p:], 0.0)))
+    undetermined = undetermined[:p]
+    cov_theta = cov_all[:p, :p]
     factor = space.jacobian_factor(x)
     cov = cov_theta * np.outer(factor, factor)
     var = np.diag(cov).copy()
-    undetermined = np.zeros(p, dtype=bool)
-    if not keep.all():
-        undetermined = np.any(np.abs(vt[~keep]) > 1e-8, axis=0)
     stderr = np.where(undetermined, np.inf, np.sqrt(np.maximum(var, 0.0)))
     with np.errstate(divide="ignore", invalid="ignore"):
         d = np.sqrt(np.diag(cov_theta))
@@ -465,7 +515,7 @@ def uncertainty(
     corr[undetermined, :] = np.nan
     corr[:, undetermined] = np.nan
     np.fill_diagonal(corr, 1.0)
-    return stderr, cov, corr
+    return stderr, cov, corr, extra
 
 
 def fit_law(
@@ -558,8 +608,12 @@ def fit_law(
         raise ConvergenceError(f"the fitted law does not run: {exc}", mask=np.ones(1)) from None
     r = obj._stack(models)
     cost = 0.5 * float(r @ r)
+    offsets = tuple(obj.offsets)
     jac = obj.jac(res.x)
-    stderr, cov, corr = uncertainty(jac, cost, space, x)
+    nuisance = obj.offset_columns(x) if any(o is not None for o in offsets) else None
+    stderr, cov, corr, nuisance_stderr = uncertainty(jac, cost, space, x, nuisance)
+    it = iter(nuisance_stderr)
+    offset_stderr = tuple(None if o is None else float(next(it)) for o in offsets)
     return FitResult(
         params=fitted,
         names=tuple(names),
@@ -582,6 +636,8 @@ def fit_law(
         theta_jacobian=jac,
         weights=tuple(c.sample_weights() for c in curves),
         starts=starts,
+        offsets=offsets,
+        offset_stderr=offset_stderr,
     )
 
 

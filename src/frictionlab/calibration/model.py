@@ -30,6 +30,7 @@ __all__ = [
     "LOG_BOUNDS",
     "Curve",
     "FitSpace",
+    "best_offset",
     "evaluate_columns",
     "model_at_samples",
     "program_duration",
@@ -89,6 +90,11 @@ class Curve:
         example to let short restart peaks count as much as long holds.
     time_offset:
         When the data's t = 0 falls in the programme's time [s] (model time = t + offset).
+    offset_bounds:
+        ``(low, high)`` [s] to estimate the offset from the data instead: a nuisance
+        parameter, profiled out for every law the fit tries (:func:`best_offset`);
+        ``time_offset`` is then unused. Not with ``segment_weights`` (the segment a sample
+        falls in would move during the fit).
     """
 
     name: str
@@ -100,6 +106,7 @@ class Curve:
     slip: np.ndarray | None = None
     segment_weights: tuple[float, ...] | None = None
     time_offset: float = 0.0
+    offset_bounds: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         sw = self.segment_weights
@@ -111,6 +118,19 @@ class Curve:
                 raise ParameterError("segment_weights", list(sw), "weights >= 0, one > 0")
         if not np.isfinite(self.time_offset):
             raise ParameterError("time_offset", self.time_offset, "a finite time [s]")
+        ob = self.offset_bounds
+        if ob is not None:
+            if len(ob) != 2 or not (np.isfinite(ob[0]) and np.isfinite(ob[1]) and ob[0] < ob[1]):
+                raise ParameterError(
+                    "time_offset_bounds", list(ob), "[low, high] finite times [s], low < high"
+                )
+            if sw is not None:
+                raise ParameterError(
+                    "segment_weights",
+                    list(sw),
+                    "none with time_offset = 'fit' (the "
+                    "segment of each sample would move with the fitted offset)",
+                )
 
     @property
     def n_samples(self) -> int:
@@ -191,8 +211,12 @@ def evaluate_columns(
     *,
     accuracy: float | None = None,
     max_halvings: int = 10,
+    offsets: list[float] | None = None,
 ) -> np.ndarray:
     """(K, n) model friction ratio at the curve's samples for K parameter sets.
+
+    A curve with ``offset_bounds`` is compared at the offset that fits the first column
+    best (:func:`best_offset`); that offset is appended to ``offsets`` when given.
 
     ``columns`` is (p, K): column k gives the values of ``names`` for contact point k;
     the K points run together in one driver run. Raises
@@ -215,7 +239,47 @@ def evaluate_columns(
             f"curve '{curve.name}': the driver failed ({history.message})",
             mask=np.ones(k, dtype=bool),
         )
-    return model_at_samples(history, curve.model_time)
+    if curve.offset_bounds is None:
+        return model_at_samples(history, curve.model_time)
+    # the offset of the first column (the base law) serves every column: the columns after
+    # it are the Jacobian's perturbations, taken at the base's optimal offset
+    offset = best_offset(history.time[:, 0], history.friction_ratio[:, 0], curve)
+    if offsets is not None:
+        offsets.append(offset)
+    return model_at_samples(history, curve.time + offset)
+
+
+#: Grid points of the first, coarse search of :func:`best_offset`.
+OFFSET_GRID = 401
+
+
+def best_offset(model_time: np.ndarray, model_ratio: np.ndarray, curve: Curve) -> float:
+    """The time offset [s] within ``curve.offset_bounds`` that minimises the curve's
+    weighted squared misfit to a model run ``(model_time, model_ratio)``.
+
+    The misfit is not convex in the offset (a peak can match either of two peaks), so a
+    grid of :data:`OFFSET_GRID` points over the bounds comes first, then Brent's bounded
+    method (:func:`scipy.optimize.minimize_scalar`) between the best point's neighbours.
+    The model is interpolated linearly between its steps.
+    """
+    from scipy.optimize import minimize_scalar
+
+    assert curve.offset_bounds is not None
+    lo, hi = curve.offset_bounds
+    weights = curve.sample_weights()
+
+    def misfit(offset: float) -> float:
+        r = np.interp(curve.time + offset, model_time, model_ratio) - curve.friction_ratio
+        return float(weights @ (r * r))
+
+    grid = np.linspace(lo, hi, OFFSET_GRID)
+    values = np.array([misfit(o) for o in grid])
+    k = int(np.argmin(values))
+    a, b = grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)]
+    found = minimize_scalar(misfit, bounds=(a, b), method="bounded",
+                            options={"xatol": 1e-12 * max(hi - lo, 1.0)})  # fmt: skip
+    best = float(found.x)
+    return best if misfit(best) <= values[k] else float(grid[k])
 
 
 def valid_column(base: SubloadingParams, names: Sequence[str], values: np.ndarray) -> bool:

@@ -15,7 +15,7 @@ import numpy as np
 
 from frictionlab._frames import TableResult
 
-__all__ = ["ContactHistory", "front_arrival", "slip_front"]
+__all__ = ["ContactHistory", "front_arrival", "front_line", "slip_front"]
 
 
 @dataclass(repr=False)
@@ -167,21 +167,53 @@ class ContactHistory(TableResult):
         return units
 
 
+def front_line(history: ContactHistory) -> np.ndarray:
+    """Indices of the contact points along which the front is measured, in order of x:
+    every point of a 2-D block; for a 3-D block the line nearest the middle of the depth."""
+    y = history.y
+    if history.dim == 3 and y.size:
+        middle = y[np.argmin(np.abs(y - 0.5 * (y.min() + y.max())))]
+        chosen = np.flatnonzero(np.isclose(y, middle))
+    else:
+        chosen = np.arange(history.x.size)
+    return chosen[np.argsort(history.x[chosen], kind="stable")]
+
+
 def slip_front(history: ContactHistory, ratio: float = 0.99) -> np.ndarray:
     """(S,) extent [m] of the sliding zone grown from the trailing edge ``x = 0``.
 
     A point is released when it slides in the normal sliding-yield state,
     ``R >= ratio`` (the subloading law slides plastically at every R > 0, so the status
     alone does not separate the precursor zone from the sub-sliding rest), or when it
-    has lifted off (open). The extent is the position of the first point that is
-    neither (the full width when none is left).
+    has lifted off (open). Per row, the front is the step ``[0, x_f)`` released, the rest
+    stuck, that misclassifies the least interface length (quadrature weights): a point
+    re-closing at the lift-off edge, briefly below ``ratio``, does not pull the front back
+    to the edge. The front then lies between the last point inside and the first point
+    outside, where R crosses ``ratio`` on the straight line between them (an open point
+    counts as R = 1). 0 when no point is released, the block's width when all are.
+    Measured along :func:`front_line`.
     """
-    sliding = ((ratio <= history.R) & (history.status == 1)) | (history.status == 2)
-    width = history.width
-    extent = np.empty(sliding.shape[0])
-    for k, row in enumerate(sliding):
-        stuck = np.flatnonzero(~row)
-        extent[k] = width if stuck.size == 0 else (history.x[stuck[0]] if stuck[0] > 0 else 0.0)
+    line = front_line(history)
+    x = history.x[line]
+    weight = np.abs(history.weight[line])
+    R = history.R[:, line]
+    status = history.status[:, line]
+    released = ((ratio <= R) & (status == 1)) | (status == 2)
+    zero = np.zeros((R.shape[0], 1))
+    # misclassified length of a front after the first k points, k = 0..P
+    stuck_inside = np.hstack([zero, np.cumsum(weight * ~released, axis=1)])
+    released_in = np.hstack([zero, np.cumsum(weight * released, axis=1)])
+    misfit = stuck_inside + (released_in[:, -1:] - released_in)
+    inside = np.argmin(misfit, axis=1)  # ties: the shortest zone
+    extent = np.where(inside == 0, 0.0, history.width)
+    effective = np.where(status == 2, 1.0, R)
+    rows = np.flatnonzero((inside > 0) & (inside < x.size))
+    k = inside[rows]
+    r_in, r_out = effective[rows, k - 1], effective[rows, k]
+    drop = r_in - r_out
+    fraction = np.divide(r_in - ratio, drop, out=np.full(rows.size, 0.5), where=drop > 0)
+    fraction = np.clip(fraction, 0.0, 1.0)
+    extent[rows] = x[k - 1] + fraction * (x[k] - x[k - 1])
     return extent
 
 

@@ -259,7 +259,7 @@ MEASURED_CUTOFFS = (150e-6, 60e-6, 25e-6)
 def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
     from frictionlab.demo.topography_file import ground_demo_path
     from frictionlab.plotting.multiscale import multiscale_figure
-    from frictionlab.plotting.roughness import scenario_figure
+    from frictionlab.plotting.roughness import mirrored_scans, scenario_figure
     from frictionlab.roughness.generators import flat
     from frictionlab.roughness.lattice import friction_polar
     from frictionlab.roughness.multiscale import multiscale_friction
@@ -286,7 +286,10 @@ def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
     polar = friction_polar(prepared.surface, flat(), MU0, betas)
     writer.table("measured_polar", polar.columns(), {"beta_deg": "deg"}, f"{path.name} on flat")
     ratio = polar.mu_over_mu0
-    fig = scenario_figure(polar, prepared.surface, flat(), title=f"{path.name} on a flat face")
+    fig = scenario_figure(
+        polar, prepared.surface, flat(), title=f"{path.name} on a flat face",
+        scans=mirrored_scans({"lower": info}),
+    )  # fmt: skip
     section.add_figure(
         writer.figure("measured_polar", fig),
         f"Sliding across the grooves (beta = 0) gives mu/mu0 = {ratio[0]:.4f}, along them "

@@ -2,8 +2,9 @@
 
 :func:`read_tribometer` accepts:
 
-* encodings by byte-order mark (UTF-8, UTF-16), else UTF-8, else cp1252 (Windows
-  "latin-1"); ``encoding`` forces one;
+* encodings by byte-order mark (UTF-8, UTF-16), else UTF-16 recognised by its NUL bytes
+  (an export written without a BOM), else UTF-8, else cp1252 (Windows "latin-1");
+  ``encoding`` forces one;
 * the delimiter (tab, ``;``, ``,``, ``|``) sniffed from the data lines, a decimal comma
   sniffed where the delimiter is not a comma (``sep`` and ``decimal`` force them);
 * free-text metadata lines before the header (skipped) and ``#`` comment lines;
@@ -146,10 +147,39 @@ def _decode(raw: bytes, encoding: str | None, where: str) -> str:
         return raw[len(codecs.BOM_UTF8) :].decode("utf-8", errors="replace")
     if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
         return raw.decode("utf-16", errors="replace")
+    utf16 = _utf16_by_nul_bytes(raw)
+    if utf16 is not None:
+        return raw.decode(utf16, errors="replace")
     try:
         return raw.decode("utf-8")
     except UnicodeDecodeError:
         return raw.decode("cp1252", errors="replace")
+
+
+#: Share of NUL bytes at one parity of byte position that marks UTF-16 without a BOM.
+UTF16_NUL_SHARE = 0.3
+
+
+def _utf16_by_nul_bytes(raw: bytes) -> str | None:
+    """``"utf-16-le"`` or ``"utf-16-be"`` for UTF-16 text written without a byte-order mark,
+    else None.
+
+    A lab export is mostly ASCII (digits, separators, titles); in UTF-16 every such
+    character is two bytes, one of them NUL, at odd positions (little-endian) or even ones
+    (big-endian). UTF-8 and the 8-bit code pages put no NUL in text. So: among the first
+    4 kB, at least :data:`UTF16_NUL_SHARE` of the bytes at one parity are NUL and at most
+    1 % at the other (a character such as U+4E00 has a NUL low byte).
+    """
+    sample = raw[: 4096 - 4096 % 2]
+    sample = sample[: len(sample) - len(sample) % 2]
+    if len(sample) < 4:
+        return None
+    even, odd = sample[0::2].count(0) / (len(sample) / 2), sample[1::2].count(0) / (len(sample) / 2)
+    if odd >= UTF16_NUL_SHARE and even <= 0.01:
+        return "utf-16-le"
+    if even >= UTF16_NUL_SHARE and odd <= 0.01:
+        return "utf-16-be"
+    return None
 
 
 def _fields(line: str, sep: str) -> list[str]:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from frictionlab.contact.history import ContactHistory, slip_front
+from frictionlab.contact.history import ContactHistory, front_line, slip_front
 from frictionlab.plotting.law import new_figure
 
 if TYPE_CHECKING:
@@ -69,15 +69,23 @@ def plot_interface_map(history: ContactHistory, ratio: float = 0.99, title: str 
     t = travel[rows] * UM
     # a 3-D block: the line of contact points nearest the middle of the depth
     y = history.y
-    line = np.isclose(y, y[np.argmin(np.abs(y - 0.5 * (y.min() + y.max())))])
+    line = front_line(history)
     x = history.x[line] * MM
     R = np.ma.masked_where(history.status[rows][:, line] == 2, history.R[rows][:, line])
     cmap = colormaps["viridis"].with_extremes(bad="0.75")
     extent = (x[0], x[-1], t[0], t[-1])
     im0 = axes[0].pcolormesh(x, t, R, cmap=cmap, vmin=0.0, vmax=1.0, shading="nearest")
     fig.colorbar(im0, ax=axes[0], label="R (grey: open)")
-    front = slip_front(history, ratio)[rows] * MM
-    axes[0].plot(front, t, color="w", lw=1.2, label=f"front: R ≥ {ratio:g}")
+    front = slip_front(history, ratio) * MM
+    # one line per stage that moves the top: a hold's front changes at a fixed travel
+    label: str | None = f"front: R ≥ {ratio:g}"
+    for stage in np.unique(history.stage[rows]):
+        mine = rows[history.stage[rows] == stage]
+        if mine.size and np.ptp(travel[mine]) > 0:
+            if mine[0] > 0 and history.stage[mine[0] - 1] > 0:
+                mine = np.concatenate([[mine[0] - 1], mine])  # joined to the stage before
+            axes[0].plot(front[mine], travel[mine] * UM, color="w", lw=1.2, label=label)
+            label = None
     peak = history.peak_index
     if peak in rows:
         axes[0].axhline(travel[peak] * UM, color="C3", lw=1.0, ls="--", label="peak force")

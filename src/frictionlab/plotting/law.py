@@ -14,6 +14,7 @@ import numpy as np
 
 from frictionlab.plotting._ticks import readable_log_ticks
 from frictionlab.plotting.save import save_figure
+from frictionlab.plotting.units import show_length_in
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -115,6 +116,13 @@ def _note_subset(ax: Axes, n: int, shown: np.ndarray) -> bool:
     return True
 
 
+def _legend_below(ax: Axes, **kwargs: Any) -> None:
+    """The legend below the axes (constrained layout makes room): it never hides a curve,
+    and matplotlib does not search the drawn data for the emptiest corner (``loc="best"``,
+    whose cost grows with the points drawn and which warns when it takes over a second)."""
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, **kwargs)
+
+
 def _point_styles(
     fig: Figure, axes: list[Axes], note_ax: Axes, history: Any, labels: Sequence[str]
 ) -> tuple[list[str | None], list[Any], np.ndarray, bool]:
@@ -176,14 +184,19 @@ def plot_friction(
     if log_time:
         ax_t.set_xscale("log")
     y_label = "friction ratio f_t1/f_n [-]" if planar else "friction ratio |f_t|/f_n [-]"
-    ax_s.set_xlabel("slip along e_1 [m]" if planar else "slip distance [m]")
+    shown_x = x[:, shown_idx]
+    show_length_in(
+        ax_s.xaxis, "slip along e_1" if planar else "slip distance",
+        float(np.nanmin(shown_x)) if shown_x.size else 0.0,
+        float(np.nanmax(shown_x)) if shown_x.size else 1.0,
+    )  # fmt: skip
     ax_s.set_ylabel(y_label)
     ax_t.set_xlabel("time [s] (log scale)" if log_time else "time [s]")
     ax_t.set_ylabel(y_label)
     for ax in (ax_s, ax_t):
         ax.grid(alpha=0.3)
     if any(names) or marked or subset:
-        ax_t.legend(fontsize=8, loc="best")
+        _legend_below(ax_t)
     if title:
         fig.suptitle(title)
     readable_log_ticks(fig)
@@ -253,7 +266,7 @@ def plot_traction_path(
     ax.set_xlabel("f_t1 / f_n [-]")
     ax.set_ylabel("f_t2 / f_n [-]")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8, loc="best")
+    _legend_below(ax)
     return ax
 
 
@@ -283,7 +296,7 @@ def plot_spring_slider(
     for ax in (ax_f, ax_v):
         ax.grid(alpha=0.3)
     if any(names) or subset:
-        ax_f.legend(fontsize=8, loc="best")
+        _legend_below(ax_f)
     readable_log_ticks(fig)
     return fig
 
@@ -295,7 +308,7 @@ def _log_x_finish(ax: Axes, xlabel: str, ylabel: str) -> Axes:
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
+    _legend_below(ax)
     readable_log_ticks(ax.figure)
     return ax
 
@@ -453,6 +466,6 @@ def plot_stability_map(
     ax.set_ylabel("peak-to-peak friction ratio, last quarter [-]")
     ax.set_title(f"V = {velocity:g} m/s", fontsize=9)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
+    _legend_below(ax)
     readable_log_ticks(ax.figure)
     return ax

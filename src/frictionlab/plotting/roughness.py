@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 import re
 import textwrap
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -26,6 +27,7 @@ if TYPE_CHECKING:
 __all__ = [
     "figure_png_bytes",
     "legend_label",
+    "mirrored_scans",
     "new_figure",
     "plot_family_lines",
     "plot_polar",
@@ -120,38 +122,80 @@ def plot_surface(
     points: int = 300,
     title: str | None = None,
     length: float | None = None,
+    scan: Sequence[float] | None = None,
 ) -> Axes:
-    """One period of a surface: a profile line (1-D) or a height image (2-D), in micrometres.
+    """A surface as a profile line (1-D) or a height image (2-D) at equal aspect, lengths in
+    the unit of their span (m, mm, um or nm).
 
-    ``length`` (m) is the x range drawn for a surface without period (flat); default 1 mm.
+    A sampled surface is drawn from its samples (one pixel per sample), an analytic one
+    evaluated on ``points`` per axis over one period. ``length`` (m) is the x range drawn
+    for a surface without period (flat); default 1 mm. ``scan`` (m, one size per axis)
+    draws only that part from the origin: for a measured map made periodic by mirroring
+    (:func:`~frictionlab.roughness.topography.prepare_topography`'s ``scan_sizes_m``), the
+    scan itself instead of its mirrored double. A 2-D image whose sides differ by more
+    than :data:`MAX_STRETCH` is stretched to fit and its title says so.
     """
+    from frictionlab.plotting.units import length_unit
+    from frictionlab.roughness.surface import SampledHeightMap, SampledProfile
+
     if ax is None:
         ax = new_figure(5.0, 3.5).add_subplot()
     lx, ly = surface.periods
     length_x = lx if lx is not None else (length if length is not None else 1e-3)
+    length_y = ly
+    if scan is not None:
+        length_x = min(float(scan[0]), length_x)
+        if length_y is not None and len(scan) > 1:
+            length_y = min(float(scan[1]), length_y)
+    heading = title or f"{surface.kind} (one period)"
     if surface.ndim == 1:
-        x = (np.arange(points) + 0.5) * length_x / points
-        z, _, _ = surface.evaluate(x)
-        ax.plot(x * 1e6, z * 1e6, lw=1.2)
-        ax.set_xlabel("x (um)")
-        ax.set_ylabel("z (um)")
+        if isinstance(surface, SampledProfile):
+            n = max(1, round(length_x / surface.size * surface.heights.size))
+            x = (np.arange(n) + 0.5) * surface.size / surface.heights.size
+            z = np.asarray(surface.heights[:n])
+        else:
+            x = (np.arange(points) + 0.5) * length_x / points
+            z = np.asarray(surface.evaluate(x)[0])
+        (xu, xs) = length_unit(0.0, length_x)
+        (zu, zs) = length_unit(z.min(), z.max()) if np.ptp(z) > 0 else (xu, xs)
+        ax.plot(x / xs, z / zs, lw=1.2)
+        ax.set_xlabel(f"x [{xu}]")
+        ax.set_ylabel(f"z [{zu}]")
     else:
-        assert ly is not None
-        x = ((np.arange(points) + 0.5) * length_x / points)[:, None]
-        y = ((np.arange(points) + 0.5) * ly / points)[None, :]
-        z, _, _ = surface.evaluate(x, y)
+        assert length_y is not None
+        width, height = float(length_x), float(length_y)
+        if isinstance(surface, SampledHeightMap):
+            nx, ny = surface.heights.shape
+            cx = max(1, round(width / surface.sizes[0] * nx))
+            cy = max(1, round(height / surface.sizes[1] * ny))
+            z = np.asarray(surface.heights[:cx, :cy])
+            width, height = cx * surface.sizes[0] / nx, cy * surface.sizes[1] / ny
+        else:
+            x = ((np.arange(points) + 0.5) * width / points)[:, None]
+            y = ((np.arange(points) + 0.5) * height / points)[None, :]
+            z = np.asarray(surface.evaluate(x, y)[0])
+        unit, scale = length_unit(0.0, max(width, height))
+        z_unit, z_scale = length_unit(float(z.min()), float(z.max()))
+        stretch = max(width, height) / min(width, height)
         image = ax.imshow(
-            z.T * 1e6,
+            z.T / z_scale,
             origin="lower",
-            extent=(0.0, length_x * 1e6, 0.0, ly * 1e6),
-            aspect="auto",
+            extent=(0.0, width / scale, 0.0, height / scale),
+            aspect="equal" if stretch <= MAX_STRETCH else "auto",
+            interpolation="nearest",
             cmap="viridis",
         )
-        ax.figure.colorbar(image, ax=ax, label="z (um)")
-        ax.set_xlabel("x (um)")
-        ax.set_ylabel("y (um)")
-    ax.set_title(title or f"{surface.kind} (one period)", fontsize=9)
+        ax.figure.colorbar(image, ax=ax, label=f"z [{z_unit}]")
+        ax.set_xlabel(f"x [{unit}]")
+        ax.set_ylabel(f"y [{unit}]")
+        if stretch > MAX_STRETCH:
+            heading += f" (not to scale: y stretched {width / height:.3g} x)"
+    ax.set_title(heading, fontsize=9)
     return ax
+
+
+#: Largest side ratio of a height image drawn at equal aspect.
+MAX_STRETCH = 10.0
 
 
 def legend_label(case: str) -> str:
@@ -224,21 +268,41 @@ def scenario_figure(
     *,
     requested: np.ndarray | None = None,
     title: str | None = None,
+    scans: Mapping[str, Sequence[float]] | None = None,
 ) -> Figure:
-    """The CLI figure: polar mu(beta)/mu0 over the full circle, and both surfaces."""
+    """The CLI figure: polar mu(beta)/mu0 over the full circle, and both surfaces.
+
+    ``scans``: per side (``"lower"``, ``"upper"``) the sizes (m) of a measured scan that
+    was mirrored to make it periodic; that side is drawn as the scan, not the double.
+    """
     fig = new_figure(11.0, 5.0)
     grid = fig.add_gridspec(2, 2, width_ratios=(1.3, 1.0))
     plot_polar(polar, ax=fig.add_subplot(grid[:, 0], projection="polar"), requested=requested)
     cell = polar.geometry.cell[0]
-    plot_surface(
-        lower, ax=fig.add_subplot(grid[0, 1]), title=f"lower (fixed): {lower.kind}", length=cell
-    )
-    plot_surface(
-        upper, ax=fig.add_subplot(grid[1, 1]), title=f"upper (sliding): {upper.kind}", length=cell
-    )
+    scans = scans or {}
+    for row, (side, role, surface) in enumerate(
+        (("lower", "fixed", lower), ("upper", "sliding", upper))
+    ):
+        scan = scans.get(side)
+        heading = f"{side} ({role}): {surface.kind}"
+        if scan is not None:
+            heading += "\nthe scan (mirrored for the model)"
+        plot_surface(
+            surface, ax=fig.add_subplot(grid[row, 1]), title=heading, length=cell, scan=scan
+        )
     if title:
         fig.suptitle(title, fontsize=10)
     return fig
+
+
+def mirrored_scans(sources: Mapping[str, Mapping[str, Any]]) -> dict[str, list[float]]:
+    """Per side, the scan sizes (m) of the measured surfaces that were mirrored (from the
+    preparation records of :func:`~frictionlab.roughness.topography.prepare_topography`)."""
+    return {
+        side: list(info["scan_sizes_m"])
+        for side, info in sources.items()
+        if info.get("periodicity") == "mirror" and "scan_sizes_m" in info
+    }
 
 
 def plot_statistics(stats: Any, title: str | None = None) -> Figure:

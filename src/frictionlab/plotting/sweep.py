@@ -29,6 +29,7 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
     ][:MAX_PANELS]  # fmt: skip
     fig = new_figure(5.0 * max(1, min(len(names), 2)), 3.6 * max(1, (len(names) + 1) // 2))
     ok = table[table["status"] == "ok"]
+    units = table.attrs.get("units", {})
     x_key = keys[0] if keys and _numeric(ok[keys[0]]) else None
     groups = [k for k in keys if k != x_key][:3]
     if not names:
@@ -42,12 +43,12 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
             x = part[x_key].to_numpy(float) if x_key else part["case"].to_numpy(float)
             y = part[name].to_numpy(float)
             order = np.argsort(x)
-            ax.plot(x[order], y[order], marker="o", label=_label(groups, label))
+            ax.plot(x[order], y[order], marker="o", label=_label(groups, label, units))
         positive = x_key is not None and bool((ok[x_key].astype(float) > 0).all())
         if positive and ok[x_key].astype(float).max() >= 100 * ok[x_key].astype(float).min():
             ax.set_xscale("log")
-        ax.set_xlabel(x_key or "case")
-        ax.set_ylabel(name)
+        ax.set_xlabel(_titled(x_key, units) if x_key else "case")
+        ax.set_ylabel(_titled(name, units))
         ax.grid(alpha=0.3)
         if groups and i == 0:
             ax.legend(fontsize=7)
@@ -58,6 +59,11 @@ def sweep_figure(table: pd.DataFrame, keys: list[str], title: str = "") -> Figur
     return fig
 
 
+def _titled(name: str, units: Any) -> str:
+    unit = units.get(name)
+    return name if unit is None else f"{name} [{unit}]"
+
+
 def _numeric(column: Any) -> bool:
     try:
         column.astype(float)
@@ -66,8 +72,12 @@ def _numeric(column: Any) -> bool:
     return len(column) > 0
 
 
-def _label(groups: list[str], value: Any) -> str | None:
+def _label(groups: list[str], value: Any, units: Any) -> str | None:
     if not groups:
         return None
     values = value if isinstance(value, tuple) else (value,)
-    return ", ".join(f"{k} = {v}" for k, v in zip(groups, values, strict=False))
+    shown = (
+        f"{k} = {v}" + (f" {units[k]}" if units.get(k) not in (None, "-") else "")
+        for k, v in zip(groups, values, strict=False)
+    )
+    return ", ".join(shown)

@@ -90,7 +90,8 @@ class PreparedSurface:
     """A measured surface ready for the lattice, with what was done to it.
 
     ``info``: JSON-ready provenance (source sizes and points, crop, filled points,
-    detrend, window, periodicity, filters, rms height (m) and rms slope after
+    detrend, window, periodicity, the scan's sizes and points before mirroring
+    (``scan_sizes_m``, ``scan_points``), filters, rms height (m) and rms slope after
     filtering); ``warnings``: sentences for the user (e.g. an artificial edge step).
     """
 
@@ -311,6 +312,9 @@ def prepare_topography(
                 "that artificial face counts as roughness; consider periodicity = 'mirror', "
                 "window = 'hann' or detrend = 'height'"
             )
+    # the scan itself (after crop), which figures draw instead of the mirrored double
+    info["scan_sizes_m"] = list(sizes)
+    info["scan_points"] = [int(v) for v in heights.shape]
     if periodicity == "mirror":
         for axis in range(heights.ndim):
             heights = np.concatenate([heights, np.flip(heights, axis=axis)], axis=axis)

@@ -28,6 +28,7 @@ from frictionlab.schema.core import (
     REQUIRED,
     STRING,
     Field,
+    Kind,
     Section,
     listed,
     load,
@@ -85,6 +86,21 @@ UNITS = Section(
                 "title's or the units row's, else SI)") for k in ROLES),
     "units of the data file's columns",
 )  # fmt: skip
+
+
+def _read_offset(t: Table, f: Field) -> float | str:
+    raw = t.raw(f.name)
+    if isinstance(raw, str):
+        if raw != "fit":
+            raise InputError(
+                f"{t.where}.{f.name} = {raw!r} is invalid: allowed a number (s) or 'fit'"
+            )
+        return "fit"
+    return float(t.get(f.name, float))
+
+
+_OFFSET = Kind("number or 'fit'", _read_offset,
+               {"oneOf": [{"type": "number"}, {"type": "string", "enum": ["fit"]}]})  # fmt: skip
 DATA = Section("data", (
     Field("file", STRING, "the measured curve (CSV, relative to this file)", "", REQUIRED),
     Field("columns", table=COLUMNS),
@@ -92,12 +108,16 @@ DATA = Section("data", (
     Field("weight", NUMBER, "weight of this curve in the fit", "", 1.0, low=0, open="low"),
     Field("sep", STRING, "delimiter (default: sniffed among tab ; , |)", "", None),
     Field("decimal", STRING, "decimal mark (default: sniffed)", "", None, choices=(".", ",")),
-    Field("encoding", STRING, "text encoding (default: by BOM, else UTF-8, else cp1252)", "",
+    Field("encoding", STRING, "text encoding (default: by BOM, else UTF-16 by its NUL "
+          "bytes, else UTF-8, else cp1252)", "",
           None),
     Field("reciprocating", BOOL, "the friction ratio changes sign with each stroke", "", False),
     Field("segment_weights", listed(float, "number"), "weight of each [[data.program]] "
           "segment's samples", "", None),
-    Field("time_offset", NUMBER, "when the data's t = 0 falls in the programme", "s", 0.0),
+    Field("time_offset", _OFFSET, "when the data's t = 0 falls in the programme, or 'fit' "
+          "to estimate it within time_offset_bounds", "s", 0.0),
+    Field("time_offset_bounds", listed(float, "number", 2), "[low, high] of a fitted "
+          "time_offset", "s", None),
     Field("initial", table=INITIAL, default=REQUIRED),
     Field("program", table=SEGMENT, many=True, default=REQUIRED),
 ), "one measured curve", "[[data]]")  # fmt: skip
@@ -177,9 +197,28 @@ def _parse_data(t: Table, base: Path) -> tuple[Curve, dict[str, Any]]:
         encoding=values["encoding"], reciprocating=values["reciprocating"],
     )  # fmt: skip
     end = program_duration(program)
-    offset = values["time_offset"]
+    offset, bounds = values["time_offset"], values["time_offset_bounds"]
+    fitted = offset == "fit"
+    if fitted != (bounds is not None):
+        raise InputError(
+            f"{t.where}.time_offset_bounds = {bounds} is invalid: allowed [low, high] (s) "
+            "exactly when time_offset = 'fit'"
+        )
+    if fitted:
+        lo, hi = bounds
+        t0, t1 = float(measured.time[0]), float(measured.time[-1])
+        if not (
+            lo < hi and t0 + lo >= -END_TOLERANCE * end and t1 + hi <= end * (1.0 + END_TOLERANCE)
+        ):
+            raise InputError(
+                f"{t.where}.time_offset_bounds = {bounds} is invalid: allowed low < high "
+                f"with every offset keeping the data (t = {t0:g} to {t1:g} s) inside "
+                f"{t.where}.program (0 to {end:g} s): low >= {0.0 - t0 + 0.0:g}, "
+                f"high <= {end - t1:g}"
+            )
+        offset = 0.5 * (lo + hi)  # unused: the fit estimates it
     t_last = float(measured.time[-1]) + offset
-    if t_last > end * (1.0 + END_TOLERANCE):
+    if not fitted and t_last > end * (1.0 + END_TOLERANCE):
         raise InputError(
             f"{where}: the data run to t = {t_last:g} s, past the end of "
             f"{t.where}.program at {end:g} s (extend the programme or trim the data)"
@@ -187,16 +226,19 @@ def _parse_data(t: Table, base: Path) -> tuple[Curve, dict[str, Any]]:
     weights = values["segment_weights"]
     try:
         curve = Curve(
-            name=Path(name).name, time=np.minimum(measured.time, end - offset),
+            name=Path(name).name,
+            time=measured.time if fitted else np.minimum(measured.time, end - offset),
             friction_ratio=measured.friction_ratio, program=program, initial=init,
             weight=values["weight"], slip=measured.slip, time_offset=offset,
             segment_weights=None if weights is None else tuple(weights),
+            offset_bounds=None if bounds is None else (bounds[0], bounds[1]),
         )  # fmt: skip
     except ParameterError as exc:
         raise ParameterError(f"{t.where}.{exc.field}", exc.value, exc.allowed) from None
     echo = {
         "file": name, "columns": measured.columns, "units": measured.units,
-        "weight": values["weight"], "segment_weights": weights, "time_offset": offset,
+        "weight": values["weight"], "segment_weights": weights,
+        "time_offset": "fit" if fitted else offset, "time_offset_bounds": bounds,
         "samples": curve.n_samples, "duration": end, "initial": initial, "program": programs,
     }  # fmt: skip
     return curve, echo

@@ -10,7 +10,7 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["summary_figures"]
+__all__ = ["figure_unit", "summary_figures"]
 
 _ROUGHNESS = (
     "mu_min",
@@ -44,6 +44,12 @@ def summary_figures(command: str, summary: Mapping[str, Any]) -> dict[str, float
         if healing.get("rate_per_decade") is not None:
             out["healing_rate_per_decade"] = _number(healing.get("rate_per_decade"))
     return out
+
+
+def figure_unit(name: str) -> str:
+    """The unit of a summary figure: angles (``*_deg``) in degrees, the rest (friction
+    ratios, mu, anisotropy, delta mu, the healing rate per decade) dimensionless."""
+    return "deg" if name.endswith("_deg") else "-"
 
 
 def _number(value: Any) -> float | None:
