@@ -45,8 +45,9 @@ __all__ = [
 #: (GMRES preconditioned by algebraic multigrid, pyamg; memory linear in the unknowns).
 LINEAR_SOLVERS: tuple[str, ...] = ("direct", "iterative")
 
-#: SuperLU column orderings (scipy ``splu(permc_spec=...)``).
-ORDERINGS: tuple[str, ...] = ("MMD_AT_PLUS_A", "COLAMD", "MMD_ATA", "NATURAL")
+#: Orderings of the direct solver: METIS nested dissection with the contact unknowns
+#: last (default), or one of SuperLU's column orderings (scipy ``splu(permc_spec=...)``).
+ORDERINGS: tuple[str, ...] = ("nested_dissection", "MMD_AT_PLUS_A", "COLAMD", "MMD_ATA")
 _CHUNK = 256  # columns per back-substitution block when G is built
 
 
@@ -76,7 +77,15 @@ def reduction(fixed: np.ndarray, ties: Sequence[np.ndarray] = ()) -> sp.csc_matr
 
 
 class TangentSolver:
-    """Solve ``T^T J T delta = b`` for given contact moduli (``b``, ``delta`` reduced)."""
+    """Solve ``T^T J T delta = b`` for given contact moduli (``b``, ``delta`` reduced).
+
+    ``ordering``: ``"nested_dissection"`` (METIS through pymetis, default; reverse
+    Cuthill-McKee when pymetis is missing) orders the bulk unknowns with the contact
+    unknowns (and any rigid-plate unknown) last, so that the trailing block of the
+    factors is the Schur complement ``S`` of ``K0`` on them and ``G = S^{-1}`` costs
+    one dense inversion; the other names are SuperLU's own column orderings
+    (:data:`ORDERINGS`), with ``G`` built by back-substitution in chunks of columns.
+    """
 
     def __init__(
         self,
@@ -85,12 +94,14 @@ class TangentSolver:
         params: SubloadingParams | Frictionless,
         ties: Sequence[np.ndarray] = (),
         *,
-        ordering: str = "MMD_AT_PLUS_A",
+        ordering: str = "nested_dissection",
     ) -> None:
+        if ordering not in ORDERINGS:
+            raise ParameterError("ordering", ordering, "one of " + ", ".join(ORDERINGS))
         T = reduction(fixed, ties)
         self.T = T
         w = disc.contact_weight
-        Bs = [(B @ T).tocsc() for B in disc.interp]
+        Bs = [_pruned((B @ T).tocsc()) for B in disc.interp]
         cols = np.unique(np.concatenate([B.nonzero()[1] for B in Bs]))
         self.contact = cols
         self.rows = [_rows(B[:, cols].tocsr()) for B in Bs]
@@ -100,16 +111,45 @@ class TangentSolver:
         alpha_n = float(np.asarray(params.alpha_n))
         self.elastic = M.T @ np.diag([alpha_t, alpha_t, alpha_n]) @ M  # (d, d), diagonal
         K = (T.T @ disc.stiffness @ T).tocsc()
-        K0 = K + sum(self.elastic[a, a] * (B.T @ sp.diags(w) @ B) for a, B in enumerate(Bs))
-        self.lu = spla.splu(sp.csc_matrix(K0), permc_spec=ordering)
+        K0 = (
+            K + sum(self.elastic[a, a] * (B.T @ sp.diags(w) @ B) for a, B in enumerate(Bs))
+        ).tocsc()
+        del K
         self.n = int(T.shape[1])
         m = cols.size
+        self.perm: np.ndarray | None = None
+        if ordering == "nested_dissection":
+            self.perm, last = _contact_last_order(K0, cols)
+            self.iperm = np.empty_like(self.perm)
+            self.iperm[self.perm] = np.arange(self.n)
+            K0 = K0[self.perm][:, self.perm].tocsc()
+            self.lu = spla.splu(
+                K0, permc_spec="NATURAL", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
+            )
+            del K0
+            self.G = _trailing_inverse(self.lu, last)
+            if self.G is not None:
+                # the contact unknowns' places in the trailing block
+                order = np.argsort(self.perm[self.n - last :])
+                where = order[np.searchsorted(self.perm[self.n - last :][order], cols)]
+                self.G = np.ascontiguousarray(self.G[np.ix_(where, where)])
+                return
+        else:
+            self.lu = spla.splu(K0, permc_spec=ordering)
+            del K0
+        # SuperLU pivoted or reordered the trailing block: back-substitution in chunks
         self.G = np.empty((m, m))
         for start in range(0, m, _CHUNK):
             stop = min(start + _CHUNK, m)
             E = np.zeros((self.n, stop - start))
             E[cols[start:stop], np.arange(stop - start)] = 1.0
-            self.G[:, start:stop] = self.lu.solve(E)[cols, :]
+            self.G[:, start:stop] = self._lu_solve(E)[cols, :]
+
+    def _lu_solve(self, b: np.ndarray) -> np.ndarray:
+        """``K0^{-1} b`` (``b`` a vector or columns, in reduced coordinates)."""
+        if self.perm is None:
+            return np.asarray(self.lu.solve(b))
+        return np.asarray(self.lu.solve(b[self.perm]))[self.iperm]
 
     @property
     def memory_bytes(self) -> int:
@@ -157,7 +197,7 @@ class TangentSolver:
 
     def solve(self, moduli: np.ndarray, b: np.ndarray) -> np.ndarray:
         """``delta`` with ``T^T (K + Kc(moduli)) T delta = b``; raises on a singular tangent."""
-        y = self.lu.solve(np.asarray(b, dtype=np.float64))
+        y = self._lu_solve(np.asarray(b, dtype=np.float64))
         if self.contact.size == 0:
             return y
         A = self.correction(moduli)
@@ -171,7 +211,7 @@ class TangentSolver:
         z = sla.solve(M, A_ss @ y[self.contact[s]], check_finite=True)
         scatter = np.zeros(self.n)
         scatter[self.contact[s]] = z
-        return y - self.lu.solve(scatter)
+        return y - self._lu_solve(scatter)
 
 
 class IterativeSolver:
@@ -312,6 +352,71 @@ def _rigid_modes(disc: Discretisation, T: sp.csc_matrix) -> np.ndarray:
     counts = np.asarray(T.sum(axis=0)).ravel()
     counts[counts == 0] = 1.0
     return np.asarray(T.T @ full) / counts[:, None]
+
+
+def _pruned(B: sp.csc_matrix) -> sp.csc_matrix:
+    """``B`` without its round-off entries (< 1e-12 of the largest): scikit-fem's facet
+    interpolation stores ~1e-33 values of the nodes off the face, which would make them
+    contact unknowns."""
+    B = B.copy()
+    B.data[np.abs(B.data) < 1e-12 * float(np.abs(B.data).max(initial=0.0))] = 0.0
+    B.eliminate_zeros()
+    return B
+
+
+def _contact_last_order(K0: sp.csc_matrix, contact: np.ndarray) -> tuple[np.ndarray, int]:
+    """A fill-reducing order of ``K0``'s unknowns with ``contact`` and the dense unknowns
+    (a rigid plate's, coupled to a whole face) last; returns it and the trailing count.
+
+    The bulk is ordered by METIS nested dissection (pymetis), or by reverse
+    Cuthill-McKee when pymetis is not installed (more fill in 3-D).
+    """
+    n = K0.shape[0]
+    degree = np.diff(K0.indptr)
+    dense = np.flatnonzero(degree > 8 * max(int(np.median(degree)), 1))
+    last = np.union1d(contact, dense)
+    bulk = np.setdiff1d(np.arange(n), last)
+    graph = K0[bulk][:, bulk].tocsr()
+    graph.setdiag(0.0)
+    graph.eliminate_zeros()
+    try:
+        import pymetis
+    except ImportError:
+        from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+        local = np.asarray(reverse_cuthill_mckee(graph, symmetric_mode=True))
+    else:
+        if bulk.size > 1 and graph.nnz:
+            adjacency = pymetis.CSRAdjacency(graph.indptr, graph.indices)
+            local = np.asarray(pymetis.nested_dissection(adjacency)[0], dtype=np.int64)
+        else:
+            local = np.arange(bulk.size)
+    return np.concatenate([bulk[local], last]).astype(np.int64), int(last.size)
+
+
+def _trailing_inverse(lu: Any, k: int) -> np.ndarray | None:
+    """The inverse of the Schur complement on the last ``k`` unknowns, ``(L U)_kk^{-1}``,
+    from the trailing blocks of SuperLU's factors; None when SuperLU moved a row or
+    column into or out of the trailing block (then the factors' tail is not the Schur
+    complement)."""
+    n = lu.shape[0]
+    tail = np.arange(n - k, n)
+    if k == 0 or not (
+        np.array_equal(lu.perm_r[n - k :], tail) and np.array_equal(lu.perm_c[n - k :], tail)
+    ):
+        return None
+    L = lu.L  # one full factor in memory at a time
+    L_kk = L[n - k :, n - k :].toarray()
+    del L
+    U = lu.U
+    U_kk = U[n - k :, n - k :].toarray()
+    del U
+    inv_L, info_l = sla.lapack.dtrtri(L_kk, lower=1, unitdiag=1)
+    inv_U, info_u = sla.lapack.dtrtri(U_kk, lower=0)
+    if info_l or info_u:
+        return None
+    G = inv_U @ inv_L
+    return 0.5 * (G + G.T)  # K0 is symmetric
 
 
 def _rows(B: sp.csr_matrix) -> tuple[np.ndarray, np.ndarray]:
