@@ -17,6 +17,7 @@ is then two back-substitutions and a dense solve on the k <= m contact unknowns 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import Any
 
@@ -37,6 +38,8 @@ __all__ = [
     "ORDERINGS",
     "IterativeSolver",
     "TangentSolver",
+    "cost",
+    "estimate",
     "make_solver",
     "reduction",
 ]
@@ -127,12 +130,12 @@ class TangentSolver:
                 K0, permc_spec="NATURAL", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
             )
             del K0
-            self.G = _trailing_inverse(self.lu, last)
-            if self.G is not None:
+            inverse = _trailing_inverse(self.lu, last)
+            if inverse is not None:
                 # the contact unknowns' places in the trailing block
                 order = np.argsort(self.perm[self.n - last :])
                 where = order[np.searchsorted(self.perm[self.n - last :][order], cols)]
-                self.G = np.ascontiguousarray(self.G[np.ix_(where, where)])
+                self.G: np.ndarray = np.ascontiguousarray(inverse[np.ix_(where, where)])
                 return
         else:
             self.lu = spla.splu(K0, permc_spec=ordering)
@@ -305,31 +308,79 @@ def make_solver(
     raise ParameterError("linear_solver", kind, "one of " + ", ".join(LINEAR_SOLVERS))
 
 
-def estimate(block: Block, linear_solver: str = "direct") -> dict[str, float]:
-    """Size of a run of ``block`` before meshing: unknowns, contact unknowns and the
-    solver's storage in bytes.
+#: Entries of the nested-dissection LU factors (L and U) per unknown, measured on this
+#: model's structured meshes with the contact unknowns last: 2-D ``FILL_2D * log2(n)``
+#: (167 per unknown at 51k unknowns), 3-D ``FILL_3D * n**(1/3)`` (984 at 13.9k, 1,617 at
+#: 45k unknowns).
+FILL_2D = 11.0
+FILL_3D = 46.0
+#: Bytes per factor entry held at the peak: SuperLU's factors (~8) and the CSC copy of
+#: one of them while the trailing block is read (~6 for half the entries at 12 each).
+BYTES_PER_ENTRY = 14.0
+#: Bytes per unknown of the mesh and its assembly (scikit-fem's element matrices: 3-D
+#: hexahedra, 8 quadrature points; measured 1.1 GB at 105k unknowns), and of the solver's
+#: sparse matrices (the stiffness and its reduced, permuted copies).
+MESH_BYTES_2D = 1500.0
+MESH_BYTES_3D = 11000.0
+#: Seconds per factor entry of one solve (two triangular sweeps; 3.3e-9 measured), of
+#: the factorisation per entry (2-D; 8e-8) and per entry and unknown (3-D, ~n^2 overall;
+#: 6-10e-12), and the dense rate [flop/s]: one core of the shared machine, upper ends.
+SOLVE_S_PER_ENTRY = 4e-9
+FACTOR_S_PER_ENTRY_UNKNOWN_3D = 1e-11
+FACTOR_S_PER_ENTRY_2D = 1e-7
+DENSE_FLOPS = 5e9
+#: GMRES basis vectors and the multigrid hierarchy's size relative to the tangent
+#: (iterative solver).
+GMRES_RESTART = 60
+AMG_COMPLEXITY = 3.0
+#: Seconds per unknown of one iterative solve (a hierarchy rebuilt and GMRES: 108 CPU s
+#: for ~70 solves at 14.7k unknowns, 3-D).
+ITERATIVE_S_PER_UNKNOWN = 1e-4
 
-    Direct: 12 bytes per nonzero of the LU factors, from the fill per unknown measured
-    with SuperLU's MMD_AT_PLUS_A ordering on this model's structured meshes (2-D:
-    79 per unknown at 3.4k unknowns, growing as n^0.26; 3-D: 384 at 2.2k, growing as
-    n^0.66), plus the m x m contact block and one chunk of back-substitution columns.
-    Iterative: the tangent and three times it for the multigrid hierarchy, plus the
-    GMRES basis (60 vectors). Direct: 0.7-1.25x the measured peak above the
-    interpreter's own (2-D 52k and 3-D 14.7k unknowns); iterative: not calibrated.
+
+def cost(
+    unknowns: float, contact_unknowns: float, dim: int, linear_solver: str = "direct"
+) -> dict[str, float]:
+    """Memory and time of the linear solver for ``unknowns`` free unknowns of which
+    ``contact_unknowns`` on the contact face: ``bytes`` (the peak), ``setup`` [s] (the
+    factorisation and the contact block) and ``per_solve`` [s] (one Newton solve).
+
+    Direct: the nested-dissection factors (``FILL_2D * log2(n)`` or
+    ``FILL_3D * n**(1/3)`` entries per unknown), the dense contact blocks (five m x m
+    arrays while ``G`` is formed) and the mesh; a solve is two sweeps of the factors and
+    a dense solve on at most m contact unknowns. Iterative: the tangent and its
+    hierarchy, the GMRES basis and the mesh.
     """
+    n, m = float(unknowns), float(contact_unknowns)
+    mesh = n * (MESH_BYTES_2D if dim == 2 else MESH_BYTES_3D)
+    if linear_solver == "direct":
+        per = FILL_2D * math.log2(max(n, 2.0)) if dim == 2 else FILL_3D * n ** (1.0 / 3.0)
+        entries = per * n
+        need = max(mesh, BYTES_PER_ENTRY * entries + 5 * 8.0 * m * m + 0.3 * mesh)
+        if dim == 2:
+            factor = FACTOR_S_PER_ENTRY_2D * entries
+        else:
+            factor = FACTOR_S_PER_ENTRY_UNKNOWN_3D * entries * n
+        setup = factor + 3.0 * m**3 / DENSE_FLOPS
+        per_solve = 2.0 * SOLVE_S_PER_ENTRY * entries + (2.0 / 3.0) * m**3 / DENSE_FLOPS
+    elif linear_solver == "iterative":
+        nnz = n * (9 if dim == 2 else 27) * dim
+        need = max(mesh, (1.0 + AMG_COMPLEXITY) * 12.0 * nnz + 8.0 * GMRES_RESTART * n + 0.3 * mesh)
+        setup = 0.0
+        per_solve = ITERATIVE_S_PER_UNKNOWN * n  # a hierarchy and GMRES per solve
+    else:
+        raise ParameterError("linear_solver", linear_solver, "one of " + ", ".join(LINEAR_SOLVERS))
+    return {"bytes": need, "setup": setup, "per_solve": per_solve}
+
+
+def estimate(block: Block, linear_solver: str = "direct") -> dict[str, float]:
+    """Size of a run of ``block`` before meshing: ``unknowns``, ``contact_unknowns`` and
+    the solver's ``bytes``, ``setup`` and ``per_solve`` seconds (:func:`cost`)."""
     cells = np.asarray(block.cells, dtype=np.float64)
     d = block.dim
-    nodes = float(np.prod(cells + 1))
-    n = d * nodes
+    n = d * float(np.prod(cells + 1))
     m = d * float(np.prod(cells[:-1] + 1))
-    if linear_solver == "direct":
-        per = 79.0 * (n / 3402.0) ** 0.26 if d == 2 else 384.0 * (n / 2187.0) ** 0.66
-        # x 2.2: the stiffness, its reduced copy and SuperLU's working storage
-        storage = 2.2 * (12.0 * per * n + 8.0 * m * m + 8.0 * _CHUNK * n)
-    else:
-        per_row = (9 if d == 2 else 27) * d
-        storage = 4 * 12.0 * per_row * n + 8.0 * 60 * n
-    return {"unknowns": n, "contact_unknowns": m, "bytes": storage}
+    return {"unknowns": n, "contact_unknowns": m, **cost(n, m, d, linear_solver)}
 
 
 def _rigid_modes(disc: Discretisation, T: sp.csc_matrix) -> np.ndarray:
