@@ -9,7 +9,8 @@ Each case runs in its own process (peak memory is the process's maximum resident
 size, the interpreter and compiled law included: the ``base`` column is that of the
 warm-up alone; CPU time is the process's, the figure to compare on a loaded machine,
 beside the load average at the end of the case). Setup: the bundled PMMA-like law
-(cone, mu_s = 0.6, mu_k = 0.4) on a block pressed with 1 MPa in 2 steps and dragged 30 um in 15 steps through the static
+(cone, mu_s = 0.6, mu_k = 0.4) on a block pressed with 1 MPa in 2 steps and dragged
+30 um in 15 steps through the static
 peak. ``2d-N``: the 100 mm x 25 mm plane-strain block with N x N/4 quadrilaterals;
 ``3d-N``: a 100 mm cube of N^3 hexahedra. Reported: unknowns (dofs), contact unknowns,
 wall time of the run (meshing included), Newton iterations, peak memory, and the share
