@@ -133,9 +133,13 @@ class TangentSolver:
             inverse = _trailing_inverse(self.lu, last)
             if inverse is not None:
                 # the contact unknowns' places in the trailing block
-                order = np.argsort(self.perm[self.n - last :])
-                where = order[np.searchsorted(self.perm[self.n - last :][order], cols)]
-                self.G: np.ndarray = np.ascontiguousarray(inverse[np.ix_(where, where)])
+                tail = self.perm[self.n - last :]
+                if np.array_equal(tail, cols):
+                    self.G: np.ndarray = inverse
+                else:
+                    order = np.argsort(tail)
+                    where = order[np.searchsorted(tail[order], cols)]
+                    self.G = np.ascontiguousarray(inverse[np.ix_(where, where)])
                 return
         else:
             self.lu = spla.splu(K0, permc_spec=ordering)
@@ -317,11 +321,13 @@ FILL_3D = 46.0
 #: Bytes per factor entry held at the peak: SuperLU's factors (~8) and the CSC copy of
 #: one of them while the trailing block is read (~6 for half the entries at 12 each).
 BYTES_PER_ENTRY = 14.0
-#: Bytes per unknown of the mesh and its assembly (scikit-fem's element matrices: 3-D
-#: hexahedra, 8 quadrature points; measured 1.1 GB at 105k unknowns), and of the solver's
-#: sparse matrices (the stiffness and its reduced, permuted copies).
-MESH_BYTES_2D = 1500.0
-MESH_BYTES_3D = 11000.0
+#: Bytes per unknown of the mesh, its assembly and the solver's sparse matrices (the
+#: stiffness, its reduced and permuted copies, the interpolation): what the measured peaks
+#: of benchmarks/bench_contact_scaling.py leave above the interpreter, the factors and
+#: the dense blocks (2-D 52k unknowns: 2.8 kB; 3-D 14.7k: 12 kB; scikit-fem's hexahedron
+#: assembly alone peaks at 10 kB per unknown).
+MESH_BYTES_2D = 3000.0
+MESH_BYTES_3D = 12000.0
 #: Seconds per factor entry of one solve (two triangular sweeps; 3.3e-9 measured), of
 #: the factorisation per entry (2-D; 8e-8) and per entry and unknown (3-D, ~n^2 overall;
 #: 6-10e-12), and the dense rate [flop/s]: one core of the shared machine, upper ends.
@@ -346,8 +352,8 @@ def cost(
     factorisation and the contact block) and ``per_solve`` [s] (one Newton solve).
 
     Direct: the nested-dissection factors (``FILL_2D * log2(n)`` or
-    ``FILL_3D * n**(1/3)`` entries per unknown), the dense contact blocks (five m x m
-    arrays while ``G`` is formed) and the mesh; a solve is two sweeps of the factors and
+    ``FILL_3D * n**(1/3)`` entries per unknown), the dense contact blocks (three m x m
+    arrays while ``G`` is formed) and the mesh and its matrices; a solve is two sweeps of the factors and
     a dense solve on at most m contact unknowns. Iterative: the tangent and its
     hierarchy, the GMRES basis and the mesh.
     """
@@ -356,7 +362,7 @@ def cost(
     if linear_solver == "direct":
         per = FILL_2D * math.log2(max(n, 2.0)) if dim == 2 else FILL_3D * n ** (1.0 / 3.0)
         entries = per * n
-        need = max(mesh, BYTES_PER_ENTRY * entries + 5 * 8.0 * m * m + 0.3 * mesh)
+        need = mesh + BYTES_PER_ENTRY * entries + 3 * 8.0 * m * m
         if dim == 2:
             factor = FACTOR_S_PER_ENTRY_2D * entries
         else:
@@ -365,7 +371,7 @@ def cost(
         per_solve = 2.0 * SOLVE_S_PER_ENTRY * entries + (2.0 / 3.0) * m**3 / DENSE_FLOPS
     elif linear_solver == "iterative":
         nnz = n * (9 if dim == 2 else 27) * dim
-        need = max(mesh, (1.0 + AMG_COMPLEXITY) * 12.0 * nnz + 8.0 * GMRES_RESTART * n + 0.3 * mesh)
+        need = mesh + (1.0 + AMG_COMPLEXITY) * 12.0 * nnz + 8.0 * GMRES_RESTART * n
         setup = 0.0
         per_solve = ITERATIVE_S_PER_UNKNOWN * n  # a hierarchy and GMRES per solve
     else:
@@ -462,12 +468,13 @@ def _trailing_inverse(lu: Any, k: int) -> np.ndarray | None:
     U = lu.U
     U_kk = U[n - k :, n - k :].toarray()
     del U
-    inv_L, info_l = sla.lapack.dtrtri(L_kk, lower=1, unitdiag=1)
-    inv_U, info_u = sla.lapack.dtrtri(U_kk, lower=0)
+    inv_L, info_l = sla.lapack.dtrtri(L_kk, lower=1, unitdiag=1, overwrite_c=1)
+    del L_kk
+    inv_U, info_u = sla.lapack.dtrtri(U_kk, lower=0, overwrite_c=1)
+    del U_kk
     if info_l or info_u:
         return None
-    G = inv_U @ inv_L
-    return 0.5 * (G + G.T)  # K0 is symmetric
+    return np.asarray(inv_U @ inv_L)  # symmetric to round-off (K0 is)
 
 
 def _rows(B: sp.csr_matrix) -> tuple[np.ndarray, np.ndarray]:
