@@ -353,7 +353,8 @@ def cost(
 
     Direct: the nested-dissection factors (``FILL_2D * log2(n)`` or
     ``FILL_3D * n**(1/3)`` entries per unknown), the dense contact blocks (three m x m
-    arrays while ``G`` is formed) and the mesh and its matrices; a solve is two sweeps of the factors and
+    arrays while ``G`` is formed) and the mesh and its matrices; a solve is two sweeps of
+    the factors and
     a dense solve on at most m contact unknowns. Iterative: the tangent and its
     hierarchy, the GMRES basis and the mesh.
     """
