@@ -2,17 +2,19 @@
 
 Not a timed test: run it by hand, on a quiet machine if possible::
 
-    python benchmarks/bench_contact_scaling.py [--cases 2d-80,2d-160,2d-320,3d-8,3d-16]
-                                               [--timeout 900]
+    python benchmarks/bench_contact_scaling.py [--cases 2d-80,2d-160,2d-320,3d-8,3d-32]
+                                               [--timeout 900] [--out FILE.json]
 
 Each case runs in its own process (peak memory is the process's maximum resident set
 size, the interpreter and compiled law included: the ``base`` column is that of the
-warm-up alone). Setup: the bundled PMMA-like law (cone, mu_s = 0.6, mu_k = 0.4) on a
-block pressed with 1 MPa in 2 steps and dragged 30 um in 15 steps through the static
+warm-up alone; CPU time is the process's, the figure to compare on a loaded machine,
+beside the load average at the end of the case). Setup: the bundled PMMA-like law
+(cone, mu_s = 0.6, mu_k = 0.4) on a block pressed with 1 MPa in 2 steps and dragged
+30 um in 15 steps through the static
 peak. ``2d-N``: the 100 mm x 25 mm plane-strain block with N x N/4 quadrilaterals;
 ``3d-N``: a 100 mm cube of N^3 hexahedra. Reported: unknowns (dofs), contact unknowns,
 wall time of the run (meshing included), Newton iterations, peak memory, and the share
-of the wall time spent in the law's update (``frictionlab.subloading.update``). The
+of the wall (and CPU) time spent in the law's update (``frictionlab.subloading.update``). The
 code under test is whatever ``frictionlab`` imports (PYTHONPATH picks a checkout, so
 the same script times an older version). JSON goes to benchmarks/results/.
 """
@@ -29,7 +31,7 @@ import sys
 import time
 from pathlib import Path
 
-CASES = "2d-80,2d-160,2d-320,3d-8,3d-16"
+CASES = "2d-80,2d-160,2d-320,3d-8,3d-16,3d-24"  # add 3d-32 (~110k unknowns) by hand
 
 
 def run_case(name: str) -> dict[str, float | int | str]:
@@ -58,14 +60,17 @@ def run_case(name: str) -> dict[str, float | int | str]:
             element="hex",
         )  # fmt: skip
     law_seconds = [0.0]
+    law_cpu = [0.0]
     original = interface.update
 
     def timed_update(*args, **kwargs):  # type: ignore[no-untyped-def]
         start = time.perf_counter()
+        start_cpu = time.process_time()
         try:
             return original(*args, **kwargs)
         finally:
             law_seconds[0] += time.perf_counter() - start
+            law_cpu[0] += time.process_time() - start_cpu
 
     interface.update = timed_update  # type: ignore[assignment]
     start = time.perf_counter()
@@ -87,6 +92,8 @@ def run_case(name: str) -> dict[str, float | int | str]:
         "peak_mb": round(peak, 1),
         "base_mb": round(base, 1),
         "law_share": round(law_seconds[0] / wall, 3),
+        "law_cpu_share": round(law_cpu[0] / cpu, 3),
+        "load": round(os.getloadavg()[0], 1),
     }
 
 
@@ -96,6 +103,8 @@ def main() -> int:
     parser.add_argument("--timeout", type=float, default=900.0)
     parser.add_argument("--one", help=argparse.SUPPRESS)  # internal: run one case
     parser.add_argument("--label", default="this checkout")
+    default_out = Path(__file__).parent / "results" / "contact_scaling.json"
+    parser.add_argument("--out", default=str(default_out))
     args = parser.parse_args()
     if args.one:
         print(json.dumps(run_case(args.one)))
@@ -116,7 +125,7 @@ def main() -> int:
             row = {"case": name, "success": "error: " + last}
         rows.append(row)
         print(json.dumps(row), flush=True)
-    out = Path(__file__).parent / "results" / "contact_scaling.json"
+    out = Path(args.out)
     out.parent.mkdir(exist_ok=True)
     out.write_text(
         json.dumps(

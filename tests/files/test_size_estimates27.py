@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from frictionlab.app import budget
+from frictionlab.contact.linear import cost
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 from frictionlab.subloading.surfaces import g_function
@@ -20,27 +21,25 @@ from frictionlab.sweep.cases import MAX_CASES, check_case_count, expand_grid
 GB = 10**9
 
 
-def test_contact_estimate_counts_the_dense_woodbury_arrays() -> None:
-    """Z and its identity source (n x m), G, M and A (m x m): 8 bytes each entry."""
+def test_contact_estimate_is_the_solvers_own_and_grows_with_the_3d_fill() -> None:
+    """One estimate: budget's is contact.linear.cost; 3-D nested-dissection fill grows
+    like n^(4/3), so doubling a large mesh takes 2^(4/3) the memory."""
     n, m = 10_000, 300
-    need, _ = budget.contact_solver_estimate(n, m, 2)
-    dense = 2 * 8 * n * m + 3 * 8 * m * m
-    lu = n * budget.LU_FILL_2D * budget.LU_BYTES_PER_ENTRY
-    assert need == pytest.approx(dense + lu, rel=1e-12)
-    # 3-D fill grows like n^(4/3): doubling n more than doubles the factor's share
-    a, _ = budget.contact_solver_estimate(n, 0, 3)
-    b, _ = budget.contact_solver_estimate(2 * n, 0, 3)
-    assert b / a == pytest.approx(2.0 ** (4.0 / 3.0), rel=1e-12)
+    c = cost(n, m, 2)
+    assert budget.contact_solver_estimate(n, m, 2) == (c["bytes"], c["setup"], c["per_solve"])
+    a, b = cost(1e7, 0, 3)["bytes"], cost(2e7, 0, 3)["bytes"]
+    assert b / a == pytest.approx(2.0 ** (4.0 / 3.0), rel=0.02)
 
 
 def test_contact_meshes_of_the_review_are_refused_the_example_is_not() -> None:
-    # the review's 1.99e6-node 2-D block (2000 x 995 nodes) on a 64 GB machine
+    # the review's 1.99e6-node 2-D block (2000 x 995 nodes): ~14 GB of factors
     with pytest.raises(InputError, match=r"\[block\].element_size .* 1\.99e\+06 nodes"):
-        budget.check_contact_size(2000 * 995, 2000, 2, 54, memory=64 * GB)
-    # a 363k-node 3-D block (72 x 72 x 70 nodes)
+        budget.check_contact_size(2000 * 995, 2000, 2, 54, memory=16 * GB)
+    # a 363k-node 3-D block (72 x 72 x 70 nodes): ~70 GB of factors
     with pytest.raises(InputError, match="3-D mesh"):
         budget.check_contact_size(72 * 72 * 70, 72 * 72, 3, 54, memory=64 * GB)
     budget.check_contact_size(41 * 11, 41, 2, 54, memory=8 * GB)  # the bundled PMMA block
+    budget.check_contact_size(33**3, 33**2, 3, 17, memory=16 * GB)  # the 32^3-hex benchmark
 
 
 def test_lattice_time_samples_refused_by_memory_naming_the_key() -> None:

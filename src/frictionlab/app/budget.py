@@ -326,32 +326,20 @@ def check_calibration_size(
     )  # fmt: skip
 
 
-#: Float64 entries of SuperLU's factors per free dof of a 2-D mesh, and the factor of
-#: ``n**(1/3)`` for a 3-D one (nested-dissection fill; scipy's COLAMD ordering is near it).
-LU_FILL_2D = 60.0
-LU_FILL_3D = 25.0
-#: Bytes per factor entry (value and index) and the machine's dense rate [flop/s]
-#: (a low figure for a shared machine).
-LU_BYTES_PER_ENTRY = 12.0
-DENSE_FLOPS = 5e9
 #: Newton iterations per step assumed by the time estimate.
 NEWTON_PER_STEP = 4.0
 
 
-def contact_solver_estimate(free_dofs: int, contact_dofs: int, dim: int) -> tuple[float, float]:
-    """Memory [bytes] and time per Newton solve [s] of the contact model's linear solver.
+def contact_solver_estimate(
+    free_dofs: int, contact_dofs: int, dim: int, linear_solver: str = "direct"
+) -> tuple[float, float, float]:
+    """Memory [bytes], set-up time [s] and time per Newton solve [s] of the contact
+    model's linear solver: :func:`frictionlab.contact.linear.cost` (one estimate for
+    ``[solver].memory_limit`` and this check)."""
+    from frictionlab.contact.linear import cost
 
-    The solver (:mod:`frictionlab.contact.linear`) factorises the elastic matrix once
-    (sparse LU) and keeps ``Z = K0^{-1} P^T``: a dense (free dofs x contact dofs) array,
-    with its identity source of the same size, and dense (contact x contact) matrices;
-    each solve is one back-substitution, a product with ``Z`` and a dense contact solve.
-    """
-    n, m = float(free_dofs), float(contact_dofs)
-    fill = LU_FILL_2D if dim == 2 else LU_FILL_3D * n ** (1.0 / 3.0)
-    lu = n * fill
-    need = lu * LU_BYTES_PER_ENTRY + 2.0 * 8.0 * n * m + 3.0 * 8.0 * m * m
-    per_solve = (2.0 * lu + 2.0 * n * m + m**3 / 3.0) / DENSE_FLOPS
-    return need, per_solve
+    c = cost(free_dofs, contact_dofs, dim, linear_solver)
+    return c["bytes"], c["setup"], c["per_solve"]
 
 
 def check_contact_size(
@@ -361,20 +349,20 @@ def check_contact_size(
     steps: int,
     key: str = "[block].element_size",
     memory: int | None = None,
+    linear_solver: str = "direct",
 ) -> None:
     """Raise InputError (one line, naming ``key``) when the contact solver is out of reach.
 
     ``nodes``: the mesh's nodes; ``contact_nodes``: those on the contact face; ``steps``:
     the steps of the normal stage and the programme (each ~:data:`NEWTON_PER_STEP` solves).
     """
-    need, per_solve = contact_solver_estimate(nodes * dim, contact_nodes * dim, dim)
-    # factorising costs about as much as a few solves; the Z columns one solve each
-    seconds = per_solve * (NEWTON_PER_STEP * steps) + 2.0 * float(contact_nodes * dim) * (
-        float(nodes * dim) * (LU_FILL_2D if dim == 2 else LU_FILL_3D) / DENSE_FLOPS
+    need, setup, per_solve = contact_solver_estimate(
+        nodes * dim, contact_nodes * dim, dim, linear_solver
     )
+    seconds = setup + per_solve * NEWTON_PER_STEP * steps
     _refuse_beyond(
         f"{key} makes a {dim}-D mesh of {nodes:.4g} nodes with {contact_nodes:.4g} on the "
-        f"contact face (dense contact matrices of {contact_nodes * dim:.4g} columns)",
+        f"contact face ({linear_solver} solver)",
         need, seconds, memory, "allowed a larger element_size or a smaller block",
     )  # fmt: skip
 
@@ -426,4 +414,7 @@ def check_contact(scenario: Any, memory: int | None = None) -> None:
     mesh = getattr(scenario, "mesh", None)
     if mesh is not None:  # an imported mesh: its own node counts
         nodes, contact, key = mesh.nodes, mesh.contact_nodes, f"[mesh].file = {mesh.file!r}"
-    check_contact_size(nodes, contact, scenario.block.dim, steps, key, memory=memory)
+    check_contact_size(
+        nodes, contact, scenario.block.dim, steps, key, memory=memory,
+        linear_solver=scenario.options.linear_solver,
+    )  # fmt: skip

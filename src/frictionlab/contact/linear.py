@@ -17,6 +17,7 @@ is then two back-substitutions and a dense solve on the k <= m contact unknowns 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import Any
 
@@ -37,6 +38,8 @@ __all__ = [
     "ORDERINGS",
     "IterativeSolver",
     "TangentSolver",
+    "cost",
+    "estimate",
     "make_solver",
     "reduction",
 ]
@@ -45,8 +48,9 @@ __all__ = [
 #: (GMRES preconditioned by algebraic multigrid, pyamg; memory linear in the unknowns).
 LINEAR_SOLVERS: tuple[str, ...] = ("direct", "iterative")
 
-#: SuperLU column orderings (scipy ``splu(permc_spec=...)``).
-ORDERINGS: tuple[str, ...] = ("MMD_AT_PLUS_A", "COLAMD", "MMD_ATA", "NATURAL")
+#: Orderings of the direct solver: METIS nested dissection with the contact unknowns
+#: last (default), or one of SuperLU's column orderings (scipy ``splu(permc_spec=...)``).
+ORDERINGS: tuple[str, ...] = ("nested_dissection", "MMD_AT_PLUS_A", "COLAMD", "MMD_ATA")
 _CHUNK = 256  # columns per back-substitution block when G is built
 
 
@@ -76,7 +80,15 @@ def reduction(fixed: np.ndarray, ties: Sequence[np.ndarray] = ()) -> sp.csc_matr
 
 
 class TangentSolver:
-    """Solve ``T^T J T delta = b`` for given contact moduli (``b``, ``delta`` reduced)."""
+    """Solve ``T^T J T delta = b`` for given contact moduli (``b``, ``delta`` reduced).
+
+    ``ordering``: ``"nested_dissection"`` (METIS through pymetis, default; reverse
+    Cuthill-McKee when pymetis is missing) orders the bulk unknowns with the contact
+    unknowns (and any rigid-plate unknown) last, so that the trailing block of the
+    factors is the Schur complement ``S`` of ``K0`` on them and ``G = S^{-1}`` costs
+    one dense inversion; the other names are SuperLU's own column orderings
+    (:data:`ORDERINGS`), with ``G`` built by back-substitution in chunks of columns.
+    """
 
     def __init__(
         self,
@@ -85,12 +97,14 @@ class TangentSolver:
         params: SubloadingParams | Frictionless,
         ties: Sequence[np.ndarray] = (),
         *,
-        ordering: str = "MMD_AT_PLUS_A",
+        ordering: str = "nested_dissection",
     ) -> None:
+        if ordering not in ORDERINGS:
+            raise ParameterError("ordering", ordering, "one of " + ", ".join(ORDERINGS))
         T = reduction(fixed, ties)
         self.T = T
         w = disc.contact_weight
-        Bs = [(B @ T).tocsc() for B in disc.interp]
+        Bs = [_pruned((B @ T).tocsc()) for B in disc.interp]
         cols = np.unique(np.concatenate([B.nonzero()[1] for B in Bs]))
         self.contact = cols
         self.rows = [_rows(B[:, cols].tocsr()) for B in Bs]
@@ -100,16 +114,49 @@ class TangentSolver:
         alpha_n = float(np.asarray(params.alpha_n))
         self.elastic = M.T @ np.diag([alpha_t, alpha_t, alpha_n]) @ M  # (d, d), diagonal
         K = (T.T @ disc.stiffness @ T).tocsc()
-        K0 = K + sum(self.elastic[a, a] * (B.T @ sp.diags(w) @ B) for a, B in enumerate(Bs))
-        self.lu = spla.splu(sp.csc_matrix(K0), permc_spec=ordering)
+        K0 = (
+            K + sum(self.elastic[a, a] * (B.T @ sp.diags(w) @ B) for a, B in enumerate(Bs))
+        ).tocsc()
+        del K
         self.n = int(T.shape[1])
         m = cols.size
+        self.perm: np.ndarray | None = None
+        if ordering == "nested_dissection":
+            self.perm, last = _contact_last_order(K0, cols)
+            self.iperm = np.empty_like(self.perm)
+            self.iperm[self.perm] = np.arange(self.n)
+            K0 = K0[self.perm][:, self.perm].tocsc()
+            self.lu = spla.splu(
+                K0, permc_spec="NATURAL", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
+            )
+            del K0
+            inverse = _trailing_inverse(self.lu, last)
+            if inverse is not None:
+                # the contact unknowns' places in the trailing block
+                tail = self.perm[self.n - last :]
+                if np.array_equal(tail, cols):
+                    self.G: np.ndarray = inverse
+                else:
+                    order = np.argsort(tail)
+                    where = order[np.searchsorted(tail[order], cols)]
+                    self.G = np.ascontiguousarray(inverse[np.ix_(where, where)])
+                return
+        else:
+            self.lu = spla.splu(K0, permc_spec=ordering)
+            del K0
+        # SuperLU pivoted or reordered the trailing block: back-substitution in chunks
         self.G = np.empty((m, m))
         for start in range(0, m, _CHUNK):
             stop = min(start + _CHUNK, m)
             E = np.zeros((self.n, stop - start))
             E[cols[start:stop], np.arange(stop - start)] = 1.0
-            self.G[:, start:stop] = self.lu.solve(E)[cols, :]
+            self.G[:, start:stop] = self._lu_solve(E)[cols, :]
+
+    def _lu_solve(self, b: np.ndarray) -> np.ndarray:
+        """``K0^{-1} b`` (``b`` a vector or columns, in reduced coordinates)."""
+        if self.perm is None:
+            return np.asarray(self.lu.solve(b))
+        return np.asarray(self.lu.solve(b[self.perm]))[self.iperm]
 
     @property
     def memory_bytes(self) -> int:
@@ -157,7 +204,7 @@ class TangentSolver:
 
     def solve(self, moduli: np.ndarray, b: np.ndarray) -> np.ndarray:
         """``delta`` with ``T^T (K + Kc(moduli)) T delta = b``; raises on a singular tangent."""
-        y = self.lu.solve(np.asarray(b, dtype=np.float64))
+        y = self._lu_solve(np.asarray(b, dtype=np.float64))
         if self.contact.size == 0:
             return y
         A = self.correction(moduli)
@@ -171,7 +218,7 @@ class TangentSolver:
         z = sla.solve(M, A_ss @ y[self.contact[s]], check_finite=True)
         scatter = np.zeros(self.n)
         scatter[self.contact[s]] = z
-        return y - self.lu.solve(scatter)
+        return y - self._lu_solve(scatter)
 
 
 class IterativeSolver:
@@ -265,31 +312,83 @@ def make_solver(
     raise ParameterError("linear_solver", kind, "one of " + ", ".join(LINEAR_SOLVERS))
 
 
-def estimate(block: Block, linear_solver: str = "direct") -> dict[str, float]:
-    """Size of a run of ``block`` before meshing: unknowns, contact unknowns and the
-    solver's storage in bytes.
+#: Entries of the nested-dissection LU factors (L and U) per unknown, measured on this
+#: model's structured meshes with the contact unknowns last: 2-D ``FILL_2D * log2(n)``
+#: (167 per unknown at 51k unknowns), 3-D ``FILL_3D * n**(1/3)`` (984 at 13.9k, 1,617 at
+#: 45k unknowns).
+FILL_2D = 11.0
+FILL_3D = 46.0
+#: Bytes per factor entry at the peak: SuperLU's supernodal factors, the CSC copy of one
+#: of them while the trailing block is read, and the allocator's slack (fitted to the
+#: measured peaks: 3-D 32^3 hexahedra 5.9 GB above the interpreter).
+BYTES_PER_ENTRY = 19.0
+#: Bytes per unknown of the mesh, its assembly and the solver's sparse matrices (the
+#: stiffness, its reduced and permuted copies, the interpolation): what the measured peaks
+#: of benchmarks/bench_contact_scaling.py leave above the interpreter, the factors and
+#: the dense blocks (2-D 52k unknowns: 2.8 kB; 3-D 14.7k: 12 kB; scikit-fem's hexahedron
+#: assembly alone peaks at 10 kB per unknown).
+MESH_BYTES_2D = 3000.0
+MESH_BYTES_3D = 12000.0
+#: Seconds per factor entry of one solve (two triangular sweeps; 3.3e-9 measured), of
+#: the factorisation per entry (2-D; 8e-8) and per entry and unknown (3-D, ~n^2 overall;
+#: 6-10e-12), and the dense rate [flop/s]: one core of the shared machine, upper ends.
+SOLVE_S_PER_ENTRY = 4e-9
+FACTOR_S_PER_ENTRY_UNKNOWN_3D = 1e-11
+FACTOR_S_PER_ENTRY_2D = 1e-7
+DENSE_FLOPS = 5e9
+#: GMRES basis vectors and the multigrid hierarchy's size relative to the tangent
+#: (iterative solver).
+GMRES_RESTART = 60
+AMG_COMPLEXITY = 3.0
+#: Seconds per unknown of one iterative solve (a hierarchy rebuilt and GMRES: 108 CPU s
+#: for ~70 solves at 14.7k unknowns, 3-D).
+ITERATIVE_S_PER_UNKNOWN = 1e-4
 
-    Direct: 12 bytes per nonzero of the LU factors, from the fill per unknown measured
-    with SuperLU's MMD_AT_PLUS_A ordering on this model's structured meshes (2-D:
-    79 per unknown at 3.4k unknowns, growing as n^0.26; 3-D: 384 at 2.2k, growing as
-    n^0.66), plus the m x m contact block and one chunk of back-substitution columns.
-    Iterative: the tangent and three times it for the multigrid hierarchy, plus the
-    GMRES basis (60 vectors). Direct: 0.7-1.25x the measured peak above the
-    interpreter's own (2-D 52k and 3-D 14.7k unknowns); iterative: not calibrated.
+
+def cost(
+    unknowns: float, contact_unknowns: float, dim: int, linear_solver: str = "direct"
+) -> dict[str, float]:
+    """Memory and time of the linear solver for ``unknowns`` free unknowns of which
+    ``contact_unknowns`` on the contact face: ``bytes`` (the peak), ``setup`` [s] (the
+    factorisation and the contact block) and ``per_solve`` [s] (one Newton solve).
+
+    Direct: the nested-dissection factors (``FILL_2D * log2(n)`` or
+    ``FILL_3D * n**(1/3)`` entries per unknown), the dense contact blocks (three m x m
+    arrays while ``G`` is formed) and the mesh and its matrices; a solve is two sweeps of
+    the factors and
+    a dense solve on at most m contact unknowns. Iterative: the tangent and its
+    hierarchy, the GMRES basis and the mesh.
     """
+    n, m = float(unknowns), float(contact_unknowns)
+    mesh = n * (MESH_BYTES_2D if dim == 2 else MESH_BYTES_3D)
+    if linear_solver == "direct":
+        per = FILL_2D * math.log2(max(n, 2.0)) if dim == 2 else FILL_3D * n ** (1.0 / 3.0)
+        entries = per * n
+        need = mesh + BYTES_PER_ENTRY * entries + 3 * 8.0 * m * m
+        if dim == 2:
+            factor = FACTOR_S_PER_ENTRY_2D * entries
+        else:
+            factor = FACTOR_S_PER_ENTRY_UNKNOWN_3D * entries * n
+        setup = factor + 3.0 * m**3 / DENSE_FLOPS
+        per_solve = 2.0 * SOLVE_S_PER_ENTRY * entries + (2.0 / 3.0) * m**3 / DENSE_FLOPS
+    elif linear_solver == "iterative":
+        nnz = n * (9 if dim == 2 else 27) * dim
+        need = mesh + (1.0 + AMG_COMPLEXITY) * 12.0 * nnz + 8.0 * GMRES_RESTART * n
+        setup = 0.0
+        per_solve = ITERATIVE_S_PER_UNKNOWN * n  # a hierarchy and GMRES per solve
+    else:
+        raise ParameterError("linear_solver", linear_solver, "one of " + ", ".join(LINEAR_SOLVERS))
+    return {"bytes": need, "setup": setup, "per_solve": per_solve}
+
+
+def estimate(block: Block, linear_solver: str = "direct") -> dict[str, float]:
+    """Size of a run of ``block`` before meshing: ``unknowns``, ``contact_unknowns`` and
+    the solver's ``bytes``, ``setup`` and ``per_solve`` seconds (:func:`cost`)."""
     cells = np.asarray(block.cells, dtype=np.float64)
     d = block.dim
-    nodes = float(np.prod(cells + 1))
-    n = d * nodes
+    n = d * float(np.prod(cells + 1))
     m = d * float(np.prod(cells[:-1] + 1))
-    if linear_solver == "direct":
-        per = 79.0 * (n / 3402.0) ** 0.26 if d == 2 else 384.0 * (n / 2187.0) ** 0.66
-        # x 2.2: the stiffness, its reduced copy and SuperLU's working storage
-        storage = 2.2 * (12.0 * per * n + 8.0 * m * m + 8.0 * _CHUNK * n)
-    else:
-        per_row = (9 if d == 2 else 27) * d
-        storage = 4 * 12.0 * per_row * n + 8.0 * 60 * n
-    return {"unknowns": n, "contact_unknowns": m, "bytes": storage}
+    return {"unknowns": n, "contact_unknowns": m, **cost(n, m, d, linear_solver)}
 
 
 def _rigid_modes(disc: Discretisation, T: sp.csc_matrix) -> np.ndarray:
@@ -312,6 +411,72 @@ def _rigid_modes(disc: Discretisation, T: sp.csc_matrix) -> np.ndarray:
     counts = np.asarray(T.sum(axis=0)).ravel()
     counts[counts == 0] = 1.0
     return np.asarray(T.T @ full) / counts[:, None]
+
+
+def _pruned(B: sp.csc_matrix) -> sp.csc_matrix:
+    """``B`` without its round-off entries (< 1e-12 of the largest): scikit-fem's facet
+    interpolation stores ~1e-33 values of the nodes off the face, which would make them
+    contact unknowns."""
+    B = B.copy()
+    B.data[np.abs(B.data) < 1e-12 * float(np.abs(B.data).max(initial=0.0))] = 0.0
+    B.eliminate_zeros()
+    return B
+
+
+def _contact_last_order(K0: sp.csc_matrix, contact: np.ndarray) -> tuple[np.ndarray, int]:
+    """A fill-reducing order of ``K0``'s unknowns with ``contact`` and the dense unknowns
+    (a rigid plate's, coupled to a whole face) last; returns it and the trailing count.
+
+    The bulk is ordered by METIS nested dissection (pymetis), or by reverse
+    Cuthill-McKee when pymetis is not installed (more fill in 3-D).
+    """
+    n = K0.shape[0]
+    degree = np.diff(K0.indptr)
+    dense = np.flatnonzero(degree > 8 * max(int(np.median(degree)), 1))
+    last = np.union1d(contact, dense)
+    bulk = np.setdiff1d(np.arange(n), last)
+    graph = K0[bulk][:, bulk].tocsr()
+    graph.setdiag(0.0)
+    graph.eliminate_zeros()
+    try:
+        import pymetis
+    except ImportError:
+        from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+        local = np.asarray(reverse_cuthill_mckee(graph, symmetric_mode=True))
+    else:
+        if bulk.size > 1 and graph.nnz:
+            adjacency = pymetis.CSRAdjacency(graph.indptr, graph.indices)
+            local = np.asarray(pymetis.nested_dissection(adjacency)[0], dtype=np.int64)
+        else:
+            local = np.arange(bulk.size)
+    return np.concatenate([bulk[local], last]).astype(np.int64), int(last.size)
+
+
+def _trailing_inverse(lu: Any, k: int) -> np.ndarray | None:
+    """The inverse of the Schur complement on the last ``k`` unknowns, ``(L U)_kk^{-1}``,
+    from the trailing blocks of SuperLU's factors; None when SuperLU moved a row or
+    column into or out of the trailing block (then the factors' tail is not the Schur
+    complement)."""
+    n = lu.shape[0]
+    tail = np.arange(n - k, n)
+    if k == 0 or not (
+        np.array_equal(lu.perm_r[n - k :], tail) and np.array_equal(lu.perm_c[n - k :], tail)
+    ):
+        return None
+    L = lu.L  # one full factor in memory at a time
+    L_kk = L[n - k :, n - k :].toarray()
+    del L
+    U = lu.U
+    U_kk = U[n - k :, n - k :].toarray()
+    del U
+    inv_L, info_l = sla.lapack.dtrtri(L_kk, lower=1, unitdiag=1, overwrite_c=1)
+    del L_kk
+    inv_U, info_u = sla.lapack.dtrtri(U_kk, lower=0, overwrite_c=1)
+    del U_kk
+    if info_l or info_u:
+        return None
+    return np.asarray(inv_U @ inv_L)  # symmetric to round-off (K0 is)
 
 
 def _rows(B: sp.csr_matrix) -> tuple[np.ndarray, np.ndarray]:

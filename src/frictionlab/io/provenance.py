@@ -44,6 +44,7 @@ DEPENDENCIES = (
     "scikit-fem",
     "meshio",
     "pyamg",
+    "pymetis",
     "pint",
     "pyarrow",
     "orjson",

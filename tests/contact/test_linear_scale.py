@@ -1,0 +1,70 @@
+"""The direct solver at scale: the Schur complement taken from nested-dissection factors
+gives the tangent's solution (2-D and 3-D, with a rigid plate's tie), and the size
+estimate refuses a mesh that does not fit, naming the key, before meshing."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import scipy.sparse.linalg as spla
+from tests.contact.support import law, pmma_block
+
+from frictionlab.contact import Block, SolverOptions, discretise
+from frictionlab.contact.interface import contact_stiffness
+from frictionlab.contact.linear import TangentSolver, reduction
+from frictionlab.contact.solver import check_memory
+from frictionlab.errors import ParameterError
+
+
+def _moduli(rng: np.random.Generator, n: int, d: int) -> np.ndarray:
+    """Non-symmetric moduli as in plastic sliding, a few points open, some elastic."""
+    moduli = rng.uniform(-2e11, 2e11, (n, d, d))
+    for a in range(d):
+        moduli[:, a, a] = rng.uniform(0.0, 5e11, n)
+    moduli[:3] = 0.0
+    moduli[-4:] = np.diag([5e11] * d)  # sticking: no correction there
+    return moduli
+
+
+@pytest.mark.parametrize(
+    "block",
+    [
+        pmma_block(element_size=0.00625),
+        Block(3e9, 0.35, 0.01, 0.01, 0.0025, element="hex", depth=0.01),
+    ],
+    ids=["2d", "3d"],
+)
+def test_schur_solver_equals_a_sparse_solve_of_the_assembled_tangent(block: Block) -> None:
+    disc = discretise(block)
+    d = disc.dim
+    rng = np.random.default_rng(5)
+    fixed = np.zeros(disc.n_dofs, dtype=bool)
+    for a in range(d - 1):
+        fixed[disc.dofs[a][disc.top_nodes]] = True
+    ties = [disc.dofs[-1][disc.top_nodes]]  # a rigid plate pressing the top
+    solver = TangentSolver(disc, fixed, law(), ties)
+    assert solver.perm is not None  # the contact unknowns ordered last
+    reference = TangentSolver(disc, fixed, law(), ties, ordering="MMD_AT_PLUS_A")
+    moduli = _moduli(rng, disc.n_points, d)
+    T = reduction(fixed, ties)
+    J = (T.T @ (disc.stiffness + contact_stiffness(disc, moduli)) @ T).tocsc()
+    b = rng.normal(size=J.shape[0]) * 1e3
+    expected = spla.spsolve(J, b)
+    tol = 1e-9 * np.abs(expected).max()
+    np.testing.assert_allclose(solver.solve(moduli, b), expected, rtol=0, atol=tol)
+    np.testing.assert_allclose(reference.solve(moduli, b), expected, rtol=0, atol=tol)
+    # G is the contact block of K0^-1 (checked on one column against a full solve)
+    e = np.zeros(J.shape[0])
+    j = solver.contact[len(solver.contact) // 2]
+    e[j] = 1.0
+    column = solver._lu_solve(e)[solver.contact]
+    np.testing.assert_allclose(
+        solver.G[:, len(solver.contact) // 2], column, rtol=0, atol=1e-10 * np.abs(column).max()
+    )
+
+
+def test_memory_estimate_refuses_a_million_hex_block_before_meshing() -> None:
+    block = Block(3e9, 0.35, 1.0, 1.0, 1.0 / 100, element="hex", depth=1.0)
+    with pytest.raises(ParameterError, match=r"element_size .* memory_limit = 4e\+09"):
+        check_memory(block, SolverOptions(memory_limit=4e9))
+    check_memory(pmma_block(), SolverOptions(memory_limit=4e9))
