@@ -997,10 +997,9 @@ def _lanes_task(
     dt = dt_arr[0]
     law, p, ca, sa, e_rec, ext1, ext2 = _call_constants(P, dt, surface, tear_k, ulaw, integ,
                                                         rform)  # fmt: skip
-    v = np.empty((N_ROWS, LANES))
-    iv = np.zeros((3, LANES), dtype=np.int64)
+    v = np.zeros(N_ROWS * LANES)
     for base in range(first, stop, LANES):
-        _lanes_group(base, v, iv, law, p, ca, sa, dt, e_rec, ext1, ext2, traction, F_old,
+        _lanes_group(base, v, law, p, ca, sa, dt, e_rec, ext1, ext2, traction, F_old,
                      R_old, gap_old, slip_inc, surface, tear_k, ulaw, integ, rform,
                      open_frozen, want_tangent, out_traction, out_F, out_R, out_gap,
                      out_dlam, out_vp, out_diss, out_tangent, out_status,
@@ -1149,19 +1148,21 @@ def empty_outputs(n_points: int, tangent: bool = True) -> dict[str, np.ndarray]:
 # surfaces, the ln law, backward Euler, exponents other than 1, the ratio recovery form).
 # The math-library calls stay scalar, in loops of their own.
 
-#: Points processed together (two AVX2 vectors of float64).
-LANES = 8
+#: Points processed together: LLVM vectorises no loop of fewer than 16 iterations.
+LANES = 16
 #: What a lane does: the elastic outcome, the plastic corrector, or _point (BY_POINT).
 ELASTIC, PLASTIC, BY_POINT = 0, 1, 2
-#: Rows of the lane scratch array (one value per lane).
+#: Rows of the lane scratch, a flat array of N_ROWS x LANES values (one value per lane):
+#: row R of lane j is v[R + j]. Flat, so that the compiled code knows every row's offset
+#: and can prove that the rows do not overlap (a 2-D array's row stride is a run-time
+#: value, and the vectoriser then gives up on a loop that touches many rows).
 (V_F1T, V_F2T, V_FN_TR, V_FH1T, V_FH2T, V_W_TR, V_PHI_TR, V_F_OLD, V_F_REC, V_R_START,
  V_R0, V_Y0, V_S0, V_Q, V_T, V_T_POS, V_T_NEG, V_DX, V_DX_OLD, V_FLIP, V_OMQ, V_GAMMA,
  V_I1, V_I2, V_T1, V_T2, V_W, V_DLAM, V_WN, V_ARG_R, V_A, V_EM_R, V_EM_F, V_Y, V_S,
  V_ATAN, V_R, V_F, V_RES, V_R_GAMMA, V_PHI_1, V_PHI_2, V_HARD, V_COND, V_PHI_FN, V_DR,
- V_DDR, V_DDDR, V_DF, V_DDF) = range(50)  # fmt: skip
-N_ROWS = 50
-#: Rows of the lane integer array: what the lane does, still iterating, evaluations.
-I_KIND, I_ACTIVE, I_ITER = range(3)
+ V_DDR, V_DDDR, V_DF, V_DDF, V_KIND, V_ACTIVE, V_ITER, V_T1_OLD, V_T2_OLD, V_FN,
+ V_R_OLD, V_GAP_OLD, V_SLIP1, V_SLIP2, V_DUN) = range(0, 61 * LANES, LANES)  # fmt: skip
+N_ROWS = 61
 
 
 @njit(cache=True, inline="always")
@@ -1237,18 +1238,23 @@ def _lane_trial(law, ca, sa, dt, e_rec, t1_old, t2_old, fn, F_old, R_old, gap_ol
 
 
 @njit(cache=True, error_model="numpy")
-def _lanes_trial(v, iv, base, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_old,
+def _lanes_trial(v, base, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_old,
                  slip_inc):  # fmt: skip
-    """:func:`_lane_trial` for the group of points from ``base``, into the scratch."""
+    """:func:`_lane_trial` for the group of points from ``base``, into the scratch (the
+    inputs are copied first, so that the arithmetic reads the scratch alone)."""
     for j in range(LANES):
         i = base + j
-        (iv[I_KIND, j], v[V_F1T, j], v[V_F2T, j], v[V_FN_TR, j], v[V_FH1T, j],
-         v[V_FH2T, j], v[V_W_TR, j], v[V_PHI_TR, j], v[V_F_REC, j], v[V_R_START, j],
-         v[V_R0, j]) = _lane_trial(law, ca, sa, dt, e_rec, traction[i, 0], traction[i, 1],
-                                    traction[i, 2], F_old[i], R_old[i], gap_old[i],
-                                    slip_inc[i, 0], slip_inc[i, 1],
-                                    slip_inc[i, 2])  # fmt: skip
-        v[V_F_OLD, j] = F_old[i]
+        (v[V_T1_OLD + j], v[V_T2_OLD + j], v[V_FN + j], v[V_F_OLD + j], v[V_R_OLD + j],
+         v[V_GAP_OLD + j], v[V_SLIP1 + j], v[V_SLIP2 + j], v[V_DUN + j]) = (
+            traction[i, 0], traction[i, 1], traction[i, 2], F_old[i], R_old[i], gap_old[i],
+            slip_inc[i, 0], slip_inc[i, 1], slip_inc[i, 2])  # fmt: skip
+    for j in range(LANES):
+        (v[V_KIND + j], v[V_F1T + j], v[V_F2T + j], v[V_FN_TR + j], v[V_FH1T + j],
+         v[V_FH2T + j], v[V_W_TR + j], v[V_PHI_TR + j], v[V_F_REC + j], v[V_R_START + j],
+         v[V_R0 + j]) = _lane_trial(law, ca, sa, dt, e_rec, v[V_T1_OLD + j], v[V_T2_OLD + j],
+                                    v[V_FN + j], v[V_F_OLD + j], v[V_R_OLD + j],
+                                    v[V_GAP_OLD + j], v[V_SLIP1 + j], v[V_SLIP2 + j],
+                                    v[V_DUN + j])  # fmt: skip
 
 
 @njit(cache=True, inline="always")
@@ -1322,44 +1328,44 @@ def _lane_model(law, q, fh1t, fh2t, fn, R0, dR, ddR, dddR, F0, dF, ddF):  # fmt:
 
 
 @njit(cache=True, error_model="numpy")
-def _lanes_start(v, iv, law):  # fmt: skip
+def _lanes_start(v, law):  # fmt: skip
     """Steps 5's start (:func:`_start`, cone) for the plastic lanes: ``V_Q``."""
     for j in range(LANES):
-        if iv[I_KIND, j] == PLASTIC:
-            y0 = math.cos(_HALF_PI * v[V_R_START, j])  # ratio_start of the cot law
-            s0 = math.sin(_HALF_PI * v[V_R_START, j])
-            v[V_Y0, j] = y0
-            v[V_S0, j] = s0
+        if v[V_KIND + j] == PLASTIC:
+            y0 = math.cos(_HALF_PI * v[V_R_START + j])  # ratio_start of the cot law
+            s0 = math.sin(_HALF_PI * v[V_R_START + j])
+            v[V_Y0 + j] = y0
+            v[V_S0 + j] = s0
     for j in range(LANES):
         q, refine, dR, ddR, dddR, dF, ddF, plain = _lane_start(
-            law, v[V_R0, j], v[V_PHI_TR, j], v[V_FN_TR, j], v[V_W_TR, j], v[V_FH1T, j],
-            v[V_FH2T, j], v[V_R_START, j], v[V_Y0, j], v[V_S0, j], v[V_F_REC, j])  # fmt: skip
-        plastic = iv[I_KIND, j] == PLASTIC
-        iv[I_KIND, j] = BY_POINT if plastic and not plain else iv[I_KIND, j]
-        iv[I_ACTIVE, j] = 1 if plastic and plain and refine else 0
-        (v[V_Q, j], v[V_DR, j], v[V_DDR, j], v[V_DDDR, j], v[V_DF, j],
-         v[V_DDF, j]) = q, dR, ddR, dddR, dF, ddF  # fmt: skip
+            law, v[V_R0 + j], v[V_PHI_TR + j], v[V_FN_TR + j], v[V_W_TR + j], v[V_FH1T + j],
+            v[V_FH2T + j], v[V_R_START + j], v[V_Y0 + j], v[V_S0 + j], v[V_F_REC + j])  # fmt: skip
+        plastic = v[V_KIND + j] == PLASTIC
+        v[V_KIND + j] = BY_POINT if plastic and not plain else v[V_KIND + j]
+        v[V_ACTIVE + j] = 1.0 if plastic and plain and refine else 0.0
+        (v[V_Q + j], v[V_DR + j], v[V_DDR + j], v[V_DDDR + j], v[V_DF + j],
+         v[V_DDF + j]) = q, dR, ddR, dddR, dF, ddF  # fmt: skip
     for _ in range(MODEL_ITERATIONS):
-        if _none_active(iv):
+        if _none_active(v):
             break
         for j in range(LANES):
-            q, stop, plain = _lane_model(law, v[V_Q, j], v[V_FH1T, j], v[V_FH2T, j],
-                                         v[V_FN_TR, j], v[V_R_START, j], v[V_DR, j],
-                                         v[V_DDR, j], v[V_DDDR, j], v[V_F_REC, j],
-                                         v[V_DF, j], v[V_DDF, j])  # fmt: skip
-            active = iv[I_ACTIVE, j] == 1
-            v[V_Q, j] = q if active else v[V_Q, j]
-            iv[I_KIND, j] = BY_POINT if active and not plain else iv[I_KIND, j]
-            iv[I_ACTIVE, j] = 1 if active and plain and not stop else 0
+            q, stop, plain = _lane_model(law, v[V_Q + j], v[V_FH1T + j], v[V_FH2T + j],
+                                         v[V_FN_TR + j], v[V_R_START + j], v[V_DR + j],
+                                         v[V_DDR + j], v[V_DDDR + j], v[V_F_REC + j],
+                                         v[V_DF + j], v[V_DDF + j])  # fmt: skip
+            active = v[V_ACTIVE + j] == 1.0
+            v[V_Q + j] = q if active else v[V_Q + j]
+            v[V_KIND + j] = BY_POINT if active and not plain else v[V_KIND + j]
+            v[V_ACTIVE + j] = 1.0 if active and plain and not stop else 0.0
 
 
 @njit(cache=True, inline="always")
-def _none_active(iv):  # fmt: skip
+def _none_active(v):  # fmt: skip
     """No lane is still iterating."""
-    count = 0
+    count = 0.0
     for j in range(LANES):
-        count += iv[I_ACTIVE, j]
-    return count == 0
+        count += v[V_ACTIVE + j]
+    return count == 0.0
 
 
 @njit(cache=True, inline="always")
@@ -1457,151 +1463,151 @@ def _lane_residual(law, dlam, gamma, i1, i2, t1, t2, W, w, y, s, atan, a, em_f, 
 
 
 @njit(cache=True, error_model="numpy")
-def _lanes_residual(v, iv, law, dt):  # fmt: skip
+def _lanes_residual(v, law, dt):  # fmt: skip
     """:func:`_state_at` at ``V_Q`` for the active lanes (the others keep their values)."""
     for j in range(LANES):
         gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a, plain = _lane_return(
-            law, v[V_Q, j], v[V_OMQ, j], v[V_FH1T, j], v[V_FH2T, j], dt)  # fmt: skip
-        active = iv[I_ACTIVE, j] == 1
-        iv[I_KIND, j] = BY_POINT if active and not plain else iv[I_KIND, j]
-        iv[I_ACTIVE, j] = 1 if active and plain else 0
-        (v[V_GAMMA, j], v[V_I1, j], v[V_I2, j], v[V_T1, j], v[V_T2, j], v[V_W, j],
-         v[V_DLAM, j], v[V_WN, j], v[V_ARG_R, j], v[V_A, j]) = (
+            law, v[V_Q + j], v[V_OMQ + j], v[V_FH1T + j], v[V_FH2T + j], dt)  # fmt: skip
+        active = v[V_ACTIVE + j] == 1.0
+        v[V_KIND + j] = BY_POINT if active and not plain else v[V_KIND + j]
+        v[V_ACTIVE + j] = 1.0 if active and plain else 0.0
+        (v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j], v[V_T1 + j], v[V_T2 + j], v[V_W + j],
+         v[V_DLAM + j], v[V_WN + j], v[V_ARG_R + j], v[V_A + j]) = (
             gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a)  # fmt: skip
     for j in range(LANES):  # the math library, one lane at a time
-        if iv[I_ACTIVE, j] == 1:
-            v[V_EM_R, j] = math.expm1(v[V_ARG_R, j])
-            v[V_EM_F, j] = math.expm1(-v[V_A, j]) if v[V_A, j] != 0.0 else 0.0
+        if v[V_ACTIVE + j] == 1.0:
+            v[V_EM_R + j] = math.expm1(v[V_ARG_R + j])
+            v[V_EM_F + j] = math.expm1(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
     for j in range(LANES):
-        y0 = v[V_Y0, j]
-        em = v[V_EM_R, j]
-        s2 = v[V_S0, j] * v[V_S0, j] - y0 * y0 * (em * (2.0 + em))
-        v[V_Y, j] = y0 * (1.0 + em)
-        v[V_S, j] = math.sqrt(s2) if s2 > 0.0 else 0.0
+        y0 = v[V_Y0 + j]
+        em = v[V_EM_R + j]
+        s2 = v[V_S0 + j] * v[V_S0 + j] - y0 * y0 * (em * (2.0 + em))
+        v[V_Y + j] = y0 * (1.0 + em)
+        v[V_S + j] = math.sqrt(s2) if s2 > 0.0 else 0.0
     for j in range(LANES):
-        if iv[I_ACTIVE, j] == 1:
-            v[V_ATAN, j] = math.atan2(v[V_S, j], v[V_Y, j])
+        if v[V_ACTIVE + j] == 1.0:
+            v[V_ATAN + j] = math.atan2(v[V_S + j], v[V_Y + j])
     for j in range(LANES):
-        out = _lane_residual(law, v[V_DLAM, j], v[V_GAMMA, j], v[V_I1, j], v[V_I2, j],
-                             v[V_T1, j], v[V_T2, j], v[V_W, j], v[V_WN, j], v[V_Y, j],
-                             v[V_S, j], v[V_ATAN, j], v[V_A, j], v[V_EM_F, j],
-                             v[V_F_OLD, j], v[V_FN_TR, j], dt)  # fmt: skip
+        out = _lane_residual(law, v[V_DLAM + j], v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j],
+                             v[V_T1 + j], v[V_T2 + j], v[V_W + j], v[V_WN + j], v[V_Y + j],
+                             v[V_S + j], v[V_ATAN + j], v[V_A + j], v[V_EM_F + j],
+                             v[V_F_OLD + j], v[V_FN_TR + j], dt)  # fmt: skip
         r, r_gamma, phi_1, phi_2, R, F, phi_fn, hard, cond = out
-        active = iv[I_ACTIVE, j] == 1
-        v[V_RES, j] = r if active else v[V_RES, j]
-        v[V_R_GAMMA, j] = r_gamma if active else v[V_R_GAMMA, j]
-        v[V_PHI_1, j] = phi_1 if active else v[V_PHI_1, j]
-        v[V_PHI_2, j] = phi_2 if active else v[V_PHI_2, j]
-        v[V_R, j] = R if active else v[V_R, j]
-        v[V_F, j] = F if active else v[V_F, j]
-        v[V_PHI_FN, j] = phi_fn if active else v[V_PHI_FN, j]
-        v[V_HARD, j] = hard if active else v[V_HARD, j]
-        v[V_COND, j] = cond if active else v[V_COND, j]
+        active = v[V_ACTIVE + j] == 1.0
+        v[V_RES + j] = r if active else v[V_RES + j]
+        v[V_R_GAMMA + j] = r_gamma if active else v[V_R_GAMMA + j]
+        v[V_PHI_1 + j] = phi_1 if active else v[V_PHI_1 + j]
+        v[V_PHI_2 + j] = phi_2 if active else v[V_PHI_2 + j]
+        v[V_R + j] = R if active else v[V_R + j]
+        v[V_F + j] = F if active else v[V_F + j]
+        v[V_PHI_FN + j] = phi_fn if active else v[V_PHI_FN + j]
+        v[V_HARD + j] = hard if active else v[V_HARD + j]
+        v[V_COND + j] = cond if active else v[V_COND + j]
 
 
 @njit(cache=True, error_model="numpy")
-def _lanes_solve(v, iv, law, dt):  # fmt: skip
+def _lanes_solve(v, law, dt):  # fmt: skip
     """:func:`_solve` (cone) for the plastic lanes from ``V_Q``; a lane that does not
     converge goes BY_POINT (whose solve then fails the same way)."""
     for j in range(LANES):
-        q0 = v[V_Q, j]
+        q0 = v[V_Q + j]
         flip = q0 > 0.5
         t = 1.0 - q0 if flip else q0
-        v[V_FLIP, j] = 1.0 if flip else 0.0
-        v[V_T, j] = t
-        v[V_T_POS, j] = 1.0 if flip else 0.0
-        v[V_T_NEG, j] = 0.0 if flip else 1.0
-        v[V_DX, j] = 1.0
-        v[V_DX_OLD, j] = 1.0
-        v[V_Q, j] = 1.0 - t if flip else t
-        v[V_OMQ, j] = t if flip else 1.0 - t
-        iv[I_ACTIVE, j] = 1 if iv[I_KIND, j] == PLASTIC else 0
-        iv[I_ITER, j] = 0
-    _lanes_residual(v, iv, law, dt)
+        v[V_FLIP + j] = 1.0 if flip else 0.0
+        v[V_T + j] = t
+        v[V_T_POS + j] = 1.0 if flip else 0.0
+        v[V_T_NEG + j] = 0.0 if flip else 1.0
+        v[V_DX + j] = 1.0
+        v[V_DX_OLD + j] = 1.0
+        v[V_Q + j] = 1.0 - t if flip else t
+        v[V_OMQ + j] = t if flip else 1.0 - t
+        v[V_ACTIVE + j] = 1.0 if v[V_KIND + j] == PLASTIC else 0.0
+        v[V_ITER + j] = 0.0
+    _lanes_residual(v, law, dt)
     Aref = law.Aref
     for _ in range(MAX_ITERATIONS):
-        if _none_active(iv):
+        if _none_active(v):
             break
         for j in range(LANES):
-            active = iv[I_ACTIVE, j] == 1
+            active = v[V_ACTIVE + j] == 1.0
             (finished, converged, t, t_pos, t_neg, dx, dx_old, flip, q, omq) = _lane_newton(
-                v[V_Q, j], v[V_T, j], v[V_T_POS, j], v[V_T_NEG, j], v[V_DX, j],
-                v[V_DX_OLD, j], v[V_FLIP, j] > 0.5, v[V_RES, j], v[V_F, j],
-                v[V_R_GAMMA, j], v[V_COND, j], v[V_OMQ, j], Aref)  # fmt: skip
-            iv[I_ITER, j] += 1 if active else 0
+                v[V_Q + j], v[V_T + j], v[V_T_POS + j], v[V_T_NEG + j], v[V_DX + j],
+                v[V_DX_OLD + j], v[V_FLIP + j] > 0.5, v[V_RES + j], v[V_F + j],
+                v[V_R_GAMMA + j], v[V_COND + j], v[V_OMQ + j], Aref)  # fmt: skip
+            v[V_ITER + j] += 1.0 if active else 0.0
             failed = active and finished and not converged
-            iv[I_KIND, j] = BY_POINT if failed else iv[I_KIND, j]
+            v[V_KIND + j] = BY_POINT if failed else v[V_KIND + j]
             going = active and not finished
-            iv[I_ACTIVE, j] = 1 if going else 0
-            (v[V_T, j], v[V_T_POS, j], v[V_T_NEG, j], v[V_DX, j],
-             v[V_DX_OLD, j]) = (t, t_pos, t_neg, dx, dx_old)  # fmt: skip
+            v[V_ACTIVE + j] = 1.0 if going else 0.0
+            (v[V_T + j], v[V_T_POS + j], v[V_T_NEG + j], v[V_DX + j],
+             v[V_DX_OLD + j]) = (t, t_pos, t_neg, dx, dx_old)  # fmt: skip
             # a finished lane keeps its q: _lanes_residual recomputes the same algebra
-            v[V_Q, j] = q if going else v[V_Q, j]
-            v[V_OMQ, j] = omq if going else v[V_OMQ, j]
-            v[V_FLIP, j] = 1.0 if flip else 0.0
-        _lanes_residual(v, iv, law, dt)
+            v[V_Q + j] = q if going else v[V_Q + j]
+            v[V_OMQ + j] = omq if going else v[V_OMQ + j]
+            v[V_FLIP + j] = 1.0 if flip else 0.0
+        _lanes_residual(v, law, dt)
     for j in range(LANES):  # still iterating after MAX_ITERATIONS: not converged
-        iv[I_KIND, j] = BY_POINT if iv[I_ACTIVE, j] == 1 else iv[I_KIND, j]
+        v[V_KIND + j] = BY_POINT if v[V_ACTIVE + j] == 1.0 else v[V_KIND + j]
 
 
 @njit(cache=True, inline="always")
-def _lane_result(v, iv, j, law, ca, sa, ext1, ext2, want_tangent):  # fmt: skip
+def _lane_result(v, j, law, ca, sa, ext1, ext2, want_tangent):  # fmt: skip
     """The :data:`Result` of an ELASTIC or PLASTIC lane (:func:`_elastic`, steps 6-7)."""
-    f1t = v[V_F1T, j]
-    f2t = v[V_F2T, j]
-    fn_tr = v[V_FN_TR, j]
-    if iv[I_KIND, j] == ELASTIC:
-        R_new = v[V_PHI_TR, j] / v[V_F_REC, j]
+    f1t = v[V_F1T + j]
+    f2t = v[V_F2T + j]
+    fn_tr = v[V_FN_TR + j]
+    if v[V_KIND + j] == ELASTIC:
+        R_new = v[V_PHI_TR + j] / v[V_F_REC + j]
         R_new = 1.0 if R_new > 1.0 else R_new
         if want_tangent:
             return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr,
-                           v[V_F_REC, j], R_new, 0.0, k00=law.alpha_t, k11=law.alpha_t,
+                           v[V_F_REC + j], R_new, 0.0, k00=law.alpha_t, k11=law.alpha_t,
                            k02=ca * ext1 - sa * ext2, k12=sa * ext1 + ca * ext2,
                            k22=law.alpha_n)  # fmt: skip
         return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr,
-                       v[V_F_REC, j], R_new, 0.0)  # fmt: skip
-    fh1t = v[V_FH1T, j]
-    fh2t = v[V_FH2T, j]
-    W = v[V_W, j]
-    d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, law.A1, law.A2, v[V_GAMMA, j])
+                       v[V_F_REC + j], R_new, 0.0)  # fmt: skip
+    fh1t = v[V_FH1T + j]
+    fh2t = v[V_FH2T + j]
+    W = v[V_W + j]
+    d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, law.A1, law.A2, v[V_GAMMA + j])
     tb1 = (fh1t / d1) / W
     tb2 = (fh2t / d2) / W
     k = Tangent(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     if want_tangent:
-        tr = Trial(fn_tr, f1t, f2t, fh1t, fh2t, v[V_W_TR, j], v[V_PHI_TR, j], 0.0, 0.0,
+        tr = Trial(fn_tr, f1t, f2t, fh1t, fh2t, v[V_W_TR + j], v[V_PHI_TR + j], 0.0, 0.0,
                    law.alpha_t, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
                    ext1, ext2, 0.0, 0.0, 0.0)  # fmt: skip
-        res = Residual(v[V_RES, j], v[V_R_GAMMA, j], v[V_PHI_1, j], v[V_PHI_2, j],
-                       v[V_DLAM, j], v[V_R, j], 0.0, v[V_F, j], 0.0, v[V_PHI_FN, j],
-                       v[V_GAMMA, j], W, v[V_HARD, j], 0.0, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
-        st = Start(v[V_R_START, j], False, 0.0, 0.0, 0.0)
-        k = _tangent(law, tr, st, res, v[V_Y0, j], v[V_S0, j], d1, d2, a1, a2, fh1, fh2, ca,
+        res = Residual(v[V_RES + j], v[V_R_GAMMA + j], v[V_PHI_1 + j], v[V_PHI_2 + j],
+                       v[V_DLAM + j], v[V_R + j], 0.0, v[V_F + j], 0.0, v[V_PHI_FN + j],
+                       v[V_GAMMA + j], W, v[V_HARD + j], 0.0, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
+        st = Start(v[V_R_START + j], False, 0.0, 0.0, 0.0)
+        k = _tangent(law, tr, st, res, v[V_Y0 + j], v[V_S0 + j], d1, d2, a1, a2, fh1, fh2, ca,
                      sa)  # fmt: skip
-    return _slip(iv[I_ITER, j], v[V_DLAM, j], fn_tr * law.b1 + fh1, fn_tr * law.b2 + fh2, tb1,
-                 tb2, fn_tr, v[V_F, j], v[V_R, j], ca, sa, k)  # fmt: skip
+    return _slip(int(v[V_ITER + j]), v[V_DLAM + j], fn_tr * law.b1 + fh1, fn_tr * law.b2 + fh2, tb1,
+                 tb2, fn_tr, v[V_F + j], v[V_R + j], ca, sa, k)  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")
 def _lanes_group(
-    base, v, iv, law, p, ca, sa, dt, e_rec, ext1, ext2, traction, F_old, R_old, gap_old,
+    base, v, law, p, ca, sa, dt, e_rec, ext1, ext2, traction, F_old, R_old, gap_old,
     slip_inc, surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
     out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
     out_status, out_iter,
 ):  # fmt: skip
     """Advance the LANES points from ``base`` (shared parameters and time increment)."""
-    _lanes_trial(v, iv, base, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_old,
+    _lanes_trial(v, base, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_old,
                  slip_inc)  # fmt: skip
-    _lanes_start(v, iv, law)
-    _lanes_solve(v, iv, law, dt)
+    _lanes_start(v, law)
+    _lanes_solve(v, law, dt)
     for j in range(LANES):
         i = base + j
-        if iv[I_KIND, j] == BY_POINT:
+        if v[V_KIND + j] == BY_POINT:
             res = _point(dt, ca, sa, p, traction[i, 0], traction[i, 1], traction[i, 2],
                          F_old[i], R_old[i], gap_old[i], slip_inc[i, 0], slip_inc[i, 1],
                          slip_inc[i, 2], surface, tear_k, ulaw, integ, rform, open_frozen,
                          want_tangent)  # fmt: skip
         else:
-            res = _lane_result(v, iv, j, law, ca, sa, ext1, ext2, want_tangent)
+            res = _lane_result(v, j, law, ca, sa, ext1, ext2, want_tangent)
         _store(i, res, want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
                out_diss, out_tangent, out_status, out_iter)  # fmt: skip
 
