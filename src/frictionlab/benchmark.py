@@ -7,21 +7,20 @@ fresh processes (a child process with an empty, then a filled, compile cache).
 
 Figures (per contact point per increment, N points, all sliding unless stated):
 
-* ``coulomb_penalty``: a plain Coulomb penalty radial return, compiled with numba
-  ``parallel=True`` like the law's kernel — the baseline of the ``<= 10x`` target;
+* ``coulomb_penalty``: a lean Coulomb penalty radial return (traction in, traction and
+  dlam out), compiled with numba ``parallel=True`` like the law's kernel;
+* ``coulomb_like_for_like``: :func:`coulomb_like_for_like`, a Coulomb radial return with
+  the law's inputs and outputs (the 3x3 tangent included) into fresh arrays, as
+  ``update()`` returns them: the baseline of the ``<= 3x`` target (issue 26), timed with
+  one numba thread and with all of them, each time beside ``update()``;
 * ``floor``: :func:`transcendental_floor`, only the update's memory traffic and the
-  math-library calls the law makes per sliding point (a test counts them in the law's
-  own source): no scalar implementation of the law can beat it, so ``floor_over_coulomb``
-  and ``python_loop_over_floor`` bound what the two law targets can reach on a machine;
+  math-library calls the law's per-point definition makes per sliding point (a test
+  counts them in the law's own source): a bound for a scalar implementation, not the
+  reason the law is slow (the chains of dependent divisions are);
 * ``law_*``: :func:`frictionlab.subloading.update` for the full law (cone, softening,
   recovery, rotation, orthotropy), with fresh outputs and the tangent (the default),
   with preallocated outputs and no tangent, and the serial kernel (the parallel gain);
   modified Cam-clay for a closed surface;
-* two per-point Python loops of the full law on a few points, the baselines of the
-  ``>= 1000x`` target: ``python_loop``, the kernel's own source run by the interpreter
-  (:mod:`frictionlab.subloading.interpreted`, lean: plain floats and ``math``), and
-  ``update_loop``, what a user would write, ``for i in range(N): update(params,
-  state_i, du_i, dt)`` with the one-point states and increments prepared beforehand;
 * ``lattice_partial``: a 1024^2 self-affine map in partial contact against a flat
   counter-face, 3 directions, 64 time samples: springs per second (target >= 3e8);
 * ``first_call``: import + first call of the law and of the lattice in a child process,
@@ -55,7 +54,7 @@ from frictionlab._version import __version__
 __all__ = ["coulomb_return", "run"]
 
 TARGET_LAW_OVER_COULOMB = 10.0
-TARGET_SPEEDUP_OVER_PYTHON = 1000.0
+TARGET_LAW_OVER_LIKE_FOR_LIKE = 3.0
 TARGET_SPRINGS_PER_SECOND = 3e8
 
 
@@ -83,6 +82,71 @@ def coulomb_return(traction, du, alpha_t, alpha_n, mu, out_traction, out_dlam): 
         out_traction[i, 1] = f2
         out_traction[i, 2] = fn
         out_dlam[i] = dlam
+
+
+@njit(cache=True, parallel=True)
+def coulomb_like_for_like(traction, F_old, R_old, gap_old, du, dt_arr, P, out_traction, out_F,
+                          out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent, out_status,
+                          out_iter):  # fmt: skip
+    """A Coulomb penalty radial return with the law's inputs and outputs (the fair baseline).
+
+    The arguments of the law's kernel (``P`` one row; its ``F`` column is mu): the same
+    arrays read, the same arrays written, the 3x3 consistent tangent of the radial return
+    included (``alpha_t (mu f_n/|f_t|) (I - n n^T)`` and ``mu alpha_n n``), R = |f_t|/(mu
+    f_n) capped at 1, F unchanged. ``R_old`` and ``dt_arr`` are read and not needed.
+    """
+    alpha_n = P[0, 0]
+    alpha_t = P[0, 1]
+    for k in prange(traction.shape[0]):
+        i = np.int64(k)
+        mu = F_old[i] + 0.0 * (R_old[i] + dt_arr[0])
+        f1 = traction[i, 0] + alpha_t * du[i, 0]
+        f2 = traction[i, 1] + alpha_t * du[i, 1]
+        fn = traction[i, 2] + alpha_n * (du[i, 2] - gap_old[i])
+        norm = math.sqrt(f1 * f1 + f2 * f2)
+        limit = mu * fn
+        n1 = f1 / norm if norm > 0.0 else 0.0
+        n2 = f2 / norm if norm > 0.0 else 0.0
+        slip = norm > limit and fn > 0.0
+        scale = limit / norm if slip else 1.0
+        dlam = (norm - limit) / alpha_t if slip else 0.0
+        kt = alpha_t * scale
+        out_traction[i, 0] = f1 * scale
+        out_traction[i, 1] = f2 * scale
+        out_traction[i, 2] = fn
+        out_F[i] = mu
+        out_R[i] = min(norm / limit, 1.0) if limit > 0.0 else 0.0
+        out_gap[i] = 0.0
+        out_dlam[i] = dlam
+        out_vp[i, 0] = dlam * n1
+        out_vp[i, 1] = dlam * n2
+        out_vp[i, 2] = 0.0
+        out_diss[i] = dlam * limit
+        out_tangent[i, 0, 0] = kt * (1.0 - n1 * n1) if slip else alpha_t
+        out_tangent[i, 0, 1] = -kt * n1 * n2 if slip else 0.0
+        out_tangent[i, 1, 0] = -kt * n1 * n2 if slip else 0.0
+        out_tangent[i, 1, 1] = kt * (1.0 - n2 * n2) if slip else alpha_t
+        out_tangent[i, 0, 2] = mu * alpha_n * n1 if slip else 0.0
+        out_tangent[i, 1, 2] = mu * alpha_n * n2 if slip else 0.0
+        out_tangent[i, 2, 0] = 0.0
+        out_tangent[i, 2, 1] = 0.0
+        out_tangent[i, 2, 2] = alpha_n
+        out_status[i] = 1 if slip else 0
+        out_iter[i] = 0
+
+
+def coulomb_update(state: Any, du: np.ndarray, dt: float, P: np.ndarray) -> dict[str, np.ndarray]:
+    """:func:`coulomb_like_for_like` into fresh arrays, as ``update()`` returns them (the new
+    plastic slip included)."""
+    from frictionlab.subloading import kernels
+
+    out = kernels.empty_outputs(state.n_points)
+    coulomb_like_for_like(state.traction, state.F, state.R, state.gap, du, np.array([dt]), P,
+                          out["traction"], out["F"], out["R"], out["gap"], out["dlam"],
+                          out["vp"], out["diss"], out["tangent"], out["status"],
+                          out["iterations"])  # fmt: skip
+    out["plastic_slip"] = state.plastic_slip + out["dlam"]
+    return out
 
 
 @njit(cache=True, parallel=True)
@@ -167,8 +231,18 @@ def _sliding(params: Any, n: int, fn: float) -> tuple[Any, np.ndarray]:
     return state, du
 
 
-def _law(points: int, repeats: int, python_points: int, log: Callable[[str], None]) -> dict:
-    from frictionlab.subloading import SubloadingParams, interpreted, kernels, update
+def per_us(timing: dict[str, float], points: int) -> float:
+    """Median wall time per point [us]."""
+    return timing["median_s"] / points * 1e6
+
+
+def cpu_us(timing: dict[str, float], points: int) -> float:
+    """Median process CPU time per point [us] (all threads summed)."""
+    return timing["cpu_median_s"] / points * 1e6
+
+
+def _law(points: int, repeats: int, log: Callable[[str], None]) -> dict:
+    from frictionlab.subloading import SubloadingParams, kernels, update
 
     full = SubloadingParams(
         surface="coulomb", mu_s=0.5, mu_k=0.3, u=100.0, kappa=1.0, xi=1e-3,
@@ -214,25 +288,22 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         f"{parallel['median_s'] / points * 1e6:.4f} us/point (serial CPU time "
         f"{serial['cpu_median_s'] / points * 1e6:.4f} us/point)")  # fmt: skip
 
-    m = python_points
-    small = tuple(a[:m] if isinstance(a, np.ndarray) and a.shape[:1] == (points,) else a
-                  for a in args)  # fmt: skip
-    python = _median(lambda: interpreted.step_points(*small), max(repeats, 5))
-    python_per_point = python["median_s"] / m
-    log(f"kernel source interpreted    {python_per_point * 1e6:8.1f} us/point (CPU time "
-        f"{python['cpu_median_s'] / m * 1e6:.1f})")  # fmt: skip
-
-    # what a user would write: one update() call per point, states prepared beforehand
-    states = [state.take([i]) for i in range(m)]
-    slips = [du[i : i + 1] for i in range(m)]
-
-    def user_loop() -> None:
-        for i in range(m):
-            update(full, states[i], slips[i], 0.01)
-
-    loop = _median(user_loop, max(repeats, 5))
-    loop_per_point = loop["median_s"] / m
-    log(f"per-point update() loop      {loop_per_point * 1e6:8.1f} us/point")
+    # like for like, one thread each, then numba's threads (2 on the reference machine)
+    threads = numba.get_num_threads()
+    table = full._kernel_table
+    paired = {}
+    for count in sorted({1, threads}):
+        numba.set_num_threads(count)
+        try:
+            fair = _median(lambda: coulomb_update(state, du, 0.01, table), repeats)
+            law_t = _median(lambda: update(full, state, du, 0.01), repeats)
+        finally:
+            numba.set_num_threads(threads)
+        paired[count] = (fair, law_t)
+        log(f"{count} thread(s): Coulomb like for like {per_us(fair, points):8.4f}, law update() "
+            f"{per_us(law_t, points):8.4f} us/point (CPU {cpu_us(fair, points):.4f} / "
+            f"{cpu_us(law_t, points):.4f}): "
+            f"{per_us(law_t, points) / per_us(fair, points):.1f}x")  # fmt: skip
 
     mcc = SubloadingParams(surface="modified_cam_clay", F_s=1.0, F_k=0.6, M=0.5, u=100.0,
                            kappa=1.0, xi=1e-3)  # fmt: skip
@@ -248,12 +319,6 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         f"{TARGET_LAW_OVER_COULOMB:g}; the floor alone: "
         f"{per_point(floor) / per_point(coulomb):.1f})"
     )
-    log(
-        f"interpreted / law = {python_per_point * 1e6 / per_point(default):.0f} (target >= "
-        f"{TARGET_SPEEDUP_OVER_PYTHON:g}; over the floor: "
-        f"{python_per_point * 1e6 / per_point(floor):.0f})"
-    )
-
     return {
         "points": points,
         "fraction_sliding": sliding,
@@ -264,25 +329,25 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
         "law_kernel_serial_us_per_point": per_point(serial),
         "law_kernel_parallel_us_per_point": per_point(parallel),
         "law_kernel_serial_cpu_us_per_point": serial["cpu_median_s"] / points * 1e6,
-        "python_loop_cpu_us_per_point": python["cpu_median_s"] / m * 1e6,
         "modified_cam_clay_update_us_per_point": per_point(closed),
-        "python_loop_points": m,
-        "python_loop_us_per_point": python_per_point * 1e6,
-        "update_loop_us_per_point": loop_per_point * 1e6,
-        "speedup_over_update_loop": loop_per_point * 1e6 / per_point(default),
         "law_over_coulomb": per_point(default) / per_point(coulomb),
         "floor_us_per_point": per_point(floor),
         "floor_over_coulomb": per_point(floor) / per_point(coulomb),
-        "python_loop_over_floor": python_per_point * 1e6 / per_point(floor),
-        "update_loop_over_floor": loop_per_point * 1e6 / per_point(floor),
         "law_lean_over_coulomb": per_point(lean) / per_point(coulomb),
         "parallel_gain": per_point(serial) / per_point(parallel),
-        "speedup_over_python": python_per_point * 1e6 / per_point(default),
-        "serial_cpu_speedup_over_python": python["cpu_median_s"]
-        / m
-        / (serial["cpu_median_s"] / points),
+        "coulomb_like_for_like_us_per_point": per_us(paired[1][0], points),
+        "law_update_one_thread_us_per_point": per_us(paired[1][1], points),
+        "law_over_coulomb_like_for_like": per_us(paired[1][1], points)
+        / per_us(paired[1][0], points),
+        "law_over_coulomb_like_for_like_cpu": cpu_us(paired[1][1], points)
+        / cpu_us(paired[1][0], points),
+        "threads": threads,
+        "coulomb_like_for_like_threads_us_per_point": per_us(paired[threads][0], points),
+        "law_update_threads_us_per_point": per_us(paired[threads][1], points),
+        "law_over_coulomb_like_for_like_threads": per_us(paired[threads][1], points)
+        / per_us(paired[threads][0], points),
+        "target_law_over_coulomb_like_for_like": TARGET_LAW_OVER_LIKE_FOR_LIKE,
         "target_law_over_coulomb": TARGET_LAW_OVER_COULOMB,
-        "target_speedup_over_python": TARGET_SPEEDUP_OVER_PYTHON,
         "timings": {
             "coulomb": coulomb,
             "floor": floor,
@@ -290,9 +355,9 @@ def _law(points: int, repeats: int, python_points: int, log: Callable[[str], Non
             "lean": lean,
             "serial": serial,
             "parallel": parallel,
-            "python_loop": python,
-            "update_loop": loop,
             "modified_cam_clay": closed,
+            "coulomb_like_for_like": paired[1][0],
+            "update_one_thread": paired[1][1],
         },
     }
 
@@ -439,7 +504,6 @@ def run(
     points: int = 1_000_000,
     repeats: int = 5,
     lattice_size: int = 1024,
-    python_points: int = 200,
     first_call: bool = True,
     log: Callable[[str], None] = print,
 ) -> dict[str, Any]:
@@ -456,7 +520,7 @@ def run(
     }
     log(f"frictionlab {__version__}: {machine['cpu_count']} cores, "
         f"{machine['numba_threads']} numba threads")  # fmt: skip
-    law = _law(points, repeats, python_points, log)
+    law = _law(points, repeats, log)
     log(f"numba threading layer: {numba.threading_layer()}")
     machine["numba_threading_layer"] = numba.threading_layer()
     lattice = _lattice(lattice_size, repeats, log)

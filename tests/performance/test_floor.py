@@ -60,7 +60,7 @@ def test_floor_makes_the_laws_math_calls(monkeypatch: pytest.MonkeyPatch) -> Non
     law_calls: Counter = Counter()
     namespace = interpreted.load()
     monkeypatch.setitem(namespace, "math", _counting_math(law_calls))
-    namespace["step_points"](*args)
+    namespace["step_points_by_point"](*args)  # the per-point definition
     assert np.all(outs["status"] == kernels.SLIP)
     # two residual evaluations per point, the design the floor assumes
     assert np.all(outs["iterations"] == 2)

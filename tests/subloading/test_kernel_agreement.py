@@ -57,11 +57,11 @@ def _random_inputs(params: SubloadingParams, rng: np.random.Generator):
     return state, du, rng.uniform(0.0, 0.2, N)
 
 
-def _run(kernel, params, state, du, dt, tangent: bool) -> dict[str, np.ndarray]:
-    out = kernels.empty_outputs(N, tangent)
+def _run(kernel, params, state, du, dt, tangent: bool, shared_dt: bool = False):  # type: ignore[no-untyped-def]
+    out = kernels.empty_outputs(state.n_points, tangent)
     kernel(
         np.ascontiguousarray(state.traction), state.F.copy(), state.R.copy(), state.gap.copy(),
-        du, dt, params._kernel_table, False, SURFACE_CODES[params.surface], params.tear_k,
+        du, dt, params._kernel_table, shared_dt, SURFACE_CODES[params.surface], params.tear_k,
         _U_CODES[params.U_law], _INTEG_CODES[params.F_integrator],
         _FORM_CODES[params.recovery_form], params.open_recovery == "frozen", tangent,
         out["traction"], out["F"], out["R"], out["gap"], out["dlam"], out["vp"], out["diss"],
@@ -119,3 +119,35 @@ def test_update_options_give_the_same_state() -> None:
     assert reused.traction is buffers["traction"]
     with pytest.raises(Exception, match="shares memory"):
         update(params, reused.state, du, 0.01, out=buffers)  # output over its own input
+
+
+LANE_CASES = {
+    "cone, orthotropic, rotated": CASES["cone"],
+    "cone, isotropic, no recovery": dict(CONE, xi=0.0),
+}
+
+
+@pytest.mark.parametrize("name", list(LANE_CASES))
+def test_lanes_give_the_numbers_of_the_point_loop(name: str) -> None:
+    """step_points (groups of LANES points, shared parameters and time increment) equals
+    the per-point reference loop bit for bit, on states that slide, stick, unload, open
+    and re-close, and its serial loop agrees with the interpreted definition."""
+    params = SubloadingParams(**LANE_CASES[name])  # type: ignore[arg-type]
+    state, du, _ = _random_inputs(params, np.random.default_rng(len(name)))
+    state, du = state.take(slice(0, N - 3)), du[: N - 3]  # two groups of LANES and a rest
+    dt = np.array([0.05])
+    shared = dict(shared_dt=True)
+    reference = _run(kernels.step_points_by_point, params, state, du, dt, True, **shared)
+    statuses = set(reference["status"].tolist())
+    assert {kernels.SLIP, kernels.STICK, kernels.OPEN} <= statuses
+    interpreted_ref = _run(interpreted.step_points, params, state, du, dt, True, **shared)
+    for kernel in (kernels.step_points, kernels.step_points_parallel):
+        for tangent in (True, False):
+            got = _run(kernel, params, state, du, dt, tangent, **shared)
+            for key, ref in reference.items():
+                if key == "tangent" and not tangent:
+                    continue
+                np.testing.assert_array_equal(got[key], ref, err_msg=f"{name}: {key}")
+    for key, ref in interpreted_ref.items():
+        scale = max(float(np.abs(ref).max()), 1e-300)
+        np.testing.assert_allclose(reference[key], ref, rtol=1e-12, atol=1e-12 * scale)

@@ -51,7 +51,7 @@ def _signatures(dispatcher, run, callers=()) -> list:
 def _law_run() -> None:
     from frictionlab.benchmark import _law
 
-    _law(200, 1, 2, lambda s: None)
+    _law(200, 1, lambda s: None)
 
 
 def _lattice_run() -> None:
@@ -92,7 +92,7 @@ def test_detector_passes_a_scalar_helper():
 
 @pytest.mark.slow
 def test_law_point_function_has_no_refcounting():
-    callers = (law_kernels.step_points,)
+    callers = (law_kernels.step_points, law_kernels._by_point)
     for sig in _signatures(law_kernels._point, _law_run, callers):
         assert _refcount_calls(law_kernels._point, sig) == 0
 

@@ -39,7 +39,6 @@ def run(args: argparse.Namespace) -> int:
         points=args.points,
         repeats=args.repeats,
         lattice_size=args.lattice_size,
-        python_points=min(200, args.points),
         first_call=not args.no_first_call,
     )
     if args.json:

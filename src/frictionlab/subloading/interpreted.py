@@ -35,5 +35,6 @@ def load() -> dict[str, Any]:
 
 
 def step_points(*args: Any) -> None:
-    """The serial :func:`kernels.step_points` loop, interpreted (same arguments)."""
-    load()["step_points"](*args)
+    """The per-point reference loop :func:`kernels.step_points_by_point`, interpreted
+    (the arguments of :func:`kernels.step_points`)."""
+    load()["step_points_by_point"](*args)

@@ -32,7 +32,10 @@ import numpy as np
 
 from frictionlab._jit import njit, prange
 from frictionlab.subloading.evolution import (
+    _HALF_PI,
     BACKWARD_EULER,
+    EXPONENTIAL,
+    ONE_MINUS,
     U_COT,
     ratio_from,
     ratio_sensitivity,
@@ -905,26 +908,40 @@ def _axes(P, row):  # fmt: skip
 
 
 @njit(cache=True)
-def step_points(
+def step_points_by_point(
     traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
     out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
     out_status, out_iter,
 ):  # fmt: skip
-    """Advance every point by one increment; results go to the ``out_*`` arrays (serial).
+    """The readable reference of :func:`step_points`: every point through :func:`_point`.
 
     ``P`` is the parameter table (1 or N rows, columns ``P_*``); ``dt_arr`` has 1 or N
     entries. Failed points keep their old state, get the elastic tangent and status
     FAILED; no NaN is ever written. ``out_tangent`` may have zero rows when
     ``want_tangent`` is False.
-
-    The array reads and writes stay in the loops (written in both): a helper taking the
-    arrays, called per point, would be reference-counted on every point.
     """
-    npts = traction.shape[0]
+    _by_point(0, traction.shape[0], traction, F_old, R_old, gap_old, slip_inc, dt_arr, P,
+              n_shared_dt, surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+              out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+              out_status, out_iter)  # fmt: skip
+
+
+@njit(cache=True)
+def _by_point(
+    first, stop, traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
+    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+    out_status, out_iter,
+):  # fmt: skip
+    """Points ``first`` to ``stop - 1`` through :func:`_point`, one at a time (serial).
+
+    The array reads and writes stay in the loop: a helper taking the arrays, called per
+    point, would be reference-counted on every point.
+    """
     shared_p = P.shape[0] == 1
     ca0, sa0 = _axes(P, 0) if shared_p else (1.0, 0.0)
-    for i in range(npts):
+    for i in range(first, stop):
         row = 0 if shared_p else i
         dt = dt_arr[0] if n_shared_dt else dt_arr[i]
         ca, sa = (ca0, sa0) if shared_p else _axes(P, row)
@@ -936,7 +953,60 @@ def step_points(
                out_diss, out_tangent, out_status, out_iter)  # fmt: skip
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, error_model="numpy")
+def step_points(
+    traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
+    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+    out_status, out_iter,
+):  # fmt: skip
+    """Advance every point by one increment; results go to the ``out_*`` arrays (serial).
+
+    The same numbers as :func:`step_points_by_point` (same arguments), computed in
+    groups of LANES points where the call is one the lanes cover (see "lanes" below).
+    ``error_model="numpy"``: the lanes evaluate both sides of a guarded division and
+    keep one; _point, compiled on its own, still raises on a division by zero.
+    """
+    npts = traction.shape[0]
+    first = 0
+    if _in_lanes(P, n_shared_dt, surface, ulaw, integ, rform):
+        first = npts - npts % LANES
+        _lanes_task(0, first, traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, surface,
+                    tear_k, ulaw, integ, rform, open_frozen, want_tangent, out_traction,
+                    out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+                    out_status, out_iter)  # fmt: skip
+    _by_point(first, npts, traction, F_old, R_old, gap_old, slip_inc, dt_arr, P,
+              n_shared_dt, surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+              out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+              out_status, out_iter)  # fmt: skip
+
+
+#: Groups of LANES points per task of the parallel loop (one scratch array per task).
+GROUPS_PER_TASK = 64
+
+
+@njit(cache=True, error_model="numpy")
+def _lanes_task(
+    first, stop, traction, F_old, R_old, gap_old, slip_inc, dt_arr, P,
+    surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+    out_status, out_iter,
+):  # fmt: skip
+    """Points ``first`` to ``stop - 1`` (a multiple of LANES apart) in groups of LANES,
+    with the call's shared constants and one scratch array."""
+    dt = dt_arr[0]
+    law, p, ca, sa, e_rec, ext1, ext2 = _call_constants(P, dt, surface, tear_k, ulaw, integ,
+                                                        rform)  # fmt: skip
+    v = np.zeros(N_ROWS * LANES)
+    for base in range(first, stop, LANES):
+        _lanes_group(base, v, law, p, ca, sa, dt, e_rec, ext1, ext2, traction, F_old,
+                     R_old, gap_old, slip_inc, surface, tear_k, ulaw, integ, rform,
+                     open_frozen, want_tangent, out_traction, out_F, out_R, out_gap,
+                     out_dlam, out_vp, out_diss, out_tangent, out_status,
+                     out_iter)  # fmt: skip
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
 def step_points_parallel(
     traction, F_old, R_old, gap_old, slip_inc, dt_arr, P, n_shared_dt,
     surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
@@ -950,6 +1020,21 @@ def step_points_parallel(
     yields an unsigned index, and ``0 if shared else i`` would otherwise unify to float64.
     """
     npts = traction.shape[0]
+    if _in_lanes(P, n_shared_dt, surface, ulaw, integ, rform):
+        groups = npts // LANES
+        tasks = (groups + GROUPS_PER_TASK - 1) // GROUPS_PER_TASK
+        for k in prange(tasks):
+            first = np.int64(k) * GROUPS_PER_TASK * LANES
+            stop = min(first + GROUPS_PER_TASK * LANES, groups * LANES)
+            _lanes_task(first, stop, traction, F_old, R_old, gap_old, slip_inc, dt_arr, P,
+                        surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+                        out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss,
+                        out_tangent, out_status, out_iter)  # fmt: skip
+        _by_point(groups * LANES, npts, traction, F_old, R_old, gap_old, slip_inc, dt_arr, P,
+                  n_shared_dt, surface, tear_k, ulaw, integ, rform, open_frozen,
+                  want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
+                  out_diss, out_tangent, out_status, out_iter)  # fmt: skip
+        return
     shared_p = P.shape[0] == 1
     ca0, sa0 = _axes(P, 0) if shared_p else (1.0, 0.0)
     for k in prange(npts):
@@ -1047,3 +1132,502 @@ def empty_outputs(n_points: int, tangent: bool = True) -> dict[str, np.ndarray]:
         "status": np.empty(n_points, dtype=np.int8),
         "iterations": np.empty(n_points, dtype=np.int32),
     }
+
+
+# ============================================================================ lanes
+# step_points and step_points_parallel process the points in groups of LANES, one step
+# of the law at a time for the whole group, so that the compiled code evaluates a step's
+# divisions and square roots for several points in packed (SIMD) instructions instead of
+# waiting on each point's chain of dependent scalar ones. Each lane performs the very
+# operations of _point in the same order (where the paths differ, both are computed and
+# one is selected; a finished lane's values are kept by selects), so the results are
+# bit-identical to _point's. What the lanes do not cover goes to _point itself: opening
+# and re-closing points, a non-monotone trial path (the scan of _path_minimum), a solve
+# that has not converged, squares outside the range of _norm's plain sqrt, and the
+# options other than the defaults (per-point parameters or time increments, the closed
+# surfaces, the ln law, backward Euler, exponents other than 1, the ratio recovery form).
+# The math-library calls stay scalar, in loops of their own.
+
+#: Points processed together: LLVM vectorises no loop of fewer than 16 iterations.
+LANES = 16
+#: What a lane does: the elastic outcome, the plastic corrector, or _point (BY_POINT).
+ELASTIC, PLASTIC, BY_POINT = 0, 1, 2
+#: Rows of the lane scratch, a flat array of N_ROWS x LANES values (one value per lane):
+#: row R of lane j is v[R + j]. Flat, so that the compiled code knows every row's offset
+#: and can prove that the rows do not overlap (a 2-D array's row stride is a run-time
+#: value, and the vectoriser then gives up on a loop that touches many rows).
+(V_F1T, V_F2T, V_FN_TR, V_FH1T, V_FH2T, V_W_TR, V_PHI_TR, V_F_OLD, V_F_REC, V_R_START,
+ V_R0, V_Y0, V_S0, V_Q, V_T, V_T_POS, V_T_NEG, V_DX, V_DX_OLD, V_FLIP, V_OMQ, V_GAMMA,
+ V_I1, V_I2, V_T1, V_T2, V_W, V_DLAM, V_WN, V_ARG_R, V_A, V_EM_R, V_EM_F, V_Y, V_S,
+ V_ATAN, V_R, V_F, V_RES, V_R_GAMMA, V_PHI_1, V_PHI_2, V_HARD, V_COND, V_PHI_FN, V_DR,
+ V_DDR, V_DDDR, V_DF, V_DDF, V_KIND, V_ACTIVE, V_ITER, V_T1_OLD, V_T2_OLD, V_FN,
+ V_R_OLD, V_GAP_OLD, V_SLIP1, V_SLIP2, V_DUN) = range(0, 61 * LANES, LANES)  # fmt: skip
+N_ROWS = 61
+
+
+@njit(cache=True, inline="always")
+def _plain_norm(x, y):  # fmt: skip
+    """:func:`_norm` and whether it was the plain square root (else: BY_POINT)."""
+    s = x * x + y * y
+    return math.sqrt(s), (1e-290 < s < 1e290) or s == 0.0
+
+
+@njit(cache=True, inline="always")
+def _lane_slope(phi, phi_w, phi_fn, w, q1, q2, e1, e2, dfn, A1, A2, F, dF):  # fmt: skip
+    """:func:`_ratio_slope` as a lane: (rho, drho, plain norm)."""
+    dw_axis, plain = _plain_norm(e1 / A1, e2 / A2)
+    dw = ((q1 / A1) * (e1 / A1) + (q2 / A2) * (e2 / A2)) / w if w > 0.0 else dw_axis
+    rho = phi / F
+    drho = (phi_w * dw + phi_fn * dfn) / F - rho * dF / F
+    finite = math.isfinite(phi)
+    return (rho if finite else math.inf), (drho if finite else math.inf), plain or w > 0.0
+
+
+@njit(cache=True, inline="always")
+def _lane_trial(law, ca, sa, dt, e_rec, t1_old, t2_old, fn, F_old, R_old, gap_old, slip1,
+                slip2, dun):  # fmt: skip
+    """Steps 0-4 of :func:`_point` on the cone as a lane: the trial state, the starting
+    ratio of a monotone trial path, the loading test. ``e_rec = exp(-xi dt/F_s)``.
+
+    Returns (kind, f1t, f2t, fn_tr, fh1t, fh2t, w_tr, phi_tr, F_rec, R_start, r0).
+    """
+    f1 = ca * t1_old + sa * t2_old
+    f2 = -sa * t1_old + ca * t2_old
+    du1 = ca * slip1 + sa * slip2
+    du2 = -sa * slip1 + ca * slip2
+    F0 = min(max(F_old, law.Fk), law.Fs)  # recovered_size, exponential, 1 - F/F_s, n = 1
+    recovering = not (law.xi == 0.0 or dt == 0.0)
+    F_rec = law.Fs * (1.0 - max(1.0 - F0 / law.Fs, 0.0) * e_rec) if recovering else F0
+    closing_in = law.alpha_n * (dun - gap_old)
+    fn_tr = fn + closing_in
+    by_point = fn <= 0.0 or fn_tr <= SEPARATION_RTOL * max(abs(fn), abs(closing_in))
+    f1t = f1 + law.alpha_t * du1
+    f2t = f2 + law.alpha_t * du2
+    h1 = f1 - fn * law.b1
+    h2 = f2 - fn * law.b2
+    fh1t = f1t - fn_tr * law.b1
+    fh2t = f2t - fn_tr * law.b2
+    e1 = fh1t - h1
+    e2 = fh2t - h2
+    dfn = fn_tr - fn
+    w_tr, plain = _plain_norm(fh1t / law.A1, fh2t / law.A2)
+    inv = 1.0 / fn_tr if fn_tr > 0.0 else 0.0
+    phi_tr = w_tr * inv
+    # step 3 with s* at an end of the path (the monotone cases of _path_minimum)
+    inv0 = 1.0 / fn if fn > 0.0 else 0.0
+    w0, plain0 = _plain_norm(h1 / law.A1, h2 / law.A2)
+    phi0 = w0 * inv0
+    x_old = 1.0 - F_old / law.Fs
+    x_rec = 1.0 - F_rec / law.Fs
+    dF0 = law.xi * dt * (x_old if x_old > 0.0 else 0.0)
+    dF1 = law.xi * dt * (x_rec if x_rec > 0.0 else 0.0)
+    r_0, d_0, plain_0 = _lane_slope(phi0, inv0, -phi0 * inv0, w0, h1, h2, e1, e2, dfn,
+                                    law.A1, law.A2, F_old, dF0)  # fmt: skip
+    r_1, d_1, plain_1 = _lane_slope(phi_tr, inv, -phi_tr * inv, w_tr, fh1t, fh2t, e1, e2,
+                                    dfn, law.A1, law.A2, F_rec, dF1)  # fmt: skip
+    forward = d_0 >= 0.0 and d_1 >= 0.0 and r_1 >= r_0
+    monotone = forward or (d_0 <= 0.0 and d_1 <= 0.0 and r_1 <= r_0)
+    rho = r_0 if forward else r_1
+    R_start = rho if rho < R_old else R_old
+    r0 = phi_tr - R_start * F_rec
+    elastic = w_tr == 0.0 or r0 <= RTOL_RESIDUAL * F_rec
+    plain = plain and plain0 and plain_0 and plain_1
+    by_point = by_point or not (plain and monotone) or not (elastic or R_start > 0.0)
+    kind = BY_POINT if by_point else (ELASTIC if elastic else PLASTIC)
+    return kind, f1t, f2t, fn_tr, fh1t, fh2t, w_tr, phi_tr, F_rec, R_start, r0
+
+
+@njit(cache=True, error_model="numpy")
+def _lanes_trial(v, base, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_old,
+                 slip_inc):  # fmt: skip
+    """:func:`_lane_trial` for the group of points from ``base``, into the scratch (the
+    inputs are copied first, so that the arithmetic reads the scratch alone)."""
+    for j in range(LANES):
+        i = base + j
+        (v[V_T1_OLD + j], v[V_T2_OLD + j], v[V_FN + j], v[V_F_OLD + j], v[V_R_OLD + j],
+         v[V_GAP_OLD + j], v[V_SLIP1 + j], v[V_SLIP2 + j], v[V_DUN + j]) = (
+            traction[i, 0], traction[i, 1], traction[i, 2], F_old[i], R_old[i], gap_old[i],
+            slip_inc[i, 0], slip_inc[i, 1], slip_inc[i, 2])  # fmt: skip
+    for j in range(LANES):
+        (v[V_KIND + j], v[V_F1T + j], v[V_F2T + j], v[V_FN_TR + j], v[V_FH1T + j],
+         v[V_FH2T + j], v[V_W_TR + j], v[V_PHI_TR + j], v[V_F_REC + j], v[V_R_START + j],
+         v[V_R0 + j]) = _lane_trial(law, ca, sa, dt, e_rec, v[V_T1_OLD + j], v[V_T2_OLD + j],
+                                    v[V_FN + j], v[V_F_OLD + j], v[V_R_OLD + j],
+                                    v[V_GAP_OLD + j], v[V_SLIP1 + j], v[V_SLIP2 + j],
+                                    v[V_DUN + j])  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _lane_start(law, r0, phi_tr, fn_tr, w_tr, fh1t, fh2t, R_start, y0, s0, F_rec):  # fmt: skip
+    """The closed-form start of :func:`_start` on the cone as a lane (before the model
+    iteration). Returns (q, refine, dR, ddR, dddR, dF, ddF, plain norm)."""
+    u = law.u
+    dR = u * y0 / s0 if s0 > 0.0 else math.inf
+    x = F_rec / law.Fk - 1.0
+    dphi_soft = 1.0 / law.Fk  # softening_rate with m = 1
+    dF = -law.kappa * (x if x > 0.0 else 0.0)
+    A2ref = law.Aref * law.Aref
+    W0, plain = _plain_norm(fh1t / (law.A1 * law.A1), fh2t / (law.A2 * law.A2))
+    phi_tr_w = 1.0 / fn_tr if fn_tr > 0.0 else 0.0
+    dphi = phi_tr_w * W0 * W0 / w_tr * A2ref if w_tr > 0.0 else 0.0
+    ddlam = W0 * A2ref / law.alpha_t
+    den = dphi + (dR * F_rec + R_start * dF) * ddlam
+    q = r0 / den if den > 0.0 and math.isfinite(den) else -1.0
+    r_sat = phi_tr - F_rec
+    den_sat = dphi + dF * ddlam
+    if r_sat > 0.0 and den_sat > 0.0 and math.isfinite(den_sat):
+        q = max(q, r_sat / den_sat)
+    inside = 0.0 < q < 1.0
+    if not inside:  # the tail of _start with r(1) = -inf
+        q = r0 / phi_tr if phi_tr > 0.0 else 0.5
+        q = q if 0.0 < q < 1.0 else 0.5
+    ddR = -0.5 * math.pi * (u * u + dR * dR) * dR / u
+    dddR = -0.5 * math.pi * ddR * (3.0 * dR * dR + u * u) / u
+    ddF = -law.kappa * dphi_soft * dF
+    return q, inside and math.isfinite(dR), dR, ddR, dddR, dF, ddF, plain
+
+
+@njit(cache=True, inline="always")
+def _lane_model(law, q, fh1t, fh2t, fn, R0, dR, ddR, dddR, F0, dF, ddF):  # fmt: skip
+    """One iteration of :func:`_start`'s model Newton (:func:`_model_at`, cone) as a lane.
+    Returns (q, stop, plain norm)."""
+    A1 = law.A1
+    A2 = law.A2
+    omq = 1.0 - q
+    gamma = law.Aref * law.Aref * q / omq
+    i1 = 1.0 / (A1 * A1 + gamma)
+    i2 = 1.0 / (A2 * A2 + gamma)
+    t1 = fh1t * i1
+    t2 = fh2t * i2
+    W, plain_W = _plain_norm(t1, t2)
+    dlam = gamma * W / law.alpha_t
+    w, plain_w = _plain_norm(A1 * t1, A2 * t2)
+    phi_w = 1.0 / fn if fn > 0.0 else 0.0
+    phi = w * phi_w
+    R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR * (1.0 / 6.0)))
+    Rp = dR + dlam * (ddR + 0.5 * dddR * dlam)
+    saturated = R > 1.0 or Rp < 0.0
+    R = min(R, 1.0) if saturated else R
+    Rp = 0.0 if saturated else Rp
+    F = F0 + dlam * (dF + 0.5 * ddF * dlam)
+    dF = dF + ddF * dlam
+    dphi = -phi_w * (A1 * A1 * t1 * t1 * i1 + A2 * A2 * t2 * t2 * i2) / w if w > 0.0 else 0.0
+    dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
+    ddlam = (W + gamma * dW) / law.alpha_t
+    dgamma = law.Aref * law.Aref / (omq * omq)
+    mq = phi - R * F
+    dmq = dphi * dgamma - (Rp * F + R * dF) * ddlam * dgamma
+    stop = not (dmq < 0.0 and math.isfinite(mq) and math.isfinite(dmq))
+    q_new = q - mq / dmq if not stop else q
+    if q_new <= 0.0:
+        q_new = 0.5 * (q + 0.0)
+    elif q_new >= 1.0:
+        q_new = 0.5 * (1.0 + q)
+    done = abs(q_new - q) <= MODEL_RTOL * min(q_new, 1.0 - q_new)
+    return (q if stop else q_new), stop or done, plain_W and plain_w
+
+
+@njit(cache=True, error_model="numpy")
+def _lanes_start(v, law):  # fmt: skip
+    """Steps 5's start (:func:`_start`, cone) for the plastic lanes: ``V_Q``."""
+    for j in range(LANES):
+        if v[V_KIND + j] == PLASTIC:
+            y0 = math.cos(_HALF_PI * v[V_R_START + j])  # ratio_start of the cot law
+            s0 = math.sin(_HALF_PI * v[V_R_START + j])
+            v[V_Y0 + j] = y0
+            v[V_S0 + j] = s0
+    for j in range(LANES):
+        q, refine, dR, ddR, dddR, dF, ddF, plain = _lane_start(
+            law, v[V_R0 + j], v[V_PHI_TR + j], v[V_FN_TR + j], v[V_W_TR + j], v[V_FH1T + j],
+            v[V_FH2T + j], v[V_R_START + j], v[V_Y0 + j], v[V_S0 + j], v[V_F_REC + j])  # fmt: skip
+        plastic = v[V_KIND + j] == PLASTIC
+        v[V_KIND + j] = BY_POINT if plastic and not plain else v[V_KIND + j]
+        v[V_ACTIVE + j] = 1.0 if plastic and plain and refine else 0.0
+        (v[V_Q + j], v[V_DR + j], v[V_DDR + j], v[V_DDDR + j], v[V_DF + j],
+         v[V_DDF + j]) = q, dR, ddR, dddR, dF, ddF  # fmt: skip
+    for _ in range(MODEL_ITERATIONS):
+        if _none_active(v):
+            break
+        for j in range(LANES):
+            q, stop, plain = _lane_model(law, v[V_Q + j], v[V_FH1T + j], v[V_FH2T + j],
+                                         v[V_FN_TR + j], v[V_R_START + j], v[V_DR + j],
+                                         v[V_DDR + j], v[V_DDDR + j], v[V_F_REC + j],
+                                         v[V_DF + j], v[V_DDF + j])  # fmt: skip
+            active = v[V_ACTIVE + j] == 1.0
+            v[V_Q + j] = q if active else v[V_Q + j]
+            v[V_KIND + j] = BY_POINT if active and not plain else v[V_KIND + j]
+            v[V_ACTIVE + j] = 1.0 if active and plain and not stop else 0.0
+
+
+@njit(cache=True, inline="always")
+def _none_active(v):  # fmt: skip
+    """No lane is still iterating."""
+    count = 0.0
+    for j in range(LANES):
+        count += v[V_ACTIVE + j]
+    return count == 0.0
+
+
+@njit(cache=True, inline="always")
+def _lane_newton(q, t, t_pos, t_neg, dx, dx_old, flip, r, F, r_gamma, cond, omq, Aref):  # fmt: skip
+    """One pass of :func:`_solve`'s loop on the cone as a lane, from the residual at q.
+
+    Returns (finished, converged, t, t_pos, t_neg, dx, dx_old, flip, q, omq).
+    """
+    scale = max(F, 1e-300)
+    done = abs(r) <= RTOL_RESIDUAL * scale
+    t_pos = t if r > 0.0 else t_pos
+    t_neg = t_neg if r > 0.0 else t
+    lo = min(t_pos, t_neg)
+    hi = max(t_pos, t_neg)
+    collapsed = hi - lo <= 4e-16 * max(hi, 1e-300)
+    cond = abs(cond) if math.isfinite(cond) else 0.0
+    accepted = abs(r) <= RTOL_ACCEPT * max(scale, cond)
+    dqdt = -1.0 if flip else 1.0
+    dgdt = Aref * Aref / (omq * omq) * dqdt
+    slope = r_gamma * dgdt
+    newton = slope != 0.0 and math.isfinite(slope) and math.isfinite(r)
+    t_new = t - r / slope if newton else -1.0
+    if not (lo < t_new < hi) or abs(t_new - t) > 0.5 * abs(dx_old):
+        t_new = 0.5 * (lo + hi)
+    dx_old = dx
+    dx = t_new - t
+    t = t_new
+    upper = t > 0.5
+    flip = flip != upper
+    t = 1.0 - t if upper else t
+    t_pos = 1.0 - t_pos if upper else t_pos
+    t_neg = 1.0 - t_neg if upper else t_neg
+    q = 1.0 - t if flip else t
+    omq = t if flip else 1.0 - t
+    return (done or collapsed, done or (collapsed and accepted), t, t_pos, t_neg, dx, dx_old,
+            flip, q, omq)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _lane_return(law, q, omq, fh1t, fh2t, dt):  # fmt: skip
+    """The algebraic start of :func:`_state_at` (cone) as a lane, up to the arguments of
+    its transcendental functions. Returns (gamma, i1, i2, t1, t2, W, dlam, w, the
+    argument of the ratio's expm1, the size's a, plain norms)."""
+    A1 = law.A1
+    A2 = law.A2
+    gamma = law.Aref * law.Aref * q / omq
+    i1 = 1.0 / (A1 * A1 + gamma)
+    i2 = 1.0 / (A2 * A2 + gamma)
+    t1 = fh1t * i1
+    t2 = fh2t * i2
+    W, plain_W = _plain_norm(t1, t2)
+    dlam = gamma * W / law.alpha_t
+    w, plain_w = _plain_norm(A1 * t1, A2 * t2)
+    a = law.kappa * dlam / law.Fk + law.xi * dt / law.Fs
+    return (gamma, i1, i2, t1, t2, W, dlam, w, -_HALF_PI * law.u * dlam, a,
+            plain_W and plain_w and omq > 0.0)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _lane_residual(law, dlam, gamma, i1, i2, t1, t2, W, w, y, s, atan, a, em_f, F0, fn,
+                   dt):  # fmt: skip
+    """The rest of :func:`_state_at` (cone, cot law, exponential size with m = n = 1) as a
+    lane, given ``atan2(s, y)`` and ``expm1(-a)``. Returns (r, r_gamma, phi_1, phi_2, R, F,
+    phi_fn, hard, cond)."""
+    A1 = law.A1
+    A2 = law.A2
+    kappa = law.kappa
+    Fk = law.Fk
+    R = atan / _HALF_PI
+    dR = law.u * y / s if s > 0.0 else math.inf
+    # size_after, closed form of m = n = 1 and the 1 - F/F_s form
+    if a == 0.0:
+        F = F0
+        dF = -kappa * (F0 / Fk - 1.0)
+    else:
+        F_inf = (kappa * dlam + law.xi * dt) / a
+        e = 1.0 + em_f
+        one_minus_e_over_a = -em_f / a
+        F = F_inf + (F0 - F_inf) * e
+        dF = kappa * (1.0 - F_inf / Fk) * one_minus_e_over_a + (F_inf - F0) * e * kappa / Fk
+        F = min(max(F, Fk), law.Fs)
+    phi_w = 1.0 / fn if fn > 0.0 else 0.0
+    phi = w * phi_w
+    r = phi - R * F
+    dfh1 = -A1 * A1 * t1 * i1
+    dfh2 = -A2 * A2 * t2 * i2
+    phi_per_w = phi_w / w if w > 0.0 else 0.0
+    phi_1 = phi_per_w * t1 if w > 0.0 else 0.0
+    phi_2 = phi_per_w * t2 if w > 0.0 else 0.0
+    dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
+    ddlam = (W + gamma * dW) / law.alpha_t
+    hard = dR * F + R * dF
+    r_gamma = (phi_1 * dfh1 + phi_2 * dfh2) - hard * ddlam
+    return r, r_gamma, phi_1, phi_2, R, F, -phi * phi_w, hard, phi_w * w
+
+
+@njit(cache=True, error_model="numpy")
+def _lanes_residual(v, law, dt):  # fmt: skip
+    """:func:`_state_at` at ``V_Q`` for the active lanes (the others keep their values)."""
+    for j in range(LANES):
+        gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a, plain = _lane_return(
+            law, v[V_Q + j], v[V_OMQ + j], v[V_FH1T + j], v[V_FH2T + j], dt)  # fmt: skip
+        active = v[V_ACTIVE + j] == 1.0
+        v[V_KIND + j] = BY_POINT if active and not plain else v[V_KIND + j]
+        v[V_ACTIVE + j] = 1.0 if active and plain else 0.0
+        (v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j], v[V_T1 + j], v[V_T2 + j], v[V_W + j],
+         v[V_DLAM + j], v[V_WN + j], v[V_ARG_R + j], v[V_A + j]) = (
+            gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a)  # fmt: skip
+    for j in range(LANES):  # the math library, one lane at a time
+        if v[V_ACTIVE + j] == 1.0:
+            v[V_EM_R + j] = math.expm1(v[V_ARG_R + j])
+            v[V_EM_F + j] = math.expm1(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
+    for j in range(LANES):
+        y0 = v[V_Y0 + j]
+        em = v[V_EM_R + j]
+        s2 = v[V_S0 + j] * v[V_S0 + j] - y0 * y0 * (em * (2.0 + em))
+        v[V_Y + j] = y0 * (1.0 + em)
+        v[V_S + j] = math.sqrt(s2) if s2 > 0.0 else 0.0
+    for j in range(LANES):
+        if v[V_ACTIVE + j] == 1.0:
+            v[V_ATAN + j] = math.atan2(v[V_S + j], v[V_Y + j])
+    for j in range(LANES):
+        out = _lane_residual(law, v[V_DLAM + j], v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j],
+                             v[V_T1 + j], v[V_T2 + j], v[V_W + j], v[V_WN + j], v[V_Y + j],
+                             v[V_S + j], v[V_ATAN + j], v[V_A + j], v[V_EM_F + j],
+                             v[V_F_OLD + j], v[V_FN_TR + j], dt)  # fmt: skip
+        r, r_gamma, phi_1, phi_2, R, F, phi_fn, hard, cond = out
+        active = v[V_ACTIVE + j] == 1.0
+        v[V_RES + j] = r if active else v[V_RES + j]
+        v[V_R_GAMMA + j] = r_gamma if active else v[V_R_GAMMA + j]
+        v[V_PHI_1 + j] = phi_1 if active else v[V_PHI_1 + j]
+        v[V_PHI_2 + j] = phi_2 if active else v[V_PHI_2 + j]
+        v[V_R + j] = R if active else v[V_R + j]
+        v[V_F + j] = F if active else v[V_F + j]
+        v[V_PHI_FN + j] = phi_fn if active else v[V_PHI_FN + j]
+        v[V_HARD + j] = hard if active else v[V_HARD + j]
+        v[V_COND + j] = cond if active else v[V_COND + j]
+
+
+@njit(cache=True, error_model="numpy")
+def _lanes_solve(v, law, dt):  # fmt: skip
+    """:func:`_solve` (cone) for the plastic lanes from ``V_Q``; a lane that does not
+    converge goes BY_POINT (whose solve then fails the same way)."""
+    for j in range(LANES):
+        q0 = v[V_Q + j]
+        flip = q0 > 0.5
+        t = 1.0 - q0 if flip else q0
+        v[V_FLIP + j] = 1.0 if flip else 0.0
+        v[V_T + j] = t
+        v[V_T_POS + j] = 1.0 if flip else 0.0
+        v[V_T_NEG + j] = 0.0 if flip else 1.0
+        v[V_DX + j] = 1.0
+        v[V_DX_OLD + j] = 1.0
+        v[V_Q + j] = 1.0 - t if flip else t
+        v[V_OMQ + j] = t if flip else 1.0 - t
+        v[V_ACTIVE + j] = 1.0 if v[V_KIND + j] == PLASTIC else 0.0
+        v[V_ITER + j] = 0.0
+    _lanes_residual(v, law, dt)
+    Aref = law.Aref
+    for _ in range(MAX_ITERATIONS):
+        if _none_active(v):
+            break
+        for j in range(LANES):
+            active = v[V_ACTIVE + j] == 1.0
+            (finished, converged, t, t_pos, t_neg, dx, dx_old, flip, q, omq) = _lane_newton(
+                v[V_Q + j], v[V_T + j], v[V_T_POS + j], v[V_T_NEG + j], v[V_DX + j],
+                v[V_DX_OLD + j], v[V_FLIP + j] > 0.5, v[V_RES + j], v[V_F + j],
+                v[V_R_GAMMA + j], v[V_COND + j], v[V_OMQ + j], Aref)  # fmt: skip
+            v[V_ITER + j] += 1.0 if active else 0.0
+            failed = active and finished and not converged
+            v[V_KIND + j] = BY_POINT if failed else v[V_KIND + j]
+            going = active and not finished
+            v[V_ACTIVE + j] = 1.0 if going else 0.0
+            (v[V_T + j], v[V_T_POS + j], v[V_T_NEG + j], v[V_DX + j],
+             v[V_DX_OLD + j]) = (t, t_pos, t_neg, dx, dx_old)  # fmt: skip
+            # a finished lane keeps its q: _lanes_residual recomputes the same algebra
+            v[V_Q + j] = q if going else v[V_Q + j]
+            v[V_OMQ + j] = omq if going else v[V_OMQ + j]
+            v[V_FLIP + j] = 1.0 if flip else 0.0
+        _lanes_residual(v, law, dt)
+    for j in range(LANES):  # still iterating after MAX_ITERATIONS: not converged
+        v[V_KIND + j] = BY_POINT if v[V_ACTIVE + j] == 1.0 else v[V_KIND + j]
+
+
+@njit(cache=True, inline="always")
+def _lane_result(v, j, law, ca, sa, ext1, ext2, want_tangent):  # fmt: skip
+    """The :data:`Result` of an ELASTIC or PLASTIC lane (:func:`_elastic`, steps 6-7)."""
+    f1t = v[V_F1T + j]
+    f2t = v[V_F2T + j]
+    fn_tr = v[V_FN_TR + j]
+    if v[V_KIND + j] == ELASTIC:
+        R_new = v[V_PHI_TR + j] / v[V_F_REC + j]
+        R_new = 1.0 if R_new > 1.0 else R_new
+        if want_tangent:
+            return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr,
+                           v[V_F_REC + j], R_new, 0.0, k00=law.alpha_t, k11=law.alpha_t,
+                           k02=ca * ext1 - sa * ext2, k12=sa * ext1 + ca * ext2,
+                           k22=law.alpha_n)  # fmt: skip
+        return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr,
+                       v[V_F_REC + j], R_new, 0.0)  # fmt: skip
+    fh1t = v[V_FH1T + j]
+    fh2t = v[V_FH2T + j]
+    W = v[V_W + j]
+    d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, law.A1, law.A2, v[V_GAMMA + j])
+    tb1 = (fh1t / d1) / W
+    tb2 = (fh2t / d2) / W
+    k = Tangent(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if want_tangent:
+        tr = Trial(fn_tr, f1t, f2t, fh1t, fh2t, v[V_W_TR + j], v[V_PHI_TR + j], 0.0, 0.0,
+                   law.alpha_t, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                   ext1, ext2, 0.0, 0.0, 0.0)  # fmt: skip
+        res = Residual(v[V_RES + j], v[V_R_GAMMA + j], v[V_PHI_1 + j], v[V_PHI_2 + j],
+                       v[V_DLAM + j], v[V_R + j], 0.0, v[V_F + j], 0.0, v[V_PHI_FN + j],
+                       v[V_GAMMA + j], W, v[V_HARD + j], 0.0, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
+        st = Start(v[V_R_START + j], False, 0.0, 0.0, 0.0)
+        k = _tangent(law, tr, st, res, v[V_Y0 + j], v[V_S0 + j], d1, d2, a1, a2, fh1, fh2, ca,
+                     sa)  # fmt: skip
+    return _slip(int(v[V_ITER + j]), v[V_DLAM + j], fn_tr * law.b1 + fh1, fn_tr * law.b2 + fh2, tb1,
+                 tb2, fn_tr, v[V_F + j], v[V_R + j], ca, sa, k)  # fmt: skip
+
+
+@njit(cache=True, error_model="numpy")
+def _lanes_group(
+    base, v, law, p, ca, sa, dt, e_rec, ext1, ext2, traction, F_old, R_old, gap_old,
+    slip_inc, surface, tear_k, ulaw, integ, rform, open_frozen, want_tangent,
+    out_traction, out_F, out_R, out_gap, out_dlam, out_vp, out_diss, out_tangent,
+    out_status, out_iter,
+):  # fmt: skip
+    """Advance the LANES points from ``base`` (shared parameters and time increment)."""
+    _lanes_trial(v, base, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_old,
+                 slip_inc)  # fmt: skip
+    _lanes_start(v, law)
+    _lanes_solve(v, law, dt)
+    for j in range(LANES):
+        i = base + j
+        if v[V_KIND + j] == BY_POINT:
+            res = _point(dt, ca, sa, p, traction[i, 0], traction[i, 1], traction[i, 2],
+                         F_old[i], R_old[i], gap_old[i], slip_inc[i, 0], slip_inc[i, 1],
+                         slip_inc[i, 2], surface, tear_k, ulaw, integ, rform, open_frozen,
+                         want_tangent)  # fmt: skip
+        else:
+            res = _lane_result(v, j, law, ca, sa, ext1, ext2, want_tangent)
+        _store(i, res, want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
+               out_diss, out_tangent, out_status, out_iter)  # fmt: skip
+
+
+@njit(cache=True)
+def _in_lanes(P, n_shared_dt, surface, ulaw, integ, rform):  # fmt: skip
+    """Whether the call is one the lanes cover (else every point goes through _point)."""
+    return (P.shape[0] == 1 and n_shared_dt and surface == COULOMB and ulaw == U_COT
+            and integ == EXPONENTIAL and rform == ONE_MINUS and P[0, P_M] == 1.0
+            and P[0, P_N] == 1.0)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _call_constants(P, dt, surface, tear_k, ulaw, integ, rform):  # fmt: skip
+    """What every lane shares: the law, its parameter row, the axes, the recovery factor
+    exp(-xi dt/F_s) (one per call) and the trial's ext = d f_hat^tr/d du_n + alpha_n b."""
+    ca, sa = _axes(P, 0)
+    p = _row(P, 0)
+    law = _law(p, ca, sa, surface, tear_k, ulaw, integ, rform)
+    e_rec = math.exp(-law.xi * dt / law.Fs)
+    ext1 = 0.0 + -law.alpha_n * law.b1 + law.alpha_n * law.b1
+    ext2 = 0.0 + -law.alpha_n * law.b2 + law.alpha_n * law.b2
+    return law, p, ca, sa, e_rec, ext1, ext2
