@@ -36,8 +36,7 @@ from frictionlab.driver.table import (
     history_units,
 )
 from frictionlab.errors import FrictionlabError
-from frictionlab.io.atomic import atomic_path
-from frictionlab.io.tables import format_csv_bytes, write_csv_atomic
+from frictionlab.io.tables import write_csv, write_csv_atomic
 from frictionlab.schema.scenario import OutputOptions, Scenario
 
 __all__ = [
@@ -100,18 +99,6 @@ def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict
     return out
 
 
-def _write_csv_blocks(path: Path, cols: dict[str, np.ndarray], units: dict[str, str]) -> Path:
-    """Like ``write_csv_atomic``, formatting CSV_BLOCK lines at a time (bounded memory)."""
-    n = len(next(iter(cols.values())))
-    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
-        for start in range(0, max(n, 1), CSV_BLOCK):
-            text = format_csv_bytes(
-                {k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units
-            )
-            handle.write(text if start == 0 else text[text.index(b"\n") + 1 :])
-    return path
-
-
 class HistoryStream:
     """A recording sink that appends the recorded rows to ``history.csv`` as they come.
 
@@ -139,10 +126,7 @@ class HistoryStream:
 
     def _write(self, chunk: dict[str, np.ndarray]) -> None:
         cols = chunk_columns(chunk, self.extra)
-        text = format_csv_bytes(cols, self.units)
-        if self.rows:
-            text = text[text.index(b"\n") + 1 :]
-        self._file.write(text)
+        write_csv(self._file, cols, self.units, header=not self.rows)
         self.rows += len(cols["step"])
 
     def close(self) -> None:
@@ -478,7 +462,7 @@ def _write_points(out: Path, history: History, cone: bool) -> Path:
             name = f"segment_{seg.index}_{key}"
             cols[name] = np.asarray(values)
             units[name] = f_unit if key == "final_F" else "-"
-    return _write_csv_blocks(out / "points.csv", cols, units)
+    return write_csv_atomic(out / "points.csv", cols, units)  # in blocks: bounded memory
 
 
 def _write_peaks(out: Path, history: History) -> Path:
