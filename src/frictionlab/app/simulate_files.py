@@ -36,6 +36,7 @@ from frictionlab.driver.table import (
     history_units,
 )
 from frictionlab.errors import FrictionlabError
+from frictionlab.io.parquet import ParquetStream, write_parquet_atomic
 from frictionlab.io.tables import write_csv, write_csv_atomic
 from frictionlab.schema.scenario import OutputOptions, Scenario
 
@@ -100,11 +101,12 @@ def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict
 
 
 class HistoryStream:
-    """A recording sink that appends the recorded rows to ``history.csv`` as they come.
+    """A recording sink that appends the recorded rows to the history file as they come.
 
     Use as a context manager around the run; ``rows`` counts the data rows written. The
-    file is plain CSV (see :mod:`frictionlab.io.tables`): it is not replaced atomically
-    itself, so write it into an output set's staging directory.
+    file is plain CSV (see :mod:`frictionlab.io.tables`), or Parquet when ``path`` ends
+    in ``.parquet`` (one row group per chunk, :mod:`frictionlab.io.parquet`): it is not
+    replaced atomically itself, so write it into an output set's staging directory.
     """
 
     def __init__(
@@ -115,7 +117,10 @@ class HistoryStream:
         self.extra = tuple(extra or ())
         self.units.update(extra or {})
         self.rows = 0
-        self._file = open(self.path, "wb")  # noqa: SIM115
+        self._parquet = (
+            ParquetStream(self.path, self.units) if self.path.suffix == ".parquet" else None
+        )
+        self._file = open(self.path, "wb") if self._parquet is None else None  # noqa: SIM115
 
     def __call__(self, chunk: dict[str, np.ndarray]) -> None:
         rows, m = chunk["time"].shape
@@ -126,11 +131,19 @@ class HistoryStream:
 
     def _write(self, chunk: dict[str, np.ndarray]) -> None:
         cols = chunk_columns(chunk, self.extra)
-        write_csv(self._file, cols, self.units, header=not self.rows)
+        if self._parquet is not None:
+            self._parquet.write(cols)
+        else:
+            assert self._file is not None
+            write_csv(self._file, cols, self.units, header=not self.rows)
         self.rows += len(cols["step"])
 
     def close(self) -> None:
-        self._file.close()
+        if self._parquet is not None:
+            self._parquet.close()
+        else:
+            assert self._file is not None
+            self._file.close()
 
     def __enter__(self) -> HistoryStream:
         return self
@@ -310,7 +323,7 @@ def summarise(
         "title": scenario.title,
         "success": history.success,
         "message": history.message,
-        "warnings": list(history.warnings),
+        "warnings": list(scenario.warnings) + list(history.warnings),
         "n_points": n,
         "steps": steps,
         "recorded": {
@@ -438,7 +451,9 @@ def write_files(
     else:
         chosen = select_rows(history, scenario.output)
         cols, units = history_columns(chosen, cone=scenario.params.is_cone)
-        written.append(write_csv_atomic(out / "history.csv", cols, units))
+        path = out / scenario.output.history_name
+        write = write_parquet_atomic if path.suffix == ".parquet" else write_csv_atomic
+        written.append(write(path, cols, units))
     written.append(_write_points(out, history, scenario.params.is_cone))
     if len(history.peaks):
         written.append(_write_peaks(out, history))
