@@ -90,18 +90,20 @@ def test_no_warning_under_the_limit(output: str) -> None:
 def test_the_cli_warns_before_the_run_and_in_summary_json(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    monkeypatch.setattr(budget, "HISTORY_LIMIT", 3 * 51 * 160.0)  # 3 points x 51 rows
+    monkeypatch.setattr(budget, "HISTORY_LIMIT", 50 * 51 * 160.0)  # 50 points x 51 rows
     scenario = tmp_path / "s.toml"
-    scenario.write_text(BIG.format(n=3, steps=100))
+    scenario.write_text(BIG.format(n=50, steps=100))
     out = tmp_path / "out"
     assert main(["simulate", str(scenario), "--out", str(out), "--quiet", "--no-plots"]) == 0
     err = capsys.readouterr().err
-    k = _smallest_every(100, 3, 160.0, 3 * 51 * 160.0)  # rows(k) <= 51: k = 3 (1 + 34 + 2)
+    k = _smallest_every(100, 50, 160.0, 50 * 51 * 160.0)  # rows(k) <= 51: k = 3 (1 + 34 + 2)
     assert k == 3
-    assert "frictionlab: warning: history.csv would be about 48.5 kB" in err
+    assert "frictionlab: warning: history.csv would be about 808 kB" in err
     assert f"[output] every = {k}" in err
     summary = json.loads((out / "summary.json").read_text())
     assert any(f"[output] every = {k}" in w for w in summary["warnings"])
     assert summary["recorded"]["every"] == k
-    steps = sorted(set(pd.read_csv(out / "history.csv")["step [-]"]))
-    assert steps == [0, 1, *range(3, 100, 3), 100]  # first, every 3rd, last step
+    steps = [0, 1, *range(3, 100, 3), 100]  # first, every 3rd, last step
+    history = pd.read_csv(out / "history.csv")
+    assert sorted(set(history["step [-]"])) == steps and len(history) == 50 * len(steps)
+    assert summary["recorded"]["rows"] == len(steps)  # of every point (the plots keep fewer)

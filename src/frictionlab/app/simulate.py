@@ -118,7 +118,7 @@ class Simulate:
     ) -> dict[str, Any]:
         history, stream = result.history, result.stream
         if stream is not None:
-            recorded_rows = stream.rows // max(history.n_points, 1)
+            recorded_rows = stream.rows // job.output.recorded_points(job.n_points)
         else:
             recorded_rows = files.select_rows(history, job.output).n_rows
         return files.summarise(job, history, seconds, names, result.healing, recorded_rows)
