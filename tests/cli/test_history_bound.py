@@ -49,16 +49,22 @@ def _smallest_every(steps: int, points: int, per_row: float, limit: float) -> in
     return k
 
 
-def test_the_default_recording_of_a_22_gb_history_records_every_kth_step() -> None:
+CSV_ROW = budget.HISTORY_BYTES_PER_ROW["csv"]
+#: 10^4 points x 10^4 steps (10001 rows) recorded every step; the every and the points
+#: that keep it under 1 GB.
+FULL = 10_001 * 10_000 * CSV_ROW
+K = _smallest_every(10_000, 10_000, CSV_ROW, 1e9)
+POINTS = math.floor(1e9 / (10_001 * CSV_ROW))
+
+
+def test_the_default_recording_of_a_large_history_records_every_kth_step() -> None:
     scenario = parse_scenario(tomllib.loads(BIG.format(n=10_000, steps=10_000)))
-    # 10001 rows x 10^4 points x 160 B = 16 GB: rows(k) <= 625 gives k = 17
-    assert _smallest_every(10_000, 10_000, 160.0, 1e9) == 17
-    assert scenario.output.every == 17 and not scenario.output.every_given
+    assert FULL > 1e10 and 10 < K < 100  # the 22 GB case
+    assert scenario.output.every == K and not scenario.output.every_given
     (warning,) = scenario.warnings
-    assert "history.csv would be about 16 GB" in warning
-    assert "[output] every = 17" in warning and "[output] every = 1 " in warning
-    # every step of at most floor(1e9 / (10001 x 160)) = 624 points stays under 1 GB
-    assert "[output] points listing at most 624 point(s)" in warning
+    assert f"history.csv would be about {FULL / 1e9:.3g} GB" in warning
+    assert f"[output] every = {K}" in warning and "[output] every = 1 " in warning
+    assert f"[output] points listing at most {POINTS} point(s)" in warning
     assert scenario.estimate is not None and scenario.estimate.history <= 1e9
 
 
@@ -67,8 +73,8 @@ def test_a_given_every_is_kept_and_the_warning_says_what_fits() -> None:
     scenario = parse_scenario(tomllib.loads(text))
     assert scenario.output.every == 1
     (warning,) = scenario.warnings
-    assert "history.csv will be about 16 GB" in warning
-    assert "[output] every = 17 or [output] points listing at most 624" in warning
+    assert f"history.csv will be about {FULL / 1e9:.3g} GB" in warning
+    assert f"[output] every = {K} or [output] points listing at most {POINTS}" in warning
 
 
 def test_parquet_is_estimated_with_its_own_row_size() -> None:
@@ -84,21 +90,22 @@ def test_no_warning_under_the_limit(output: str) -> None:
     small = parse_scenario(tomllib.loads(BIG.format(n=10, steps=1000) + output))
     assert small.warnings == () and small.output.every == (100 if output else 1)
     big = parse_scenario(tomllib.loads(BIG.format(n=10_000, steps=10_000) + output))
-    assert (big.warnings == ()) == bool(output)  # every = 100: 1.6e8 B, under 1 GB
+    assert (big.warnings == ()) == bool(output)  # every = 100: 103 rows, under 1 GB
 
 
 def test_the_cli_warns_before_the_run_and_in_summary_json(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    monkeypatch.setattr(budget, "HISTORY_LIMIT", 50 * 51 * 160.0)  # 50 points x 51 rows
+    monkeypatch.setattr(budget, "HISTORY_LIMIT", 50 * 51 * CSV_ROW)  # 50 points x 51 rows
     scenario = tmp_path / "s.toml"
     scenario.write_text(BIG.format(n=50, steps=100))
     out = tmp_path / "out"
     assert main(["simulate", str(scenario), "--out", str(out), "--quiet", "--no-plots"]) == 0
     err = capsys.readouterr().err
-    k = _smallest_every(100, 50, 160.0, 50 * 51 * 160.0)  # rows(k) <= 51: k = 3 (1 + 34 + 2)
+    k = _smallest_every(100, 50, CSV_ROW, 50 * 51 * CSV_ROW)  # rows(k) <= 51: 3 (1 + 34 + 2)
     assert k == 3
-    assert "frictionlab: warning: history.csv would be about 808 kB" in err
+    size = 50 * 101 * CSV_ROW
+    assert f"frictionlab: warning: history.csv would be about {size / 1e6:.3g} MB" in err
     assert f"[output] every = {k}" in err
     summary = json.loads((out / "summary.json").read_text())
     assert any(f"[output] every = {k}" in w for w in summary["warnings"])
