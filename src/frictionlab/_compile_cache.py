@@ -19,10 +19,13 @@ elsewhere (CLI, I/O) keep the cache. ``FRICTIONLAB_CACHE_DIR`` overrides the loc
 
 Stale directories (other versions or sources) are removed when the first kernel module
 is imported (:mod:`frictionlab._jit` calls :func:`configure`; ``import frictionlab`` alone
-does not), only when this is certainly safe (POSIX only): the name has the ``<version>-<hash>``
+does not), all but the :data:`KEEP_RECENT` most recently used ones (two checkouts or
+installs of different sources used in turn keep their kernels instead of recompiling each
+other's), and only when this is certainly safe (POSIX only): the name has the ``<version>-<hash>``
 form, every file inside is a numba cache file (``.nbi``/``.nbc``) or frictionlab's own
 lock file, and no process is using it. A process holds a shared lock on the lock file of
-the directory it uses for as long as it runs; a directory is removed only under an
+the directory it uses for as long as it runs (and sets the file's time stamp: the
+directory's last use); a directory is removed only under an
 exclusive lock, and a directory without a lock file (made before locks existed) only
 when it has not changed for a day. Any failure leaves the directory in place: pruning
 never stops a run.
@@ -31,6 +34,7 @@ never stops a run.
 from __future__ import annotations
 
 import atexit
+import contextlib
 import hashlib
 import os
 import re
@@ -43,7 +47,7 @@ from typing import IO
 
 from frictionlab._version import __version__
 
-__all__ = ["cache_dir", "configure", "prune", "source_hash"]
+__all__ = ["cache_dir", "configure", "last_used", "prune", "source_hash"]
 
 _PACKAGE = Path(__file__).resolve().parent
 _chosen: Path | None = None
@@ -55,6 +59,8 @@ LOCK_NAME = ".frictionlab-in-use"
 _KEY = re.compile(r"^[0-9A-Za-z.+!_-]+-[0-9a-f]{16}$")
 #: A directory without a lock file is removed only when unchanged for this long (s).
 UNLOCKED_GRACE_S = 86400.0
+#: Stale directories kept besides the one in use: the most recently used ones.
+KEEP_RECENT = 3
 
 
 def source_hash() -> str:
@@ -131,7 +137,17 @@ def hold(directory: Path) -> IO[bytes] | None:
     except OSError:
         handle.close()
         return None
+    with contextlib.suppress(OSError):  # the last use, for pruning (a read-only file: none)
+        os.utime(handle.fileno())
     return handle
+
+
+def last_used(directory: Path) -> float:
+    """When ``directory`` was last used: its lock file's time stamp, else its own [s]."""
+    try:
+        return (directory / LOCK_NAME).stat().st_mtime
+    except OSError:
+        return directory.stat().st_mtime
 
 
 def _only_cache_files(directory: Path) -> bool:
@@ -162,8 +178,9 @@ def _remove_if_unused(directory: Path) -> bool:
     return True
 
 
-def prune(root: Path, keep: str) -> list[str]:
-    """Remove the stale cache directories in ``root`` (all but ``keep``); never raises.
+def prune(root: Path, keep: str, keep_recent: int = KEEP_RECENT) -> list[str]:
+    """Remove the stale cache directories in ``root``: all but ``keep`` and the
+    ``keep_recent`` most recently used others; never raises.
 
     Returns the names removed. See the module docstring for what is removed and when.
     """
@@ -176,6 +193,7 @@ def prune(root: Path, keep: str) -> list[str]:
         entries = sorted(root.iterdir())
     except OSError:
         return removed
+    stale: list[tuple[float, Path]] = []
     for entry in entries:
         try:
             if entry.name == keep or entry.is_symlink() or not entry.is_dir():
@@ -184,11 +202,18 @@ def prune(root: Path, keep: str) -> list[str]:
                 if _only_cache_files(entry):  # left by an interrupted removal
                     shutil.rmtree(entry, ignore_errors=True)
                 continue
-            if _KEY.match(entry.name) and _remove_if_unused(entry):
+            if _KEY.match(entry.name):
+                stale.append((last_used(entry), entry))
+        except OSError:
+            continue
+    stale.sort(key=lambda item: item[0], reverse=True)  # the most recently used first
+    for _, entry in stale[max(keep_recent, 0) :]:
+        try:
+            if _remove_if_unused(entry):
                 removed.append(entry.name)
         except OSError:
             continue
-    return removed
+    return sorted(removed)
 
 
 def configure() -> str:

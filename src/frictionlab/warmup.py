@@ -6,21 +6,26 @@ each family of kernels on a problem of a few points: the law's update for every 
 surface, with and without the tangent, in the serial and the parallel loop; the driver's
 recorder; the lattice's partial- and full-contact kernels. With the cache already filled it
 only loads the compiled code (about a second). ``make venv`` and ``make demo`` run it.
+
+:func:`warm_for` warms only what one command's runs use (a sweep calls it before its
+workers start, so that no worker compiles): the law's parallel loop only for runs of at
+least ``PARALLEL_POINTS`` points.
 """
 
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
 from frictionlab.subloading.return_map import PARALLEL_MIN_POINTS as PARALLEL_POINTS
 
-__all__ = ["warmup"]
+__all__ = ["steps_for", "warm_for", "warmup"]
 
 
-def _law() -> None:
+def _law(loops: tuple[int, ...] = (2, PARALLEL_POINTS)) -> None:
+    """The law's update for every surface; ``loops``: point counts (serial, parallel)."""
     from frictionlab import subloading
     from frictionlab.subloading import SURFACES, SubloadingParams, initial_state
 
@@ -31,7 +36,7 @@ def _law() -> None:
         else:
             params = SubloadingParams(surface=surface, alpha_n=1e12, alpha_t=1e12, F_s=2e6,
                                       F_k=1.5e6, M=0.5, u=1e5, kappa=1e3, xi=1e-3)  # fmt: skip
-        for n in (2, PARALLEL_POINTS):  # the serial and the parallel loop
+        for n in loops:  # the serial and the parallel loop
             state = initial_state(params, normal_traction=np.full(n, 1e6))
             du = np.tile([1e-7, 0.0, 0.0], (n, 1))
             for tangent in (True, False):
@@ -47,9 +52,11 @@ def _driver() -> None:
                               mu_k=0.3, u=1e5, kappa=1e3, xi=1e-3)  # fmt: skip
     program = (Slide(velocity=1e-4, distance=1e-6, steps=4), Hold(duration=1.0, steps=2))
     rows: list[dict[str, np.ndarray]] = []
-    for n in (1, 3):
-        simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
-                 recording=Recording(every=1, sink=rows.append))  # fmt: skip
+    for n in (1, 3):  # every row of every point, then every 2nd row of some points
+        for recording in (Recording(every=1, sink=rows.append),
+                          Recording(every=2, points=[0], sink=rows.append)):  # fmt: skip
+            simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
+                     recording=recording)  # fmt: skip
 
 
 def _lattice() -> None:
@@ -69,13 +76,39 @@ STEPS: tuple[tuple[str, Callable[[], None]], ...] = (
 )
 
 
-def warmup(report: Callable[[str], None] | None = None) -> list[tuple[str, float]]:
-    """Compile (or load from the cache) every kernel family; return (step, seconds) pairs."""
+def warmup(
+    report: Callable[[str], None] | None = None,
+    steps: tuple[tuple[str, Callable[[], None]], ...] | None = None,
+) -> list[tuple[str, float]]:
+    """Compile (or load from the cache) every kernel family (or those of ``steps``);
+    return (step, seconds) pairs."""
     times = []
-    for label, step in STEPS:
+    for label, step in STEPS if steps is None else steps:
         t0 = time.perf_counter()
         step()
         times.append((label, time.perf_counter() - t0))
         if report is not None:
             report(f"{label}: {times[-1][1]:.1f} s")
     return times
+
+
+def steps_for(
+    command: str, n_points: Sequence[int] = ()
+) -> tuple[tuple[str, Callable[[], None]], ...]:
+    """The warm-up steps of the kernels that runs of ``command`` use (``simulate``: the law
+    and the driver, the law's parallel loop only when some run has at least
+    ``PARALLEL_POINTS`` of ``n_points``; ``roughness``: the lattice; other commands: all)."""
+    if command == "simulate":
+        loops = (2, PARALLEL_POINTS) if any(n >= PARALLEL_POINTS for n in n_points) else (2,)
+        label = "law update (every surface; " + (
+            "serial and parallel)" if len(loops) > 1 else "serial)"
+        )
+        return ((label, lambda: _law(loops)), STEPS[1])
+    if command == "roughness":
+        return (STEPS[2],)
+    return STEPS
+
+
+def warm_for(command: str, n_points: Sequence[int] = ()) -> list[tuple[str, float]]:
+    """Compile (or load) the kernels that runs of ``command`` use (:func:`steps_for`)."""
+    return warmup(steps=steps_for(command, n_points))

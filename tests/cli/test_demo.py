@@ -83,14 +83,14 @@ def test_report_is_well_formed_and_complete(demo_dir: Path) -> None:
     page.feed((demo_dir / "report.html").read_text(encoding="utf-8"))
     page.close()
     assert page.errors == [] and page.stack == []
-    n = len(default_builders())  # the law's 6, the roughness model's 3, the bridge, contact
+    n = len(default_builders())  # the law's 6, the roughness model's 3, bridge, 2 of contact
     # one parameter table per section, the environment block's table and the law tables: a
     # law is shown in full once, later sections link to it and list only what differs
     text = (demo_dir / "report.html").read_text(encoding="utf-8")
     full, diff = text.count('<p class="law" id='), text.count(", except:</p>")
     linked = text.count("Law parameters: as in <a")
     assert linked >= 3 and diff <= linked and full <= 4  # cone, closed surface, bridge, contact
-    assert n == 11 and page.sections == n and page.tables == n + 1 + full + diff
+    assert n == 12 and page.sections == n and page.tables == n + 1 + full + diff
     assert len(page.images) >= 12
     for fig in page.figures:
         assert fig["img"] and len(str(fig["caption"]).split()) >= 8  # a real sentence
@@ -122,6 +122,19 @@ def test_demo_physics_notes(demo_dir: Path) -> None:
     s = json.loads((demo_dir / "slide_hold_slide" / "summary.json").read_text())
     peaks = s["segments"][2]["peak_friction_ratio"]
     assert all(b > a for a, b in itertools.pairwise(peaks)) and max(peaks) <= 0.5
+
+
+def test_fretting_section_softens_and_recovers(demo_dir: Path) -> None:
+    """Coulomb slides at mu; the subloading law's first peak lies in (mu_k, mu_s], the next
+    strokes are softened below it, and the restart after the hold recovers above them."""
+    from frictionlab.io.tables import read_csv
+
+    coulomb = read_csv(demo_dir / "fretting" / "fretting_coulomb.csv")
+    assert float(np.max(np.abs(coulomb["friction_ratio"]))) == pytest.approx(0.6, rel=1e-6)
+    sub = read_csv(demo_dir / "fretting" / "fretting_subloading.csv")
+    peak = [float(np.max(np.abs(sub["friction_ratio"][sub["stage"] == s]))) for s in (1, 2, 3, 5)]
+    assert 0.4 < peak[0] <= 0.6 and max(peak[1:3]) < peak[0] and peak[3] > max(peak[1:3])
+    assert min(peak) >= 0.4 - 1e-6  # never below mu_k
 
 
 _NO_CHROMIUM = shutil.which("chromium") is None and not Path("/usr/bin/chromium").exists()

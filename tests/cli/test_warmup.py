@@ -44,3 +44,21 @@ def test_warmup_command_reports_every_step(
     for label, _ in warmup_module.STEPS:
         assert label in captured.err
     assert "compiled kernels ready in" in captured.out
+
+
+@pytest.mark.parametrize("points", [[3, 40], [3, warmup_module.PARALLEL_POINTS]])
+def test_a_simulate_warms_the_law_loops_it_uses_and_the_driver(
+    points: list[int], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    seen: set[bool] = set()
+
+    def spy(params: Any, state: Any, *, slip_increment: Any, time_increment: float,
+            tangent: bool = True) -> None:  # fmt: skip
+        seen.add(np.asarray(slip_increment).shape[0] >= warmup_module.PARALLEL_POINTS)
+
+    monkeypatch.setattr(subloading, "update", spy)
+    steps = warmup_module.steps_for("simulate", points)
+    assert [label for label, _ in steps][1:] == [warmup_module.STEPS[1][0]]  # the driver
+    steps[0][1]()
+    assert seen == ({False, True} if max(points) >= warmup_module.PARALLEL_POINTS else {False})
+    assert warmup_module.steps_for("roughness") == (warmup_module.STEPS[2],)  # the lattice

@@ -76,7 +76,7 @@ def test_prune_removes_only_stale_unused_cache_folders(tmp_path: Path) -> None:
     foreign = _stale(tmp_path, KEY_B, ("notes.txt",))  # not only numba files: kept
     other = tmp_path / "my-folder"  # not our name pattern: kept
     other.mkdir()
-    removed = _compile_cache.prune(tmp_path, keep=current.name)
+    removed = _compile_cache.prune(tmp_path, keep=current.name, keep_recent=0)
     assert removed == [KEY_A]
     assert not stale.exists() and current.exists() and foreign.exists() and other.exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted([current.name, KEY_B, "my-folder"])
@@ -87,11 +87,11 @@ def test_prune_keeps_a_folder_in_use_and_never_raises(tmp_path: Path) -> None:
     handle = _compile_cache.hold(stale)  # as a running process of that version does
     assert handle is not None
     try:
-        assert _compile_cache.prune(tmp_path, keep="x") == []
+        assert _compile_cache.prune(tmp_path, keep="x", keep_recent=0) == []
         assert stale.exists()
     finally:
         handle.close()
-    assert _compile_cache.prune(tmp_path, keep="x") == [KEY_A]
+    assert _compile_cache.prune(tmp_path, keep="x", keep_recent=0) == [KEY_A]
     assert _compile_cache.prune(tmp_path / "missing", keep="x") == []
     (tmp_path / "file").write_text("x")
     assert _compile_cache.prune(tmp_path / "file", keep="x") == []
@@ -100,21 +100,59 @@ def test_prune_keeps_a_folder_in_use_and_never_raises(tmp_path: Path) -> None:
 def test_folder_without_lock_file_is_removed_only_when_old(tmp_path: Path) -> None:
     stale = _stale(tmp_path, KEY_A)
     (stale / _compile_cache.LOCK_NAME).unlink()  # made before lock files existed
-    assert _compile_cache.prune(tmp_path, keep="x") == []  # recent: may be in use
+    assert _compile_cache.prune(tmp_path, keep="x", keep_recent=0) == []  # may be in use
     old = os.stat(stale).st_mtime - 2 * _compile_cache.UNLOCKED_GRACE_S
     os.utime(stale, (old, old))
-    assert _compile_cache.prune(tmp_path, keep="x") == [KEY_A]
+    assert _compile_cache.prune(tmp_path, keep="x", keep_recent=0) == [KEY_A]
+
+
+def _used_at(folder: Path, seconds_ago: float) -> Path:
+    """Give ``folder`` a last use ``seconds_ago`` (its lock file's time stamp)."""
+    when = os.stat(folder).st_mtime - seconds_ago
+    os.utime(folder / _compile_cache.LOCK_NAME, (when, when))
+    return folder
+
+
+def _keys(count: int) -> list[str]:
+    return [f"0.0.{i}-{i:016x}" for i in range(count)]
 
 
 def test_first_kernel_use_prunes_stale_siblings(tmp_path: Path) -> None:
     """The set-up runs when the first kernel module is imported (import frictionlab
-    alone does not touch the cache: tests/performance/test_import.py)."""
+    alone does not touch the cache: tests/performance/test_import.py): it keeps the
+    most recently used siblings and removes the older ones."""
     root = tmp_path / "frictionlab" / "numba"
-    stale = _stale(root, KEY_A)
+    keep = _compile_cache.KEEP_RECENT
+    folders = [
+        _used_at(_stale(root, key), 100.0 * (i + 1)) for i, key in enumerate(_keys(keep + 2))
+    ]
     probe = "import frictionlab._jit, numba.core.config as c; print(c.CACHE_DIR)"
     used = Path(_run({"XDG_CACHE_HOME": str(tmp_path), "FRICTIONLAB_CACHE_DIR": ""}, probe))
-    assert used.parent == root and used.exists() and not stale.exists()
+    assert used.parent == root and used.exists()
+    assert [f.exists() for f in folders] == [True] * keep + [False, False]
     assert (used / _compile_cache.LOCK_NAME).exists()
+
+
+def test_prune_keeps_the_most_recently_used_siblings(tmp_path: Path) -> None:
+    """Checkouts of different sources used in turn (parallel sessions, two installs) do not
+    delete each other's compiled kernels: the newest KEEP_RECENT stale folders stay."""
+    keys = _keys(6)
+    ages = [50.0, 10.0, 60.0, 20.0, 40.0, 30.0]  # seconds since each folder's last use
+    for key, age in zip(keys, ages, strict=True):
+        _used_at(_stale(root := tmp_path, key), age)
+    removed = _compile_cache.prune(root, keep="current", keep_recent=3)
+    newest = sorted(keys, key=lambda k: ages[keys.index(k)])[:3]
+    assert removed == sorted(set(keys) - set(newest))
+    assert sorted(p.name for p in root.iterdir()) == sorted(newest)
+    # using an old folder again (a process holds it) makes it recent: it survives the next prune
+    oldest = newest[-1]
+    _used_at(tmp_path / oldest, 1000.0)
+    handle = _compile_cache.hold(tmp_path / oldest)
+    assert handle is not None
+    handle.close()
+    assert _compile_cache.prune(root, keep="current", keep_recent=1) == sorted(
+        set(newest) - {oldest}
+    )
 
 
 def test_the_held_lock_file_is_closed_at_exit(tmp_path: Path) -> None:

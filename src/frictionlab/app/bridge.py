@@ -35,7 +35,7 @@ from frictionlab.bridge import (
 )
 from frictionlab.driver import History
 from frictionlab.errors import FrictionlabError, InputError, ParameterError
-from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
+from frictionlab.io.atomic import write_contents_atomic
 from frictionlab.io.config import format_toml
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.lattice import FrictionPolar, friction_polar, merge_polars
@@ -350,13 +350,7 @@ def _files(out: Path, run: BridgeRun) -> list[Path]:
         "directions.csv": format_csv(columns, units, header),
         "bridge.png": figure_png_bytes(fig),
     }
-    written = []
-    for name, content in contents.items():
-        if isinstance(content, bytes):
-            written.append(write_bytes_atomic(out / name, content))
-        else:
-            written.append(write_text_atomic(out / name, content))
-    return written
+    return write_contents_atomic(out, contents)
 
 
 class Bridge:

@@ -497,4 +497,7 @@ def check_contact(scenario: Any, memory: int | None = None) -> None:
     contact = int(math.prod(c + 1 for c in cells[:-1]))  # the bottom face
     steps = scenario.normal.steps + sum(seg.steps for seg in scenario.program)
     key = f"[block].element_size = {scenario.block.element_size:g} m"
+    mesh = getattr(scenario, "mesh", None)
+    if mesh is not None:  # an imported mesh: its own node counts
+        nodes, contact, key = mesh.nodes, mesh.contact_nodes, f"[mesh].file = {mesh.file!r}"
     check_contact_size(nodes, contact, scenario.block.dim, steps, key, memory=memory)

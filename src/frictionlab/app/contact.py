@@ -25,7 +25,10 @@ from frictionlab.driver.simulate import status_labels
 from frictionlab.io.tables import write_csv_atomic
 from frictionlab.schema.contact import ContactScenario
 
-__all__ = ["CONTACT", "contact_summary", "run_contact_scenario", "write_contact_results"]
+__all__ = [
+    "CONTACT", "contact_summary", "discretise_scenario", "run_contact_scenario", "scenario_law",
+    "write_contact_results",
+]  # fmt: skip
 
 
 def _global_columns(
@@ -87,7 +90,9 @@ def contact_summary(
         "success": history.success,
         "message": history.message,
         "mesh": {
-            "cells": list(scenario.block.cells),
+            "cells": list(scenario.block.cells)
+            if scenario.mesh is None
+            else [int(history.cells.shape[1])],
             "element": scenario.block.element,
             "dofs": int(history.dim * history.nodes.shape[1]),
             "contact_points": int(history.x.shape[0]),
@@ -148,6 +153,40 @@ def _files(
     return written
 
 
+def discretise_scenario(scenario: ContactScenario) -> Discretisation:
+    """The scenario's mesh: its [mesh] file assembled, or its [block] meshed."""
+    if scenario.mesh is not None:
+        from frictionlab.schema.contact import mesh_keys
+
+        mesh = scenario.mesh
+        return mesh_keys(lambda: mesh.discretise(scenario.block))
+    from frictionlab.contact import discretise
+
+    return discretise(scenario.block)
+
+
+def scenario_law(scenario: ContactScenario, disc: Discretisation) -> Any:
+    """The law at the contact points of ``disc`` ([law_table] and [[law_region]] resolved)."""
+    if not scenario.law_field:
+        return scenario.params
+    from frictionlab.errors import InputError, ParameterError
+
+    try:
+        mesh = scenario.mesh
+        groups = {
+            r.group: mesh.points_in(r.group, disc)
+            for r in scenario.law_field.regions
+            if r.group is not None and mesh is not None
+        }
+        return scenario.law_field.resolve(scenario.params, disc.contact_xy, groups)  # type: ignore[arg-type]
+    except ParameterError as exc:  # a table short of the face, a mix no point can take
+        if exc.field.startswith("["):
+            raise InputError(str(exc)) from None
+        raise InputError(
+            f"[law] with [law_table]/[[law_region]] at the contact points: {exc}"
+        ) from None
+
+
 def run_contact_scenario(
     scenario: ContactScenario,
     progress: Callable[[int, int], None] | None = None,
@@ -159,10 +198,14 @@ def run_contact_scenario(
     """
     from frictionlab.contact import run_contact
 
+    disc = discretisation
+    if disc is None and (scenario.mesh is not None or scenario.law_field):
+        disc = discretise_scenario(scenario)
+    params = scenario.params if disc is None else scenario_law(scenario, disc)
     return run_contact(
-        scenario.block, scenario.params, scenario.normal, scenario.program,
+        scenario.block, params, scenario.normal, scenario.program,
         settings=scenario.options, drive=scenario.drive, progress=progress,
-        discretisation=discretisation, base=scenario.base,
+        discretisation=disc, base=scenario.base,
         record_displacement=scenario.fields,
     )  # fmt: skip
 
@@ -202,11 +245,9 @@ class Contact:
     def run(self, job: ContactScenario, progress: ProgressFactory, staging: Path) -> ContactHistory:
         name = Path(job.source).name if job.source else "scenario"
         disc = None
-        if job.fields:  # the mesh is needed again for the field files
-            from frictionlab.contact import discretise
-
-            disc = discretise(job.block)
-            self._meshes[id(job)] = disc
+        if job.fields or job.mesh is not None or job.law_field:
+            disc = discretise_scenario(job)
+            self._meshes[id(job)] = disc  # again for the field files
         with progress(f"contact {name}") as update:
             return run_contact_scenario(job, update, disc)
 
@@ -217,9 +258,7 @@ class Contact:
         disc = self._meshes.pop(id(job), None)
         if job.fields:
             if disc is None:  # written without run() (write_contact_results)
-                from frictionlab.contact import discretise
-
-                disc = discretise(job.block)
+                disc = discretise_scenario(job)
             written.extend(_field_files(out, result, disc))
         return written
 

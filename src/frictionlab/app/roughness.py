@@ -28,7 +28,7 @@ Optional tables of the scenario add (see :mod:`frictionlab.schema.roughness`):
   retained: ``cutoff_m, beta_deg, mu, mu_over_mu0, valid``) and ``multiscale.png``.
 
 ``--quiet`` hides the progress bar (one step per direction), warnings and the summary
-line; ``--no-plots`` skips every PNG. With ``[sliding] on_invalid = "mask"`` contacts
+line; ``--no-plots`` skips every PNG. With ``[sliding] on_invalid = "drop"`` contacts
 violating Eq 1 are dropped and ``polar.csv`` gains ``invalid_fraction``. summary.json
 records the provenance of each surface (file name, sha256, preparation, rms height and
 slope after filtering; Hurst exponent and seed of generated ones), every direction
@@ -59,7 +59,7 @@ from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
 from frictionlab.app.budget import check_roughness
 from frictionlab.errors import InputError, ParameterError, ValidityError
-from frictionlab.io.atomic import write_bytes_atomic, write_text_atomic
+from frictionlab.io.atomic import write_contents_atomic
 from frictionlab.io.config import load_toml
 from frictionlab.io.tables import format_csv
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
@@ -162,13 +162,7 @@ class Roughness:
             if plots:
                 files["polar.png"] = _png(scenario, result.plot_polar)
         files.update(_statistics_outputs(scenario, plots)[0])
-        written = []
-        for name, content in files.items():
-            if isinstance(content, bytes):
-                written.append(write_bytes_atomic(out / name, content))
-            else:
-                written.append(write_text_atomic(out / name, content))
-        return written
+        return write_contents_atomic(out, files)
 
     def summary(
         self, job: RoughnessJob, result: RoughnessRun, files: list[str], seconds: float
@@ -309,7 +303,7 @@ def _ways_forward(scenario: RoughnessScenario) -> str:
     cutoff = f" (e.g. short_cutoff = {4 * min(pixel):.3g} m, four pixels)" if pixel else ""
     return (
         "Ways forward: remove the pixel-scale slopes with short_cutoff in [lower]/[upper]"
-        f'{cutoff}, use a smaller mu0, or set on_invalid = "mask" in [sliding] to drop '
+        f'{cutoff}, use a smaller mu0, or set on_invalid = "drop" in [sliding] to drop '
         "the invalid contacts and report their area fraction"
     )
 
@@ -372,40 +366,36 @@ def _extension_files(
     )
 
     title = scenario.title or path.name
-    files: dict[str, str | bytes] = {}
     head = f"frictionlab {__version__} roughness: {title}\nmu0 = {scenario.mu0:g}"
+    #: (file stem, result, CSV header, figure function, figure title), in writing order
+    made: list[tuple[str, Any, str, Any, str]] = []
     if "adhesion" in results:
         sweep: AdhesionSweep = results["adhesion"]
         header = (
             f"{head}, k_c = {sweep.k_c:g} N/m, k_t = {sweep.k_t:g} N/m; loads and forces per "
             "spring (N); mu_apparent = R/L (Eq 22), empty where undefined (L = 0)"
         )
-        files["adhesion.csv"] = format_csv(sweep.columns(), sweep.units(), header)
-        files["adhesion.png"] = figure_png_bytes(adhesion_figure(sweep, f"adhesion: {title}"))
+        made.append(("adhesion", sweep, header, adhesion_figure, f"adhesion: {title}"))
     if "wear" in results:
         history: WearHistory = results["wear"]
         header = (
             f"{head}, wear time T_w = {history.wear_time:.9g} s, volume {history.volume:.9g} m^3, "
             f"surfaces = {history.wear.surfaces}, method = {history.method}"
         )
-        files["wear.csv"] = format_csv(history.columns(), history.units(), header)
-        files["wear.png"] = figure_png_bytes(wear_figure(history, f"wear: {title}"))
+        made.append(("wear", history, header, wear_figure, f"wear: {title}"))
     if "hierarchy" in results:
         result: HierarchyResult = results["hierarchy"]
         header = (
             f"{head}, {result.n_levels} levels (level 0: the local mu0), mu passed upward: "
             f"{result.mu_passed}; invalid levels empty with valid = false"
         )
-        files["hierarchy.csv"] = format_csv(result.columns(), result.units(), header)
-        files["hierarchy.png"] = figure_png_bytes(hierarchy_figure(result, f"hierarchy: {title}"))
+        made.append(("hierarchy", result, header, hierarchy_figure, f"hierarchy: {title}"))
     if "hierarchy_wear" in results:
         life: HierarchyWearHistory = results["hierarchy_wear"]
         drop = ", ".join(f"{t:.6g}" for t in life.dropout_time)
         header = f"{head}, levels flat (drop out) at t = {drop} s (Eq 35 windows)"
-        files["hierarchy_wear.csv"] = format_csv(life.columns(), life.units(), header)
-        files["hierarchy_wear.png"] = figure_png_bytes(
-            hierarchy_wear_figure(life, f"hierarchy with wear: {title}")
-        )
+        made.append(("hierarchy_wear", life, header, hierarchy_wear_figure,
+                     f"hierarchy with wear: {title}"))  # fmt: skip
     if "multiscale" in results:
         ms: MultiscaleResult = results["multiscale"]
         header = (
@@ -414,12 +404,13 @@ def _extension_files(
             f"{ms.mu_passed}; cutoff_m = shortest wavelength retained (last: Nyquist); "
             "invalid values empty with valid = false"
         )
-        files["multiscale.csv"] = format_csv(ms.columns(), ms.units(), header)
-        files["multiscale.png"] = figure_png_bytes(
-            multiscale_figure(ms, f"scale-resolved friction: {title}")
-        )
-    if not plots:
-        files = {k: v for k, v in files.items() if not k.endswith(".png")}
+        made.append(("multiscale", ms, header, multiscale_figure,
+                     f"scale-resolved friction: {title}"))  # fmt: skip
+    files: dict[str, str | bytes] = {}
+    for stem, res, header, figure, caption in made:
+        files[f"{stem}.csv"] = format_csv(res.columns(), res.units(), header)
+        if plots:  # figures are rendered only when written
+            files[f"{stem}.png"] = figure_png_bytes(figure(res, caption))
     return files
 
 
@@ -578,7 +569,7 @@ def _summary(
             "separation_m": s.separation,
             "phase_m": list(s.phase),
             "directions_deg": polar.beta_deg.tolist(),
-            "on_invalid": "mask" if s.on_invalid == "drop" else "error",
+            "on_invalid": s.on_invalid,
             "invalid_fraction": polar.invalid_fraction.tolist(),
         },
         "lattice": {

@@ -61,7 +61,8 @@ def run_sweep(args: argparse.Namespace, progress_bar: ProgressFactory) -> int:
     out = check_out(args.out, args.overwrite, markers=(TABLE,))
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers = {args.workers} is invalid: allowed an integer >= 1")
-    spec, command, tasks = load_spec(args.sweep, plots=not args.no_plots)
+    points: list[int] = []
+    spec, command, tasks = load_spec(args.sweep, plots=not args.no_plots, points=points)
     where = out.resolve()
     for source in (Path(args.sweep), spec.base):
         if where == source.resolve().parent or where in source.resolve().parents:
@@ -78,12 +79,12 @@ def run_sweep(args: argparse.Namespace, progress_bar: ProgressFactory) -> int:
     with lock_out(out):  # held for the whole run: one sweep per folder at a time
         if args.overwrite and out.is_dir() and not (out / TABLE).is_file():
             shutil.rmtree(out)  # --overwrite: a folder that is not a sweep's starts afresh
-        return _run(args, progress_bar, out, spec, command, tasks)
+        return _run(args, progress_bar, out, spec, command, tasks, points)
 
 
 def _run(
     args: argparse.Namespace, progress_bar: ProgressFactory, out: Path, spec: SweepSpec,
-    command: str, tasks: list[Task],
+    command: str, tasks: list[Task], points: list[int],
 ) -> int:  # fmt: skip
     shas = {t.case_id: t.inputs_sha256 for t in tasks}
     cases_dir = out / "cases"
@@ -101,6 +102,10 @@ def _run(
         writer.write(records, force=True)  # before anything runs: is --out writable?
     except OSError as exc:
         raise InputError(f"cannot write to --out {out}: {exc.strerror or exc}") from None
+    if todo:  # compile here, once, what the cases use: the workers then load it
+        from frictionlab.warmup import warm_for
+
+        warm_for(command, points)
     started = time.perf_counter()
     with progress_bar(f"sweep {args.sweep.name}") as progress:
         progress(skipped, len(spec.cases))
@@ -131,19 +136,25 @@ def _run(
     return 1 if failed else 0
 
 
-def load_spec(path: Path, plots: bool = True) -> tuple[SweepSpec, str, list[Task]]:
+def load_spec(
+    path: Path, plots: bool = True, points: list[int] | None = None
+) -> tuple[SweepSpec, str, list[Task]]:
     """Read a sweep file and its base scenario, validate every case.
 
     Returns the parsed sweep (:class:`SweepSpec`), the command of its base scenario and the
-    tasks; nothing runs and nothing is written.
+    tasks; nothing runs and nothing is written. ``points``, when given, receives the
+    number of contact points of each simulate case.
     """
     spec = parse_sweep(load_toml(path), base_dir=path.parent, source=str(path))
     base_data = load_toml(spec.base)
     command = detect_command(base_data, spec.command)
-    return spec, command, _validate(spec, command, base_data, plots)
+    return spec, command, _validate(spec, command, base_data, plots, points)
 
 
-def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) -> list[Task]:
+def _validate(
+    spec: SweepSpec, command: str, base: dict[str, Any], plots: bool,
+    points: list[int] | None = None,
+) -> list[Task]:  # fmt: skip
     """Check every case's scenario (nothing runs): bad input names the case and the key."""
     from frictionlab.schema.roughness import parse_roughness
     from frictionlab.schema.scenario import parse_scenario
@@ -168,7 +179,9 @@ def _validate(spec: SweepSpec, command: str, base: dict[str, Any], plots: bool) 
         try:
             data = apply_overrides(base, sets)
             if command == "simulate":
-                parse_scenario(data, base_dir=spec.base.parent, source=str(spec.base))
+                scenario = parse_scenario(data, base_dir=spec.base.parent, source=str(spec.base))
+                if points is not None:
+                    points.append(scenario.n_points)
             else:
                 check_roughness(
                     parse_roughness(data, base_dir=spec.base.parent, source=str(spec.base))

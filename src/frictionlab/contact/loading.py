@@ -6,19 +6,24 @@ area) or a prescribed downward displacement [m] of the top edge, ramped linearly
 ``duration`` and then held. The tangential programme uses the segment vocabulary of
 ``frictionlab simulate`` where it applies:
 
-* :class:`Slide` — move the top edge along x at ``velocity`` [m/s] (negative: -x) for a
-  ``distance`` [m] or a ``duration`` [s] (displacement control);
-* :class:`Reverse` — slide back, opposite to the last slide, with its speed and
-  distance unless given;
-* :class:`Hold` — keep the last tangential control value for ``duration`` [s];
+* :class:`~frictionlab.loading.Slide` — move the top edge at ``velocity`` > 0 [m/s] for a
+  ``distance`` [m] or a ``duration`` [s] along ``direction_deg`` (default: the current
+  direction, initially x; 180: -x) (displacement control);
+* :class:`~frictionlab.loading.Reverse` — slide back, opposite to the last slide, with its
+  speed and distance unless given;
+* :class:`~frictionlab.loading.Hold` — keep the last tangential control value for
+  ``duration`` [s];
 * :class:`Traction` — ramp the mean shear traction on the top edge to ``target`` [Pa]
   over ``duration`` [s] (force control; the top edge is then free in x), along x or
   ``direction_deg``; with ``cycles = k`` it then cycles k times between ``-target``
   and ``+target`` (each ramp over ``duration``: fretting loops).
 
-A programme is displacement- or force-controlled as a whole (Hold fits both).
-``steps`` is the nominal number of load steps of a segment; the solver cuts a step on
-non-convergence and grows it back after easy steps, never beyond the nominal size.
+Slide, Reverse and Hold are the driver's segments (:mod:`frictionlab.loading`, one set of
+rules); this model takes scalar values. A programme is displacement- or force-controlled
+as a whole (Hold fits both). ``steps`` is the nominal number of load steps of a segment
+(or ``max_step`` [m], the most slip per step; default :data:`DEFAULT_STEPS`); the solver
+cuts a step on non-convergence and grows it back after easy steps, never beyond the
+nominal size.
 """
 
 from __future__ import annotations
@@ -31,8 +36,10 @@ from typing import Any
 import numpy as np
 
 from frictionlab.errors import ParameterError
+from frictionlab.loading import Hold, Reverse, Slide
 
 __all__ = [
+    "DEFAULT_STEPS",
     "Hold",
     "NormalLoad",
     "Reverse",
@@ -104,56 +111,6 @@ class NormalLoad:
 
 
 @dataclass(frozen=True)
-class Slide:
-    """Move the top edge at ``velocity`` [m/s] for a ``distance`` [m] or ``duration`` [s]."""
-
-    velocity: float
-    distance: float | None = None
-    duration: float | None = None
-    steps: int = 20
-    direction_deg: float = 0.0
-
-    def __post_init__(self) -> None:
-        _real("velocity", self.velocity, "velocity != 0 [m/s]", self.velocity != 0)
-        _real("direction_deg", self.direction_deg, "a finite angle [deg]", True)
-        if (self.distance is None) == (self.duration is None):
-            raise ParameterError("slide", "distance and duration", "exactly one of the two")
-        if self.distance is not None:
-            _real("distance", self.distance, "distance > 0 [m]", self.distance > 0)
-        if self.duration is not None:
-            _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
-        _steps(self.steps)
-
-
-@dataclass(frozen=True)
-class Reverse:
-    """Slide back: opposite direction, the last slide's speed and distance unless given."""
-
-    velocity: float | None = None
-    distance: float | None = None
-    steps: int = 20
-
-    def __post_init__(self) -> None:
-        if self.velocity is not None:
-            _real("velocity", self.velocity, "velocity > 0 [m/s]", self.velocity > 0)
-        if self.distance is not None:
-            _real("distance", self.distance, "distance > 0 [m]", self.distance > 0)
-        _steps(self.steps)
-
-
-@dataclass(frozen=True)
-class Hold:
-    """Keep the tangential control value for ``duration`` [s]."""
-
-    duration: float
-    steps: int = 5
-
-    def __post_init__(self) -> None:
-        _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)
-        _steps(self.steps)
-
-
-@dataclass(frozen=True)
 class Traction:
     """Ramp the mean shear traction on the top to ``target`` [Pa] over ``duration`` [s]."""
 
@@ -174,6 +131,25 @@ class Traction:
 
 
 Segment = Slide | Reverse | Hold | Traction
+
+#: Load steps of a Slide, Reverse or Hold that gives neither ``steps`` nor ``max_step`` (a
+#: finite-element step costs far more than a point's, so fewer than the driver's).
+DEFAULT_STEPS = {"slide": 20, "reverse": 20, "hold": 5}
+
+
+def _scalar(seg: Slide | Reverse | Hold, name: str) -> float | None:
+    value = getattr(seg, name, None)
+    if value is None:
+        return None
+    if np.ndim(value) != 0:
+        raise ParameterError(name, value, "a scalar (the contact model drives one top edge)")
+    return float(value)
+
+
+def _step_count(seg: Slide | Reverse | Hold, extent: float) -> int:
+    if seg.max_step is not None:
+        return max(1, math.ceil(abs(extent) / seg.max_step * (1.0 - 1e-12)))
+    return int(seg.steps or DEFAULT_STEPS[seg.kind])
 
 
 @dataclass(frozen=True)
@@ -229,31 +205,37 @@ def plan_stages(normal: NormalLoad, program: Sequence[Segment]) -> tuple[str, li
     value = zero.copy()
     last_step: np.ndarray | None = None  # the last slide's displacement vector
     last_speed = 0.0
+    direction = 0.0  # the current sliding direction [deg]
     for i, seg in enumerate(program):
-        if isinstance(seg, Slide):
-            speed = abs(seg.velocity)
-            distance = seg.distance if seg.distance is not None else speed * seg.duration  # type: ignore[operator]
-            sign = 1.0 if seg.velocity > 0 else -1.0
-            step = sign * distance * _unit(seg.direction_deg)
-            stages.append(Stage("slide", control, value, value + step, distance / speed, seg.steps))
-            value = value + step
-            last_step, last_speed = step, speed
-        elif isinstance(seg, Reverse):
-            if last_step is None:
-                raise ParameterError(
-                    f"program[{i + 1}].kind", "reverse", "a reverse after at least one slide"
+        if isinstance(seg, Slide | Reverse):
+            if isinstance(seg, Slide):
+                speed = _scalar(seg, "velocity") or 0.0
+                distance = _scalar(seg, "distance") or speed * (_scalar(seg, "duration") or 0.0)
+                given = _scalar(seg, "direction_deg")
+                direction = direction if given is None else given
+                step = distance * _unit(direction)
+            else:
+                if last_step is None:
+                    raise ParameterError(
+                        f"program[{i + 1}].kind", "reverse", "a reverse after at least one slide"
+                    )
+                speed = _scalar(seg, "velocity") or last_speed
+                length = float(np.hypot(*last_step))
+                duration = _scalar(seg, "duration")
+                distance = _scalar(seg, "distance") or (
+                    length if duration is None else speed * duration
                 )
-            speed = seg.velocity if seg.velocity is not None else last_speed
-            length = float(np.hypot(*last_step))
-            distance = seg.distance if seg.distance is not None else length
-            step = -last_step * (distance / length)
-            stages.append(
-                Stage("reverse", control, value, value + step, distance / speed, seg.steps)
-            )
-            value = value + step
-            last_step, last_speed = step, speed
+                step = -last_step * (distance / length)
+                direction += 180.0
+            end = value + step
+            steps = _step_count(seg, distance)
+            stages.append(Stage(seg.kind, control, value, end, distance / speed, steps))
+            value, last_step, last_speed = end, step, speed
         elif isinstance(seg, Hold):
-            stages.append(Stage("hold", control, value, value, seg.duration, seg.steps))
+            duration = _scalar(seg, "duration") or 0.0
+            stages.append(
+                Stage("hold", control, value, value, duration, _step_count(seg, duration))
+            )
         else:
             target = seg.target * _unit(seg.direction_deg)
             stages.append(Stage("traction", control, value, target, seg.duration, seg.steps))

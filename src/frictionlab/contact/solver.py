@@ -319,8 +319,6 @@ def _run(
     base.check_dim(block.dim)
     if drive not in DRIVES:
         raise ParameterError("drive", drive, "one of " + ", ".join(DRIVES))
-    if params.per_point:
-        raise ParameterError("law", "per-point parameters", "scalar parameters (one interface)")
     control, stages = plan_stages(normal, program)
     if drive == "rigid" and control != "slide":
         raise ParameterError("drive", drive, "'top' for a force-controlled programme")
@@ -331,6 +329,15 @@ def _run(
     disc = discretisation if discretisation is not None else discretise(block)
     if disc.block != block:
         raise ParameterError("discretisation", "another block", "a mesh of this block")
+    if (
+        isinstance(params, SubloadingParams)
+        and params.per_point
+        and params.n_points != disc.n_points
+    ):
+        raise ParameterError(
+            "law", f"per-point parameters of {params.n_points} points",
+            f"scalars or one value per contact point ({disc.n_points})",
+        )  # fmt: skip
     top_area = -float(np.sum(disc.unit_pressure))
     # a total force is applied as the uniform pressure force / top area
     to_pressure = 1.0 / top_area if normal.control == "force" else 1.0

@@ -14,6 +14,7 @@ from importlib import resources
 from pathlib import Path
 
 from frictionlab.demo import DemoContext
+from frictionlab.demo.fretting import fretting_section
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
 from frictionlab.io.report import Section, format_value
@@ -133,4 +134,4 @@ def _law_rows(scenario: object) -> list[tuple[str, str, str]]:
 
 
 #: The contact model's demo sections, in report order.
-CONTACT_SECTIONS = (contact_section,)
+CONTACT_SECTIONS = (contact_section, fretting_section)

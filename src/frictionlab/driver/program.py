@@ -38,8 +38,23 @@ from typing import Any, ClassVar
 import numpy as np
 
 from frictionlab.errors import ParameterError
+from frictionlab.loading import (
+    Hold,
+    Reverse,
+    Slide,
+    _array,
+    _check_steps,
+    _checked,
+    _init_inherited,
+    _max_step,
+    _one_of,
+    _optional,
+    _sizes,
+    _steps,
+)
 
 __all__ = [
+    "DEFAULT_STEPS",
     "SEGMENT_KINDS",
     "Control",
     "Cycle",
@@ -62,71 +77,9 @@ __all__ = [
 
 
 # --------------------------------------------------------------------------- value checks
-def _array(name: str, value: Any, *, shape_tail: tuple[int, ...] = ()) -> np.ndarray:
-    """A read-only float64 array: ``shape_tail`` (shared) or ``(N,) + shape_tail``."""
-    try:
-        arr = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ParameterError(name, value, "a real number or an array of real numbers") from None
-    ok_ndim = (len(shape_tail), len(shape_tail) + 1)
-    if arr.ndim not in ok_ndim or arr.shape[arr.ndim - len(shape_tail) :] != shape_tail:
-        want = f"shape {shape_tail} or (N, {', '.join(map(str, shape_tail))})"
-        raise ParameterError(name, value, want if shape_tail else "a scalar or an array (N,)")
-    if arr.ndim > len(shape_tail) and arr.shape[0] == 0:
-        raise ParameterError(name, value, "at least one value")
-    if not np.all(np.isfinite(arr)):
-        raise ParameterError(name, value, "finite values (no NaN or infinity)")
-    arr.setflags(write=False)
-    return arr
-
-
-def _checked(name: str, value: Any, rule: str | None) -> np.ndarray:
-    arr = _array(name, value)
-    if rule == ">0" and np.any(arr <= 0):
-        raise ParameterError(name, value, f"{name} > 0")
-    if rule == ">=0" and np.any(arr < 0):
-        raise ParameterError(name, value, f"{name} >= 0")
-    return arr
-
-
-def _optional(name: str, value: Any, rule: str | None) -> np.ndarray | None:
-    return None if value is None else _checked(name, value, rule)
-
-
-def _steps(name: str, value: Any) -> int | None:
-    if value is None:
-        return None
-    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:
-        raise ParameterError(name, value, "an integer >= 1")
-    return int(value)
-
-
-def _max_step(value: Any) -> float | None:
-    if value is None:
-        return None
-    if isinstance(value, bool) or not isinstance(value, int | float) or not value > 0:
-        raise ParameterError("max_step", value, "a number > 0")
-    if not math.isfinite(value):
-        raise ParameterError("max_step", value, "a finite number > 0")
-    return float(value)
-
-
-def _one_of(owner: str, **given: Any) -> str:
-    names = [k for k, v in given.items() if v is not None]
-    if len(names) != 1:
-        options = " or ".join(given)
-        got = ", ".join(names) if names else "none"
-        raise ParameterError(owner, got, f"exactly one of {options}")
-    return names[0]
-
-
 def _count(extent: np.ndarray, max_step: float) -> int:
     """Steps needed so that no point moves more than ``max_step`` per step."""
     return max(1, math.ceil(float(np.max(np.abs(extent))) / max_step * (1.0 - 1e-12)))
-
-
-def _sizes(*arrays: np.ndarray | None, tail: int = 0) -> set[int]:
-    return {a.shape[0] for a in arrays if a is not None and a.ndim > tail}
 
 
 #: Most steps a traction target's ``max_step`` may ask for (its count is known only when the
@@ -309,85 +262,41 @@ def _slide_plan(
     return plan, PlanContext(n, theta, velocity, distance)
 
 
+#: Steps of a shared segment that gives neither ``steps`` nor ``max_step``. A hold's
+#: recovery is integrated exactly (no stability limit): one step is exact at its end.
+DEFAULT_STEPS = {"slide": 100, "reverse": 100, "hold": 1}
+
+
+def _plan_slide(seg: Slide, ctx: PlanContext) -> tuple[SegmentPlan, PlanContext]:
+    n = ctx.n_points
+    theta = ctx.direction if seg.direction_deg is None else np.radians(_vec(seg.direction_deg, n))
+    velocity = _vec(seg.velocity, n)
+    distance = (
+        _vec(seg.distance, n) if seg.distance is not None else velocity * _vec(seg.duration, n)
+    )
+    steps = _resolve_steps(seg, distance)
+    return _slide_plan(seg.kind, ctx, _vec(theta, n), velocity, distance, steps, {})
+
+
+def _plan_reverse(seg: Reverse, ctx: PlanContext) -> tuple[SegmentPlan, PlanContext]:
+    velocity, distance = _inherit(seg, ctx)
+    steps = _resolve_steps(seg, distance)
+    return _slide_plan(seg.kind, ctx, ctx.direction + math.pi, velocity, distance, steps, {})
+
+
+def _plan_hold(seg: Hold, ctx: PlanContext) -> tuple[SegmentPlan, PlanContext]:
+    n = ctx.n_points
+    duration = _vec(seg.duration, n)
+    steps = _resolve_steps(seg, duration)
+    resolved = {"kind": seg.kind, "duration": duration, "steps": steps}
+    zeros = np.zeros((n, 2))
+    plan = _ConstantPlan(
+        seg.kind, n, steps, duration / steps, zeros, np.zeros(n), resolved, hold=True
+    )
+    return plan, ctx
+
+
 # --------------------------------------------------------------------------- segments
-@dataclass(frozen=True)
-class Slide:
-    """Slide at ``velocity`` for a ``distance`` or a ``duration`` (exactly one of them).
-
-    ``direction_deg`` is the sliding direction in the contact plane, counter-clockwise
-    from e_1; when omitted the current direction is kept (initially 0). The normal
-    approach is held, so the normal traction stays constant (no plastic normal sliding,
-    Eq 32). Steps: ``steps`` equal steps, or as many as needed for ``max_step`` [m] of
-    slip per step; default 100.
-    """
-
-    velocity: Any
-    distance: Any = None
-    duration: Any = None
-    direction_deg: Any = None
-    steps: int | None = None
-    max_step: float | None = None
-    kind: ClassVar[str] = "slide"
-    default_steps: ClassVar[int] = 100
-
-    def __post_init__(self) -> None:
-        _one_of("slide length", distance=self.distance, duration=self.duration)
-        object.__setattr__(self, "velocity", _checked("velocity", self.velocity, ">0"))
-        object.__setattr__(self, "distance", _optional("distance", self.distance, ">0"))
-        object.__setattr__(self, "duration", _optional("duration", self.duration, ">0"))
-        object.__setattr__(
-            self, "direction_deg", _optional("direction_deg", self.direction_deg, None)
-        )
-        _check_steps(self)
-
-    def sizes(self) -> set[int]:
-        return _sizes(self.velocity, self.distance, self.duration, self.direction_deg)
-
-    def plan(self, ctx: PlanContext) -> tuple[SegmentPlan, PlanContext]:
-        n = ctx.n_points
-        theta = (
-            ctx.direction if self.direction_deg is None else np.radians(_vec(self.direction_deg, n))
-        )
-        velocity = _vec(self.velocity, n)
-        distance = (
-            _vec(self.distance, n)
-            if self.distance is not None
-            else velocity * _vec(self.duration, n)
-        )
-        steps = _resolve_steps(self, distance)
-        return _slide_plan(self.kind, ctx, _vec(theta, n), velocity, distance, steps, {})
-
-
-@dataclass(frozen=True)
-class Reverse:
-    """Slide back: along the opposite of the current direction (which it then becomes).
-
-    ``velocity`` and ``distance`` default to those of the preceding sliding segment
-    (so ``Slide`` then ``Reverse`` returns to the start); give ``duration`` instead of
-    ``distance`` to slide for a time.
-    """
-
-    velocity: Any = None
-    distance: Any = None
-    duration: Any = None
-    steps: int | None = None
-    max_step: float | None = None
-    kind: ClassVar[str] = "reverse"
-    default_steps: ClassVar[int] = 100
-
-    def __post_init__(self) -> None:
-        _init_inherited(self)
-
-    def sizes(self) -> set[int]:
-        return _sizes(self.velocity, self.distance, self.duration)
-
-    def plan(self, ctx: PlanContext) -> tuple[SegmentPlan, PlanContext]:
-        velocity, distance = _inherit(self, ctx)
-        theta = ctx.direction + math.pi
-        steps = _resolve_steps(self, distance)
-        return _slide_plan(self.kind, ctx, theta, velocity, distance, steps, {})
-
-
 @dataclass(frozen=True)
 class Turn:
     """Turn the sliding direction by ``angle_deg`` (counter-clockwise) and slide on.
@@ -502,39 +411,6 @@ class _CyclePlan(SegmentPlan):
     def control(self, k: int) -> Control:
         q = (k // self.quarter) % 4  # quarters of a cycle: +, -, -, +
         return self._forward if q in (0, 3) else self._backward
-
-
-@dataclass(frozen=True)
-class Hold:
-    """Stop: zero sliding velocity for ``duration`` [s] (the traction is held, F recovers).
-
-    The recovery is integrated exactly (no stability limit), so one step (the default) is
-    exact at the end; more steps give intermediate values.
-    """
-
-    duration: Any
-    steps: int | None = None
-    max_step: float | None = None
-    kind: ClassVar[str] = "hold"
-    default_steps: ClassVar[int] = 1
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "duration", _checked("duration", self.duration, ">=0"))
-        _check_steps(self)
-
-    def sizes(self) -> set[int]:
-        return _sizes(self.duration)
-
-    def plan(self, ctx: PlanContext) -> tuple[SegmentPlan, PlanContext]:
-        n = ctx.n_points
-        duration = _vec(self.duration, n)
-        steps = _resolve_steps(self, duration)
-        resolved = {"kind": self.kind, "duration": duration, "steps": steps}
-        zeros = np.zeros((n, 2))
-        plan = _ConstantPlan(
-            self.kind, n, steps, duration / steps, zeros, np.zeros(n), resolved, hold=True
-        )
-        return plan, ctx
 
 
 @dataclass(frozen=True)
@@ -812,28 +688,11 @@ class _TablePlan(SegmentPlan):
 
 
 # --------------------------------------------------------------------------- shared helpers
-def _check_steps(seg: Any) -> None:
-    _steps("steps", seg.steps)
-    _max_step(seg.max_step)
-    if seg.steps is not None and seg.max_step is not None:
-        raise ParameterError("steps", seg.steps, "steps or max_step, not both")
-
-
 def _resolve_steps(seg: Any, extent: np.ndarray) -> int:
     if seg.max_step is not None:
         return _count(extent, seg.max_step)
-    return int(seg.steps or seg.default_steps)
-
-
-def _init_inherited(seg: Any) -> None:
-    if seg.distance is not None and seg.duration is not None:
-        raise ParameterError(
-            seg.kind, "distance and duration", "at most one of distance or duration"
-        )
-    object.__setattr__(seg, "velocity", _optional("velocity", seg.velocity, ">0"))
-    object.__setattr__(seg, "distance", _optional("distance", seg.distance, ">0"))
-    object.__setattr__(seg, "duration", _optional("duration", seg.duration, ">0"))
-    _check_steps(seg)
+    default = DEFAULT_STEPS.get(seg.kind) or seg.default_steps
+    return int(seg.steps or default)
 
 
 def _inherit(seg: Any, ctx: PlanContext) -> tuple[np.ndarray, np.ndarray]:
@@ -904,13 +763,23 @@ def plan_program(program: Sequence[Segment], n_points: int) -> list[SegmentPlan]
                 f"{n_points} (one per point) or a scalar",
             )
         try:
-            plan, ctx = seg.plan(ctx)
+            plan, ctx = _plan(seg, ctx)
         except ParameterError as exc:
             raise ParameterError(
                 f"segment #{i} ({seg.kind}) {exc.field}", exc.value, exc.allowed
             ) from None
         plans.append(plan)
     return plans
+
+
+def _plan(seg: Segment, ctx: PlanContext) -> tuple[SegmentPlan, PlanContext]:
+    if isinstance(seg, Slide):
+        return _plan_slide(seg, ctx)
+    if isinstance(seg, Reverse):
+        return _plan_reverse(seg, ctx)
+    if isinstance(seg, Hold):
+        return _plan_hold(seg, ctx)
+    return seg.plan(ctx)
 
 
 def segment_fields(seg: Segment) -> dict[str, Any]:

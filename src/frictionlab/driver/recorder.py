@@ -315,7 +315,10 @@ class Recorder:
         s.steps += 1
         seg.last_step = s.steps
         ratio = np.empty(s.time.shape[0])
-        dts = np.atleast_1d(np.asarray(dt, dtype=np.float64))
+        if type(dt) is np.ndarray and dt.ndim == 1 and dt.dtype == np.float64:
+            dts = dt  # the driver's (N,) increments: no conversion
+        else:
+            dts = np.atleast_1d(np.asarray(dt, dtype=np.float64))
         k = self._seg_k
         self._seg_k = k + 1
         self.state = state

@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from frictionlab.driver import stepping
 from frictionlab.driver.extrema import (
     DEFAULT_PEAK_ACCURACY,
     PeakTracker,
@@ -519,6 +520,7 @@ def simulate(
     )  # fmt: skip
     success, message = True, f"completed {len(plans)} segments"
     pool = OutputPool(n)
+    direct = stepping.slip_steps(params, pool, accuracy)
     tracker = None if peak_accuracy is None else PeakTracker(n)
     refined: list[RefinedPeaks] = []
     for index, plan in enumerate(plans, start=1):
@@ -535,6 +537,25 @@ def simulate(
         last = steps - 1
         for k in range(steps):
             control = plan.control(k)
+            quick = None
+            if direct is not None and control.ft_target is None and control.fn_target is None:
+                quick = direct.step(state, control)
+            if quick is not None:  # one solve, no substeps: advance's result, cheaper
+                before, (state, du) = state, quick
+                out = pool.sets[0] if state.traction is pool.sets[0]["traction"] else pool.sets[1]
+                iterations = out["iterations"].astype(np.int64)
+                work["steps"] += 1
+                work["substeps"] += 1
+                work["solves"] += 1
+                work["iterations"] += sum(iterations.tolist()) if n <= 16 else int(iterations.sum())
+                rose = rec.add(state, control.dt, du, out["diss"], out["status"], 1, 1,
+                               iterations, k == last)  # fmt: skip
+                if rose and tracker is not None:
+                    tracker.observe(k, before, state, control, rec.stats.time, rec.stats.slip,
+                                    rec.stats.path_length)  # fmt: skip
+                if progress is not None:
+                    progress(work["steps"], total)
+                continue
             outcome, w = advance(
                 params, state, control, accuracy=accuracy, max_halvings=max_halvings, pool=pool
             )

@@ -32,7 +32,6 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy.optimize import brentq
 
 from frictionlab.driver.program import _checked, _count, _max_step, _steps
 from frictionlab.driver.simulate import (
@@ -489,6 +488,8 @@ def steady_F(params: SubloadingParams, velocity: Any) -> np.ndarray:
     m, nn, V = vec(params.m), vec(params.n), vec(V)
     if params.recovery_form == "one_minus" and np.all(m == 1.0) and np.all(nn == 1.0):
         return np.asarray(steady_size(V, kappa, xi, Fs, Fk), dtype=np.float64)  # type: ignore[arg-type]
+    from scipy.optimize import brentq  # here: importing SciPy's optimisers costs every run ~0.3 s
+
     out = np.empty(n)
     for i in range(n):
         if kappa[i] * V[i] == 0.0 or Fk[i] == Fs[i]:

@@ -28,14 +28,23 @@ from frictionlab.subloading import (
     update,
 )
 from frictionlab.subloading.kernels import SEPARATION_RTOL
-from frictionlab.subloading.return_map import _update_into
+from frictionlab.subloading.return_map import (
+    PARALLEL_MIN_POINTS,
+    _keep_old_state,
+    _update_into,
+    kernel_inputs,
+    kernel_outputs,
+    kernel_settings,
+)
 
 __all__ = [
     "Attempt",
     "OutputPool",
+    "SlipSteps",
     "StepWork",
     "advance",
     "combine_attempts",
+    "slip_steps",
     "solve_control",
     "step_error",
     "substep",
@@ -46,6 +55,8 @@ assert max(int(s) for s in Status) == _FAILED  # a status at or above it means a
 #: The law's own update, the one known to write into preallocated outputs (``out``).
 _LAW_UPDATE = update
 
+#: Up to this many points, small reductions run on Python lists (cheaper than NumPy's call).
+_FEW = 16
 #: Newton iterations of the tangential traction control, per (sub)step.
 MAX_TRACTION_ITERATIONS = 60
 #: Relative tolerance of the traction control: |f_t - target| <= TOL * max(f_n, |target|).
@@ -161,6 +172,83 @@ class OutputPool:
     def holds(self, state: ContactState) -> bool:
         """True when ``state`` lies in one of the sets (to be copied before it is kept)."""
         return any(state.traction is s["traction"] for s in self.sets)
+
+
+class SlipSteps:
+    """Slip-controlled steps without step doubling, straight to the law's kernel.
+
+    The cheap path of :func:`advance` for the common step (no prescribed traction, no
+    ``accuracy``): one kernel call into the pool's free set of buffers, with the kernel's
+    settings and the output buffers prepared once per run and the new state one fixed view
+    per set. :meth:`step` gives the same state, increment, work and status as
+    :func:`advance` (same kernel call on the same inputs), or None when a point failed: the
+    caller then runs :func:`advance`, which substeps (its first solve repeats this one).
+    """
+
+    def __init__(self, params: SubloadingParams, pool: OutputPool) -> None:
+        n = pool.sets[0]["traction"].shape[0]
+        self.pool = pool
+        self.kernel: Callable[..., Any] = (
+            kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
+        )
+        self.settings = {shared: kernel_settings(params, shared, False) for shared in (True, False)}
+        self.outputs = tuple(kernel_outputs(s) for s in pool.sets)
+        self.views: list[ContactState | None] = [None, None]
+        # the kernel's inputs per state (the state first, to check the id)
+        self._inputs: dict[int, tuple[Any, ...]] = {}
+
+    def step(self, state: ContactState, control: Control) -> tuple[ContactState, np.ndarray] | None:
+        """The new state and the (read-only) slip increment; None when a point failed.
+
+        The state lies in the pool's set that did not hold ``state``; the outputs of the
+        law (``diss``, ``status``, ``iterations``) are that set's buffers.
+        """
+        sets = self.pool.sets
+        j = 1 if state.traction is sets[0]["traction"] else 0
+        inputs = self._inputs.get(id(state))
+        if inputs is None or inputs[0] is not state:
+            if len(self._inputs) > 2:  # the two views and the latest other state
+                self._inputs = {
+                    id(v): self._inputs[id(v)] for v in self.views if id(v) in self._inputs
+                }
+            inputs = (state, *kernel_inputs(state))
+            self._inputs[id(state)] = inputs
+        kernel_du, du = control._slip_increment(state.traction.shape[0])
+        dt = control.dt
+        if dt.dtype != np.float64 or dt.ndim != 1 or not dt.flags.c_contiguous:
+            dt = np.ascontiguousarray(np.atleast_1d(dt), dtype=np.float64)
+        out = sets[j]
+        try:
+            self.kernel(
+                *inputs[1:], kernel_du, dt, *self.settings[dt.shape[0] == 1], *self.outputs[j]
+            )
+        except ArithmeticError:  # as update(): no result, a failed step
+            _keep_old_state(state, out)
+            return None
+        status = out["status"]
+        # a few points: the Python max of a list beats a NumPy reduction's call overhead
+        worst = max(status.tolist()) if status.shape[0] <= _FEW else int(status.max())
+        if worst >= _FAILED:
+            return None
+        np.add(state.plastic_slip, out["dlam"], out=out["plastic_slip"])
+        view = self.views[j]
+        if view is None or view.frame is not state.frame:
+            view = ContactState._views(
+                traction=out["traction"], F=out["F"], R=out["R"],
+                plastic_slip=out["plastic_slip"], gap=out["gap"], frame=state.frame,
+            )  # fmt: skip
+            self.views[j] = view
+        return view, du
+
+
+def slip_steps(
+    params: SubloadingParams, pool: OutputPool, accuracy: float | None
+) -> SlipSteps | None:
+    """:class:`SlipSteps` where they give :func:`advance`'s result: no accuracy control and
+    the law's own ``update`` (not a replacement of it, e.g. a test's); else None."""
+    if accuracy is not None or update is not _LAW_UPDATE:
+        return None
+    return SlipSteps(params, pool)
 
 
 class _LawStep:

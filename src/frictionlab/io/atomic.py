@@ -15,7 +15,13 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-__all__ = ["atomic_path", "write_bytes_atomic", "write_json_atomic", "write_text_atomic"]
+__all__ = [
+    "atomic_path",
+    "write_bytes_atomic",
+    "write_contents_atomic",
+    "write_json_atomic",
+    "write_text_atomic",
+]
 
 
 def _file_mode() -> int:
@@ -66,6 +72,20 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> Path:
 def write_text_atomic(path: str | os.PathLike[str], text: str) -> Path:
     """Write UTF-8 ``text`` to ``path`` atomically and return the path."""
     return write_bytes_atomic(path, text.encode("utf-8"))
+
+
+def write_contents_atomic(
+    folder: str | os.PathLike[str], contents: dict[str, str | bytes]
+) -> list[Path]:
+    """Write each ``name -> text or bytes`` of ``contents`` atomically into ``folder``, in
+    order; return the paths."""
+    out = Path(folder)
+    return [
+        write_bytes_atomic(out / name, data)
+        if isinstance(data, bytes)
+        else write_text_atomic(out / name, data)
+        for name, data in contents.items()
+    ]
 
 
 def write_json_atomic(path: str | os.PathLike[str], obj: Any) -> Path:

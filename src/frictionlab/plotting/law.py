@@ -115,6 +115,21 @@ def _note_subset(ax: Axes, n: int, shown: np.ndarray) -> bool:
     return True
 
 
+def _point_styles(
+    fig: Figure, axes: list[Axes], note_ax: Axes, history: Any, labels: Sequence[str]
+) -> tuple[list[str | None], list[Any], np.ndarray, bool]:
+    """Legend names, colours and the points shown of a per-point figure; notes a subset on
+    ``note_ax`` and adds the point-number colour bar to ``axes`` (many points)."""
+    n = history.n_points
+    names = _labels(labels, n)
+    colors = _colors(n, history.point_numbers)
+    shown_idx = shown_points(n)
+    names = _legend_names(names, shown_idx)
+    subset = _note_subset(note_ax, n, shown_idx)
+    _point_colorbar(fig, axes, history.point_numbers, shown_idx)
+    return names, colors, shown_idx, subset
+
+
 def _log_time(t: np.ndarray) -> bool:
     """A logarithmic time axis when the run spans many decades (long holds, slow slides)."""
     positive = t[t > 0]
@@ -134,7 +149,6 @@ def plot_friction(
         fig, (ax_s, ax_t) = new_figure(2, 5.5, 4.0)
     else:
         ax_s, ax_t = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
-    n = history.n_points
     planar = history.is_planar
     fn = history.traction[..., 2]
     ratio = (
@@ -143,13 +157,8 @@ def plot_friction(
         else history.friction_ratio
     )
     x = history.slip[..., 0] if planar else history.path_length
-    names = _labels(labels, n)
-    colors = _colors(n, history.point_numbers)
     log_time = _log_time(history.time)
-    shown_idx = shown_points(n)
-    names = _legend_names(names, shown_idx)
-    subset = _note_subset(ax_t, n, shown_idx)
-    _point_colorbar(fig, [ax_s, ax_t], history.point_numbers, shown_idx)
+    names, colors, shown_idx, subset = _point_styles(fig, [ax_s, ax_t], ax_t, history, labels)
     for i in shown_idx:
         ax_s.plot(x[:, i], ratio[:, i], color=colors[i], lw=1.2, label=names[i])
         shown = history.time[:, i] > 0 if log_time else slice(None)
@@ -260,13 +269,8 @@ def plot_spring_slider(
     load = history.extra["load_point"]
     speed = history.extra["velocity"]
     V = np.asarray(history.segments[0].resolved["velocity"]) if history.segments else np.ones(n)
-    names = _labels(labels, n)
-    colors = _colors(n, history.point_numbers)
     ratio = history.friction_ratio
-    shown_idx = shown_points(n)
-    names = _legend_names(names, shown_idx)
-    subset = _note_subset(ax_f, n, shown_idx)
-    _point_colorbar(fig, [ax_f, ax_v], history.point_numbers, shown_idx)
+    names, colors, shown_idx, subset = _point_styles(fig, [ax_f, ax_v], ax_f, history, labels)
     for i in shown_idx:
         ax_f.plot(load[:, i], ratio[:, i], color=colors[i], lw=1.0, label=names[i])
         rel = np.abs(speed[:, i]) / (V[i] if V[i] > 0 else 1.0)
@@ -282,6 +286,18 @@ def plot_spring_slider(
         ax_f.legend(fontsize=8, loc="best")
     readable_log_ticks(fig)
     return fig
+
+
+def _log_x_finish(ax: Axes, xlabel: str, ylabel: str) -> Axes:
+    """Log x axis, labels, grid, legend and readable log ticks: the end of the law's
+    log-x figures."""
+    ax.set_xscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    readable_log_ticks(ax.figure)
+    return ax
 
 
 def plot_steady_friction(
@@ -300,13 +316,7 @@ def plot_steady_friction(
     if bounds is not None:
         ax.axhline(bounds[0], color="0.6", ls=":", lw=1.0, label="mu_k")
         ax.axhline(bounds[1], color="0.6", ls="--", lw=1.0, label="mu_s")
-    ax.set_xscale("log")
-    ax.set_xlabel("sliding velocity V [m/s]")
-    ax.set_ylabel("steady friction ratio [-]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
-    readable_log_ticks(ax.figure)
-    return ax
+    return _log_x_finish(ax, "sliding velocity V [m/s]", "steady friction ratio [-]")
 
 
 def plot_restart_peaks(
@@ -327,13 +337,7 @@ def plot_restart_peaks(
     ax.plot(hold_time, recovered, "s", color="C0", mfc="white", label="mu at the end of the hold")
     ax.plot(hold_time, peak, "o", color="C3", label="restart peak of |f_t|/f_n")
     ax.axhline(mu_s, color="0.6", ls="--", lw=1.0, label="mu_s")
-    ax.set_xscale("log")
-    ax.set_xlabel("hold time t_h [s]")
-    ax.set_ylabel("friction ratio [-]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
-    readable_log_ticks(ax.figure)
-    return ax
+    return _log_x_finish(ax, "hold time t_h [s]", "friction ratio [-]")
 
 
 def plot_healing(
@@ -372,13 +376,7 @@ def plot_healing(
         t = np.geomspace(hold_time[hold_time > 0].min() / 3, hold_time.max() * 3, 80)
         ax.plot(t, a - (a - mu_0) * np.exp(-t / tau) - before, "--", color="C0", lw=1.2,
                 label=f"law's recovery form: tau = {tau:.3g} s")  # fmt: skip
-    ax.set_xscale("log")
-    ax.set_xlabel("hold time t_h [s]")
-    ax.set_ylabel("delta mu = restart peak - friction before [-]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
-    readable_log_ticks(ax.figure)
-    return ax
+    return _log_x_finish(ax, "hold time t_h [s]", "delta mu = restart peak - friction before [-]")
 
 
 def plot_ratcheting(

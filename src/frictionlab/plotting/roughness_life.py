@@ -46,6 +46,22 @@ def _defined(x: np.ndarray, y: np.ma.MaskedArray | np.ndarray) -> tuple[np.ndarr
     return np.asarray(x)[~mask], np.asarray(np.ma.getdata(y))[~mask]
 
 
+def _finish(ax: Axes, xlabel: str, ylabel: str, title: str) -> Axes:
+    """Labels, a small title, grid and legend: the end of every panel of this module."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=9)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    return ax
+
+
+def _titled(fig: Figure, title: str | None) -> Figure:
+    if title:
+        fig.suptitle(title, fontsize=10)
+    return fig
+
+
 def plot_adhesion_mu(
     sweep: AdhesionSweep, *, ax: Axes | None = None, label: str = "", limit: float = 6.0
 ) -> Axes:
@@ -67,12 +83,12 @@ def plot_adhesion_mu(
     ax.axvline(0.0, color="0.6", lw=0.8)
     ax.axhline(0.0, color="0.6", lw=0.8)
     ax.set_ylim(-limit, limit)
-    ax.set_xlabel("normal load per spring L (N)")
-    ax.set_ylabel("mu_a / mu0 (Eq 22); dashed: k_t = 0")
-    ax.set_title("apparent friction coefficient (undefined at L = 0)", fontsize=9)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    return ax
+    return _finish(
+        ax,
+        "normal load per spring L (N)",
+        "mu_a / mu0 (Eq 22); dashed: k_t = 0",
+        "apparent friction coefficient (undefined at L = 0)",
+    )
 
 
 def plot_adhesion_force(sweep: AdhesionSweep, *, ax: Axes | None = None, label: str = "") -> Axes:
@@ -88,12 +104,12 @@ def plot_adhesion_force(sweep: AdhesionSweep, *, ax: Axes | None = None, label: 
             label=f"{label}beta = {beta:g} deg",
         )
     ax.axvline(0.0, color="0.6", lw=0.8)
-    ax.set_xlabel("normal load per spring L (N)")
-    ax.set_ylabel("tangential force per spring (N)")
-    ax.set_title("friction force of the compressed springs", fontsize=9)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    return ax
+    return _finish(
+        ax,
+        "normal load per spring L (N)",
+        "tangential force per spring (N)",
+        "friction force of the compressed springs",
+    )
 
 
 def plot_tensile_fraction(sweep: AdhesionSweep, *, ax: Axes | None = None, label: str = "") -> Axes:
@@ -112,12 +128,12 @@ def plot_tensile_fraction(sweep: AdhesionSweep, *, ax: Axes | None = None, label
             sweep.load[order], sweep.tensile_fraction_max[order, k], ":", color=line.get_color()
         )
     ax.set_ylim(-0.02, 1.02)
-    ax.set_xlabel("normal load per spring L (N)")
-    ax.set_ylabel("fraction of stretched springs")
-    ax.set_title("stretched springs over one period (mean; dotted: max)", fontsize=9)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    return ax
+    return _finish(
+        ax,
+        "normal load per spring L (N)",
+        "fraction of stretched springs",
+        "stretched springs over one period (mean; dotted: max)",
+    )
 
 
 def adhesion_figure(sweep: AdhesionSweep, title: str | None = None) -> Figure:
@@ -126,9 +142,7 @@ def adhesion_figure(sweep: AdhesionSweep, title: str | None = None) -> Figure:
     plot_adhesion_mu(sweep, ax=fig.add_subplot(1, 3, 1))
     plot_adhesion_force(sweep, ax=fig.add_subplot(1, 3, 2))
     plot_tensile_fraction(sweep, ax=fig.add_subplot(1, 3, 3))
-    if title:
-        fig.suptitle(title, fontsize=10)
-    return fig
+    return _titled(fig, title)
 
 
 def plot_wear(history: WearHistory, *, ax: Axes | None = None, label: str = "") -> Axes:
@@ -139,20 +153,18 @@ def plot_wear(history: WearHistory, *, ax: Axes | None = None, label: str = "") 
     for k, beta in enumerate(history.beta_deg):
         ax.plot(x, history.mu[:, k] / history.mu0, marker=".", label=f"{label}beta = {beta:g} deg")
     ax.axhline(1.0, color="0.6", lw=0.8)
-    ax.set_xlabel(f"t / T_w (T_w = {history.wear_time:.4g} s)")
-    ax.set_ylabel("mu / mu0")
-    ax.set_title(f"Archard wear ({history.wear.surfaces} surfaces wear)", fontsize=9)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    return ax
+    return _finish(
+        ax,
+        f"t / T_w (T_w = {history.wear_time:.4g} s)",
+        "mu / mu0",
+        f"Archard wear ({history.wear.surfaces} surfaces wear)",
+    )
 
 
 def wear_figure(history: WearHistory, title: str | None = None) -> Figure:
     fig = new_figure(6.5, 4.5)
     plot_wear(history, ax=fig.add_subplot())
-    if title:
-        fig.suptitle(title, fontsize=10)
-    return fig
+    return _titled(fig, title)
 
 
 def plot_hierarchy(result: HierarchyResult, *, ax: Axes | None = None, label: str = "") -> Axes:
@@ -179,9 +191,7 @@ def plot_hierarchy(result: HierarchyResult, *, ax: Axes | None = None, label: st
 def hierarchy_figure(result: HierarchyResult, title: str | None = None) -> Figure:
     fig = new_figure(6.5, 4.5)
     plot_hierarchy(result, ax=fig.add_subplot())
-    if title:
-        fig.suptitle(title, fontsize=10)
-    return fig
+    return _titled(fig, title)
 
 
 def plot_hierarchy_wear(
@@ -200,8 +210,8 @@ def plot_hierarchy_wear(
     for i in range(1, history.n_levels + 1):
         ax.axvline(i, color="0.6", lw=0.8, ls=":")
     ax.set_xlabel("worn levels (level i flat at i; windows T_w,i of Eq 35)")
-    ax.set_ylabel("mu_i / mu0")
     beta = history.beta_deg[beta_index]
+    ax.set_ylabel("mu_i / mu0")
     ax.set_title(f"hierarchy with wear, beta = {beta:g} deg (innermost level first)", fontsize=9)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7)
@@ -213,9 +223,7 @@ def hierarchy_wear_figure(history: HierarchyWearHistory, title: str | None = Non
     fig = new_figure(6.0 * min(count, 3), 4.5)
     for k in range(min(count, 3)):
         plot_hierarchy_wear(history, ax=fig.add_subplot(1, min(count, 3), k + 1), beta_index=k)
-    if title:
-        fig.suptitle(title, fontsize=10)
-    return fig
+    return _titled(fig, title)
 
 
 # --------------------------------------------------------------- figure families 10-14

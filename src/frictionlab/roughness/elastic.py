@@ -55,6 +55,7 @@ from frictionlab.roughness.lattice import (
     polar_head_columns,
 )
 from frictionlab.roughness.surface import Surface
+from frictionlab.roughness.validity import check_on_invalid
 
 __all__ = [
     "ContactState",
@@ -66,8 +67,6 @@ __all__ = [
 ]
 
 FloatArray = NDArray[np.float64]
-
-ON_INVALID = ("raise", "mask", "drop")
 
 
 def _positive(name: str, value: Any, what: str) -> float:
@@ -109,7 +108,7 @@ class ElasticSettings:
     mu_definition:
         ``"magnitude"`` (default) or ``"projection"``, as the lattice.
     on_invalid:
-        ``"raise"`` (default), ``"mask"`` or ``"drop"``: a contact violating Eq 1's bound,
+        ``"error"`` (default), ``"drop"`` or ``"mask"``: a contact violating Eq 1's bound,
         as the lattice.
     """
 
@@ -121,7 +120,7 @@ class ElasticSettings:
     tolerance: float = 1e-4
     max_iterations: int = 5000
     mu_definition: str = "magnitude"
-    on_invalid: str = "raise"
+    on_invalid: str = "error"
 
     def __post_init__(self) -> None:
         object.__setattr__(
@@ -169,8 +168,7 @@ class ElasticSettings:
             raise ParameterError("max_iterations", self.max_iterations, "an integer >= 1")
         if self.mu_definition not in MU_DEFINITIONS:
             raise ParameterError("mu_definition", self.mu_definition, f"one of {MU_DEFINITIONS}")
-        if self.on_invalid not in ON_INVALID:
-            raise ParameterError("on_invalid", self.on_invalid, f"one of {ON_INVALID}")
+        object.__setattr__(self, "on_invalid", check_on_invalid(self.on_invalid))
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready dictionary of the settings."""
@@ -565,7 +563,7 @@ def _polar(
                     first_bad[d] = _invalid_message(
                         mu0, float(betas[d]), geometry, idx, invalid1, invalid2, shift
                     )
-                if settings.on_invalid == "raise":
+                if settings.on_invalid == "error":
                     raise ValidityError(first_bad[d])
             # invalid contacts have multipliers 0; "drop" also leaves their load out
             x_sum[d] += float(h1x @ p + h2x @ p)

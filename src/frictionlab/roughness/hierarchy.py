@@ -22,7 +22,7 @@ dissipative ``mu_x cos(beta) + mu_y sin(beta)``). Every level slides along the s
   closed forms (Eqs 15-16) at any beta.
 * **Validity**: Eq 1's bound must hold with mu_{i-1} at every level. A violation
   raises a :class:`~frictionlab.errors.ValidityError` naming the level (``on_invalid=
-  "raise"``, default) or masks that level and all above it for that direction
+  "error"``, default) or masks that level and all above it for that direction
   (``"mask"``); nothing is clipped.
 * **Hierarchy with wear** (:func:`hierarchy_wear`): the innermost level wears first
   (Archard, :mod:`~frictionlab.roughness.wear`); level i wears during its own window of
@@ -51,6 +51,7 @@ from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import scaled
 from frictionlab.roughness.lattice import LatticeSettings, check_betas, friction_polar
 from frictionlab.roughness.surface import Surface
+from frictionlab.roughness.validity import check_on_invalid
 from frictionlab.roughness.wear import WearSettings, pair_volume, wear_time, worn_pair
 
 __all__ = [
@@ -69,7 +70,7 @@ FloatArray = NDArray[np.float64]
 
 #: The scalar passed to the next level; the first is the default.
 MU_PASSED = ("magnitude", "projection")
-ON_INVALID = ("raise", "mask")
+ON_INVALID = ("error", "mask")
 
 
 @dataclass(frozen=True)
@@ -215,14 +216,12 @@ def _cos_sin(beta_deg: float) -> tuple[float, float]:
     return math.cos(math.radians(b)), math.sin(math.radians(b))
 
 
-def _check_options(mu0: float, mu_passed: str, on_invalid: str) -> float:
+def _check_options(mu0: float, mu_passed: str, on_invalid: str) -> tuple[float, str]:
     if not (isinstance(mu0, int | float) and math.isfinite(mu0) and mu0 >= 0.0):
         raise ParameterError("mu0", mu0, "a finite local coefficient >= 0")
     if mu_passed not in MU_PASSED:
         raise ParameterError("mu_passed", mu_passed, f"one of {MU_PASSED}")
-    if on_invalid not in ON_INVALID:
-        raise ParameterError("on_invalid", on_invalid, f"one of {ON_INVALID}")
-    return float(mu0)
+    return float(mu0), check_on_invalid(on_invalid, ON_INVALID)
 
 
 def _recursion(
@@ -251,7 +250,7 @@ def _recursion(
                     f"hierarchy level {i} of {n} (local coefficient mu_{i - 1} = {m:.6g}, "
                     f"beta = {beta:g} deg) leaves the validity domain: {problem}"
                 )
-                if on_invalid == "raise":
+                if on_invalid == "error":
                     raise ValidityError(text)
                 messages.append(text)
                 valid[i:, k] = False
@@ -298,7 +297,7 @@ def hierarchy_friction(
     beta_deg: ArrayLike,
     *,
     mu_passed: str = "magnitude",
-    on_invalid: str = "raise",
+    on_invalid: str = "error",
     settings: LatticeSettings | None = None,
     check: bool = True,
 ) -> HierarchyResult:
@@ -316,12 +315,13 @@ def hierarchy_friction(
     mu_passed:
         ``"magnitude"`` (default) or ``"projection"``.
     on_invalid:
-        ``"raise"`` (default; ValidityError naming the level) or ``"mask"``.
+        ``"error"`` (default; ValidityError naming the level) or ``"mask"`` (the old
+        spelling ``"raise"`` warns).
     settings:
         Lattice settings of every level (default: full contact, default resolution);
         their ``on_invalid`` is superseded by this function's.
     """
-    m0 = _check_options(mu0, mu_passed, on_invalid)
+    m0, on_invalid = _check_options(mu0, mu_passed, on_invalid)
     seq = _as_levels(levels)
     if check:
         check_nested(seq)
@@ -337,7 +337,7 @@ def wedge_hierarchy(
     n: int,
     *,
     mu_passed: str = "magnitude",
-    on_invalid: str = "raise",
+    on_invalid: str = "error",
 ) -> HierarchyResult:
     """n self-similar levels of wedge profiles by the closed forms (Eqs 15-16 iterated).
 
@@ -346,7 +346,7 @@ def wedge_hierarchy(
     self-similar). At beta = 90 deg the symmetric cases reproduce Eqs 33-34; at beta = 0
     there is no closed form and the recursion can leave the validity domain.
     """
-    m0 = _check_options(mu0, mu_passed, on_invalid)
+    m0, on_invalid = _check_options(mu0, mu_passed, on_invalid)
     if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 0:
         raise ParameterError("n", n, "an integer number of levels >= 0")
     angles = np.asarray(angles_deg, dtype=np.float64)
@@ -449,7 +449,7 @@ def hierarchy_wear(
     (s), or ``samples_per_level`` (>= 2) equally spaced points per window (windows share
     their end points).
     """
-    m0 = _check_options(mu0, mu_passed, "raise")
+    m0, _ = _check_options(mu0, mu_passed, "error")
     seq = _as_levels(levels)
     check_nested(seq)
     betas = check_betas(beta_deg)

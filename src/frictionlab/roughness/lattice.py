@@ -25,8 +25,9 @@ never friction), ``stations`` (2000 per shortest period in 1-D, 64 x 64 per shor
 periods in 2-D; sampled surfaces: their own grid), ``time_samples`` = 400 per relative
 period, ``travel`` (``"auto"``: exact return when the direction is commensurate, else
 the ergodic average over all relative shifts), ``phase`` = in phase, ``on_invalid`` =
-``"raise"`` (a :class:`~frictionlab.errors.ValidityError` when a compressed contact
-violates Eq 1's bound), ``"mask"`` or ``"drop"``; ``engine`` = ``"numba"`` or ``"numpy"``;
+``"error"`` (a :class:`~frictionlab.errors.ValidityError` when a compressed contact
+violates Eq 1's bound), ``"drop"`` or ``"mask"`` (one vocabulary:
+:mod:`~frictionlab.roughness.validity`); ``engine`` = ``"numba"`` or ``"numpy"``;
 ``full_contact`` = ``"average"`` (``load="full"`` as the direct area average of
 :mod:`frictionlab.roughness.full_contact`, no time sampling) or ``"lattice"``;
 ``snap_time_samples`` = True (return paths use whole-station shifts).
@@ -52,6 +53,7 @@ from frictionlab.roughness import _kernels
 from frictionlab.roughness.closed_forms import max_mu0
 from frictionlab.roughness.full_contact import full_contact_sums
 from frictionlab.roughness.surface import HeightMap, Surface
+from frictionlab.roughness.validity import check_on_invalid
 
 __all__ = [
     "MU_DEFINITIONS",
@@ -80,7 +82,6 @@ MU_DEFINITIONS = ("magnitude", "projection")
 CONTROLS = ("load", "separation")
 TRAVEL_MODES = ("auto", "return", "ergodic")
 ENGINES = ("numba", "numpy")
-ON_INVALID = ("raise", "mask", "drop")
 FULL_CONTACT_METHODS = ("average", "lattice")
 
 
@@ -145,9 +146,10 @@ class LatticeSettings:
     mu_definition:
         ``"magnitude"`` (default) or ``"projection"``.
     on_invalid:
-        ``"raise"`` (default): a ValidityError when a compressed contact violates Eq 1's
-        bound (raised at the first offending time sample); ``"mask"``: that direction gets
-        ``valid = False`` and NaN coefficients; ``"drop"``: the offending contacts are left
+        ``"error"`` (default; the old spelling ``"raise"`` warns): a ValidityError when a
+        compressed contact violates Eq 1's bound (raised at the first offending time
+        sample); ``"mask"``: that direction gets ``valid = False`` and NaN coefficients;
+        ``"drop"``: the offending contacts are left
         out (they carry neither load nor friction in the averages, the load balance still
         counts their springs) and their fraction of all 2 N contacts, averaged over the
         time samples, is reported per direction (``invalid_fraction``).
@@ -188,7 +190,7 @@ class LatticeSettings:
     max_return_periods: int = 8
     phase: tuple[float, float] = (0.0, 0.0)
     mu_definition: str = "magnitude"
-    on_invalid: str = "raise"
+    on_invalid: str = "error"
     engine: str = "numba"
     full_contact: str = "average"
     snap_time_samples: bool = True
@@ -260,8 +262,7 @@ class LatticeSettings:
         object.__setattr__(self, "phase", (float(px), float(py)))
         if self.mu_definition not in MU_DEFINITIONS:
             raise ParameterError("mu_definition", self.mu_definition, f"one of {MU_DEFINITIONS}")
-        if self.on_invalid not in ON_INVALID:
-            raise ParameterError("on_invalid", self.on_invalid, f"one of {ON_INVALID}")
+        object.__setattr__(self, "on_invalid", check_on_invalid(self.on_invalid))
         if self.engine not in ENGINES:
             raise ParameterError("engine", self.engine, f"one of {ENGINES}")
         if self.full_contact not in FULL_CONTACT_METHODS:
@@ -707,7 +708,7 @@ def friction_polar(
     Raises
     ------
     ValidityError
-        When a compressed contact violates the bound of Eq 1 (``on_invalid="raise"``).
+        When a compressed contact violates the bound of Eq 1 (``on_invalid="error"``).
     ParameterError
         For bad arguments.
     """
@@ -874,7 +875,7 @@ def _average_directions(
                 lower, upper, lat.geometry, mu0, float(beta), np.array([settings.phase]),
                 (0, int(sums.worst_station[d]), int(sums.worst_family[d])),
             )  # fmt: skip
-            if settings.on_invalid == "raise":
+            if settings.on_invalid == "error":
                 raise ValidityError(invalid)
         mx = math.nan if invalid else float(mu_x[d])
         my = math.nan if invalid else float(mu_y[d])
@@ -985,7 +986,7 @@ def _direction(
         t_sum += n_tens / n_st
         if n_inv and first_invalid is None and not drop:
             first_invalid = (j, first, family)
-            if settings.on_invalid == "raise":  # stop at once: the rest is wasted work
+            if settings.on_invalid == "error":  # stop at once: the rest is wasted work
                 raise ValidityError(
                     _invalid_message(lower, upper, lat.geometry, mu0, beta, path.shifts,
                                      first_invalid)
@@ -1017,7 +1018,7 @@ def _direction(
         message = _invalid_message(
             lower, upper, lat.geometry, mu0, beta, path.shifts, first_invalid
         )
-        if settings.on_invalid == "raise":
+        if settings.on_invalid == "error":
             raise ValidityError(message)
         return replace(outcome, invalid=message)
     load = settings.load if isinstance(settings.load, float) else math.nan
@@ -1073,7 +1074,7 @@ def _samples(
     whose balance has several roots).
 
     A block stops early at a sample that ends the computation (a load above the pull-off
-    load, or a contact violating Eq 1 with ``on_invalid="raise"``): the caller raises at
+    load, or a contact violating Eq 1 with ``on_invalid="error"``): the caller raises at
     the first such sample, so the samples after it are never read.
     """
     numba_engine = settings.engine == "numba"
@@ -1088,7 +1089,7 @@ def _samples(
     px, py = settings.phase
     detach = math.inf if settings.detachment is None else settings.detachment
     drop = settings.on_invalid == "drop"
-    stop_invalid = settings.on_invalid == "raise"
+    stop_invalid = settings.on_invalid == "error"
     c_cold = math.nan  # load control: no warm start
     if lat.mode == _kernels.MODE_LOAD and settings.detachment is None:
         c_cold = c_start

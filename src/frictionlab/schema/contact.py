@@ -7,23 +7,33 @@ stage), ``[[program]]`` (kind = slide | reverse | hold | traction), optional
 
 from __future__ import annotations
 
+import dataclasses
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
+
+import numpy as np
 
 from frictionlab.contact.block import ELEMENTS, INTEGRATIONS, Block, Refinement
 from frictionlab.contact.frictionless import Frictionless
+from frictionlab.contact.imported import MeshSource, mesh_block
 from frictionlab.contact.interface import TANGENTS
+from frictionlab.contact.law_field import FIELD_KEYS, PAIR_KEYS, LawField, LawRegion, LawTable
 from frictionlab.contact.linear import LINEAR_SOLVERS
 from frictionlab.contact.loading import Hold, NormalLoad, Reverse, Segment, Slide, Traction
 from frictionlab.contact.shapes import Base
 from frictionlab.contact.solver import DRIVES, SolverOptions, check_memory
-from frictionlab.errors import InputError
+from frictionlab.errors import InputError, ParameterError
+from frictionlab.io.config import load_toml
+from frictionlab.io.mesh_files import read_mesh
+from frictionlab.io.tables import read_csv
 from frictionlab.schema.core import (
     BOOL,
     INTEGER,
     NUMBER,
+    PAIRS,
     REQUIRED,
     STRING,
     Field,
@@ -35,7 +45,9 @@ from frictionlab.schema.core import (
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
-__all__ = ["CONTACT_FILE", "ContactScenario", "load_contact", "parse_contact"]
+__all__ = [
+    "CONTACT_FILE", "ContactScenario", "load_contact", "mesh_keys", "parse_contact",
+]  # fmt: skip
 
 _R: dict[str, Any] = {"by": Refinement}
 REFINEMENT = Section("refinement", (
@@ -49,9 +61,10 @@ _B: dict[str, Any] = {"by": Block}
 BLOCK = Section("block", (
     Field("E", NUMBER, "Young's modulus", "Pa", REQUIRED, **_B),
     Field("nu", NUMBER, "Poisson's ratio", "-", REQUIRED, **_B),
-    Field("width", NUMBER, "block width (x)", "m", REQUIRED, **_B),
-    Field("height", NUMBER, "block height (y)", "m", REQUIRED, **_B),
-    Field("element_size", NUMBER, "element edge length", "m", REQUIRED, **_B),
+    Field("width", NUMBER, "block width (x); required unless [mesh]", "m", None, **_B),
+    Field("height", NUMBER, "block height (y); required unless [mesh]", "m", None, **_B),
+    Field("element_size", NUMBER, "element edge length; required unless [mesh]", "m", None,
+          **_B),
     Field("depth", NUMBER, "block depth (z): gives a 3-D block", "m", None, **_B),
     Field("element", STRING, "element (default quad in 2-D, hex in 3-D)", choices=ELEMENTS, **_B),
     Field("integration", STRING, "full, or selective (one-point volumetric part: no locking as nu "
@@ -118,11 +131,44 @@ OUTPUT = Section("output", (
     Field("fields", BOOL, "write fields/: a ParaView .pvd series of .vtu files (block "
           "displacement and stress, interface tractions) per recorded step", "", False),
 ), "what is reported", "[output]")  # fmt: skip
+MESH = Section("mesh", (
+    Field("file", STRING, "mesh file read by meshio: gmsh .msh (2.2, 4.1), Abaqus .inp, ...; "
+          "one family of linear quads, triangles (2-D) or hexahedra (3-D)", "", REQUIRED),
+    Field("contact", STRING, "named group (gmsh physical group, Abaqus set) of the flat "
+          "face on the rigid base, at the lowest y (2-D) or z (3-D)", "", REQUIRED),
+    Field("loaded", STRING, "named group of the faces that carry the normal load and the "
+          "tangential programme", "", REQUIRED),
+    Field("fixed", listed(str, "string"), "named groups held at zero displacement", "", []),
+), "an imported mesh instead of the box of [block] ([block] then gives E, nu and "
+   "integration only)", "[mesh]")  # fmt: skip
+_PAIR = listed(float, "number", 2)
+LAW_TABLE = Section("law_table", tuple(
+    Field(key, STRING, f"CSV file of {key} along the interface: columns x [m] (2-D) or x, y "
+          f"[m] (3-D) and {key}; linearly interpolated onto the contact points")
+    for key in (*FIELD_KEYS, "orthotropy_angle_deg")
+), "law parameters varying along the interface, from tables (applied before the "
+   "regions)", "[law_table]")  # fmt: skip
+LAW_REGION = Section("law_region", (
+    Field("x", _PAIR, "x range [from, to] of the region (closed; default all)", "m", None),
+    Field("y", _PAIR, "y range [from, to] of the region, 3-D (closed; default all)", "m",
+          None),
+    Field("group", STRING, "a named group of the [mesh]: the contact points whose facet "
+          "lies in it (with x, y: the intersection)", "", None),
+    Field("bridge", STRING, "a `frictionlab bridge` fitted_law.toml: its anisotropy "
+          "(rotation, orthotropy, orthotropy angle) in this region", "", None),
+    *(dataclasses.replace(LAW[key], kind=_PAIR if LAW[key].kind is PAIRS else NUMBER,
+                          per_point=False, default=None)  # default: the [law]'s value
+      for key in (*FIELD_KEYS, "orthotropy_angle_deg", *PAIR_KEYS)),
+), "a part of the interface with its own law values (later regions override earlier "
+   "ones; keys given here override the bridge's)", "[[law_region]]", ref=True)  # fmt: skip
 CONTACT_FILE = Section("contact", (
     Field("title", STRING, "title of the run", "", ""),
     Field("description", STRING, "free text", "", ""),
     Field("block", table=BLOCK, default=REQUIRED),
+    Field("mesh", table=MESH),
     Field("law", table=LAW, default=REQUIRED),
+    Field("law_table", table=LAW_TABLE),
+    Field("law_region", table=LAW_REGION, many=True),
     Field("base", table=BASE),
     Field("normal", table=NORMAL, default=REQUIRED),
     Field("program", table=SEGMENT, many=True, default=REQUIRED),
@@ -130,7 +176,10 @@ CONTACT_FILE = Section("contact", (
     Field("output", table=OUTPUT),
 ), "A contact scenario of `frictionlab contact`: an elastic [block] pressed and slid on a "
    "rigid [base] through the subloading-friction [law] (mu_s = mu_k = 0: frictionless, "
-   "alpha_n only). SI units.")  # fmt: skip
+   "alpha_n only). SI units.", extra={
+       "if": {"not": {"required": ["mesh"]}},
+       "then": {"properties": {"block": {"required": ["width", "height", "element_size"]}}},
+   })  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -150,6 +199,8 @@ class ContactScenario:
     source: str = ""
     base: Base = field(default_factory=Base)
     fields: bool = False
+    mesh: MeshSource | None = None
+    law_field: LawField = field(default_factory=LawField)
 
 
 def _segment(data: Any) -> tuple[Segment, dict[str, Any]]:
@@ -160,8 +211,25 @@ def _segment(data: Any) -> tuple[Segment, dict[str, Any]]:
     return reraise(data.where, lambda: _SEG_CLASSES[kind](**values)), {"kind": kind, **values}
 
 
-def _block(t: Any) -> tuple[Block, dict[str, Any]]:
+_BOX_KEYS = ("width", "height", "element_size")
+
+
+def _block(t: Any, mesh: MeshSource | None = None) -> tuple[Block, dict[str, Any]]:
     echo = BLOCK.read(t)
+    if mesh is not None:  # the box comes from the mesh file
+        given = [k for k in (*_BOX_KEYS, "depth", "element") if echo[k] is not None]
+        given += ["refinement"] if t.table("refinement") is not None else []
+        if given:
+            raise InputError(
+                f"[block].{given[0]} is set by [mesh].file: with [mesh], [block] reads E, nu "
+                "and integration only"
+            )
+        block = mesh_keys(lambda: mesh_block(
+            mesh.mesh, E=echo["E"], nu=echo["nu"], integration=echo["integration"]))  # fmt: skip
+        return block, {k: echo[k] for k in ("E", "nu", "integration")}
+    for key in _BOX_KEYS:
+        if echo[key] is None:
+            raise InputError(f"missing required key [block].{key} (or give a [mesh])")
     if echo["element"] is None:
         echo["element"] = "quad" if echo["depth"] is None else "hex"
     values = dict(echo)
@@ -171,6 +239,144 @@ def _block(t: Any) -> tuple[Block, dict[str, Any]]:
         values["refinement"] = reraise(ref_t.where, lambda: Refinement(**ref))
         echo["refinement"] = ref
     return reraise("[block]", lambda: Block(**values)), echo
+
+
+def mesh_keys(call: Any) -> Any:
+    """Run ``call``; name a ParameterError's key as [mesh].key (mesh.*) or [block].key."""
+    try:
+        return call()
+    except ParameterError as exc:
+        name = exc.field
+        where = f"[mesh].{name[5:]}" if name.startswith("mesh.") else f"[block].{name}"
+        raise ParameterError(where, exc.value, exc.allowed) from None
+
+
+def _mesh(data: Any, base_dir: Path) -> tuple[MeshSource, dict[str, Any]]:
+    """[mesh]: read the file and check its cells and named groups (nothing assembled)."""
+    echo = MESH.read(data, "[mesh]")
+    path = base_dir / echo["file"]
+    try:
+        mesh = read_mesh(path)
+    except InputError as exc:
+        raise InputError(f"[mesh].file = {echo['file']!r}: {exc}") from None
+    source = mesh_keys(lambda: MeshSource.of(
+        str(path), mesh, echo["contact"], echo["loaded"], echo["fixed"]))  # fmt: skip
+    return source, echo
+
+
+def _check_field(where: str, params: SubloadingParams, values: dict[str, Any]) -> None:
+    """The law with ``values`` (a region's or a table's samples) must be a valid law."""
+    try:
+        params.replace(**values, orthotropy_convention="divide")
+    except ParameterError as exc:
+        raise InputError(f"{where}: with the [law] values, {exc}") from None
+
+
+def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -> list[LawTable]:
+    given = LAW_TABLE.read(data, "[law_table]", only_given=True)
+    if "orthotropy_angle" in given and "orthotropy_angle_deg" in given:
+        raise InputError("[law_table]: give orthotropy_angle (rad) or orthotropy_angle_deg "
+                         "(deg), not both")  # fmt: skip
+    axes = ("x",) if dim == 2 else ("x", "y")
+    out = []
+    for key, name in given.items():
+        where = f"[law_table].{key} = {name!r}"
+        try:
+            table = read_csv(base_dir / name)
+        except InputError as exc:
+            raise InputError(f"{where}: {exc}") from None
+        wanted = (*axes, key)
+        missing = [c for c in wanted if c not in table]
+        if missing or (dim == 2 and "y" in table):
+            raise InputError(
+                f"{where}: allowed a table with the columns {', '.join(wanted)} "
+                f"(this one has {', '.join(table)}) for a {dim}-D block"
+            )
+        for column in wanted:
+            values = table[column]
+            if np.ma.isMaskedArray(values) or values.dtype == object:
+                raise InputError(f"{where}: column {column} has empty or non-numeric cells")
+            unit = table.units.get(column)
+            if column in axes and unit not in (None, "m"):
+                raise InputError(f"{where}: column {column} is in [{unit}]; allowed [m]")
+        values = np.asarray(table[key], dtype=np.float64)
+        stored = key
+        if key == "orthotropy_angle_deg":
+            stored, values = "orthotropy_angle", np.radians(values)
+        if getattr(params, stored) is None:
+            raise InputError(f"{where}: {key} is not a parameter of surface '{params.surface}'")
+        points = np.column_stack([table[c] for c in axes])
+        law_table = LawTable(stored, points, values, source=f"[law_table].{key} ({name!r})")
+        _check_field(where, params, {stored: law_table.values})
+        out.append(law_table)
+    return out
+
+
+def _bridge_anisotropy(where: str, name: str, params: SubloadingParams,
+                       base_dir: Path) -> dict[str, Any]:  # fmt: skip
+    """rotation, orthotropy and orthotropy_angle of a bridge run's fitted_law.toml."""
+    data = load_toml(base_dir / name)
+    if not isinstance(data.get("law"), dict):
+        raise InputError(f"{where}.bridge = {name!r}: no [law] table (a fitted_law.toml "
+                         "written by `frictionlab bridge`)")  # fmt: skip
+    fitted, _ = parse_law_table(data["law"], f"{where}.bridge [law]")
+    if fitted.surface != params.surface or fitted.per_point:
+        raise InputError(
+            f"{where}.bridge = {name!r}: its law has surface '{fitted.surface}'"
+            f"{' and per-point values' if fitted.per_point else ''}; allowed one law of "
+            f"the [law]'s surface '{params.surface}'"
+        )
+    return {
+        "rotation": np.asarray(fitted.rotation).tolist(),
+        "orthotropy": np.asarray(fitted.orthotropy).tolist(),
+        "orthotropy_angle": float(fitted.orthotropy_angle),
+    }
+
+
+def _law_regions(
+    tables: list[Any],
+    params: SubloadingParams,
+    dim: int,
+    base_dir: Path,
+    multiply: bool,
+    mesh: MeshSource | None,
+) -> tuple[list[LawRegion], list[dict[str, Any]]]:
+    regions, echoes = [], []
+    for t in tables:
+        where = t.where
+        echo = LAW_REGION.read(t, where, only_given=True)
+        values = {k: v for k, v in echo.items() if k not in ("x", "y", "bridge", "group")}
+        if "group" in echo:
+            if mesh is None:
+                raise InputError(f"{where}.group needs a [mesh] (its named groups)")
+            group = echo["group"]
+            try:
+                mesh.check_group(group)
+            except ParameterError as exc:
+                raise ParameterError(f"{where}.group", exc.value, exc.allowed) from None
+        if "bridge" in echo:
+            values = {**_bridge_anisotropy(where, echo["bridge"], params, base_dir), **values}
+        if "orthotropy_angle_deg" in values:
+            if "orthotropy_angle" in echo:
+                raise InputError(f"{where}: give orthotropy_angle (rad) or "
+                                 "orthotropy_angle_deg (deg), not both")  # fmt: skip
+            values["orthotropy_angle"] = float(np.radians(values.pop("orthotropy_angle_deg")))
+        if multiply and "orthotropy" in echo:  # the [law]'s convention, stored as "divide"
+            values["orthotropy"] = [c**-0.5 for c in echo["orthotropy"]]
+        if not values:
+            raise InputError(f"{where}: give at least one law value (or bridge)")
+        if dim == 2 and "y" in echo:
+            raise InputError(f"{where}.y is for a 3-D block; a 2-D region is an x range")
+        for key in values:
+            if getattr(params, key) is None:
+                raise InputError(f"{where}.{key} is not a parameter of surface "
+                                 f"'{params.surface}'")  # fmt: skip
+        region = LawRegion(values, x=echo.get("x"), y=echo.get("y"), group=echo.get("group"),
+                           name=where)  # fmt: skip
+        _check_field(where, params, dict(values))
+        regions.append(region)
+        echoes.append({**echo, **{k: v for k, v in values.items() if k not in echo}})
+    return regions, echoes
 
 
 def _law(data: Any) -> tuple[SubloadingParams | Frictionless, dict[str, Any]]:
@@ -189,6 +395,36 @@ def _law(data: Any) -> tuple[SubloadingParams | Frictionless, dict[str, Any]]:
     params, _ = parse_law_table(data, "[law]")
     echo = {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in params.as_dict().items()}
     return params, echo
+
+
+def _law_field(
+    root: Any,
+    params: SubloadingParams | Frictionless,
+    dim: int,
+    base_dir: Path,
+    law_t: Any,
+    mesh: MeshSource | None = None,
+) -> tuple[LawField, dict[str, Any]]:
+    """[law_table] and [[law_region]]: the law's values along the interface."""
+    table_data = root.raw("law_table", None)
+    region_ts = root.tables("law_region")
+    if table_data is None and not region_ts:
+        return LawField(), {}
+    if not isinstance(params, SubloadingParams):
+        key = "[law_table]" if table_data is not None else "[[law_region]]"
+        raise InputError(f"{key} needs a law with friction; the [law] is frictionless")
+    if params.per_point:
+        raise InputError("[law] takes one value per key when [law_table] or [[law_region]] "
+                         "vary it along the interface")  # fmt: skip
+    multiply = law_t.mapping().get("orthotropy_convention") == "multiply"
+    tables = _law_tables(table_data or {}, params, dim, base_dir)
+    regions, region_echo = _law_regions(region_ts, params, dim, base_dir, multiply, mesh)
+    echo: dict[str, Any] = {}
+    if table_data is not None:
+        echo["law_table"] = LAW_TABLE.read(table_data, "[law_table]", only_given=True)
+    if regions:
+        echo["law_region"] = region_echo
+    return LawField(tuple(tables), tuple(regions)), echo
 
 
 def _normal(t: Any) -> tuple[NormalLoad, dict[str, Any]]:
@@ -255,11 +491,15 @@ def parse_contact(
     assert block_t is not None and law_t is not None and normal_t is not None
     if not program_ts:
         raise InputError("[[program]] must hold at least one segment")
-    block, block_echo = _block(block_t)
+    mesh, mesh_echo = None, None
+    if root.raw("mesh", None) is not None:
+        mesh, mesh_echo = _mesh(root.raw("mesh"), Path(base_dir))
+    block, block_echo = _block(block_t, mesh)
     base_echo = BASE.read(root.raw("base", {}), "[base]")
     base = reraise("[base]", lambda: Base(**base_echo))
     reraise("[base]", lambda: base.check_dim(block.dim))
     params, law_echo = _law(law_t.mapping())
+    law_field, field_echo = _law_field(root, params, block.dim, Path(base_dir), law_t, mesh)
     normal, normal_echo = _normal(normal_t)
     parsed = [_segment(t) for t in program_ts]
     program = tuple(seg for seg, _ in parsed)
@@ -295,12 +535,13 @@ def parse_contact(
         "title": top["title"], "description": top["description"], "block": block_echo,
         "base": base_echo, "law": law_echo, "normal": normal_echo,
         "program": [echo for _, echo in parsed], "solver": solver_echo, "output": output_echo,
+        **({"mesh": mesh_echo} if mesh_echo is not None else {}), **field_echo,
     }  # fmt: skip
     return ContactScenario(
         title=top["title"], description=top["description"], block=block, params=params,
         normal=normal, program=program, options=options, drive=drive,
         front_ratio=output_echo["front_ratio"], inputs=inputs, source=source, base=base,
-        fields=output_echo["fields"],
+        fields=output_echo["fields"], mesh=mesh, law_field=law_field,
     )  # fmt: skip
 
 

@@ -68,8 +68,24 @@ __all__ = [
 
 SURFACE_KINDS = ("flat", "wedge", "smooth_wedge", "sinusoid", "self_affine", "file")
 MAX_DIRECTIONS = 3601
-#: [sliding].on_invalid in the TOML -> LatticeSettings.on_invalid
-ON_INVALID_KEYS = {"error": "raise", "mask": "drop"}
+#: [sliding].on_invalid in the TOML -> LatticeSettings.on_invalid ("mask": deprecated)
+ON_INVALID_KEYS = {"error": "error", "drop": "drop", "mask": "drop"}
+#: Old spellings accepted for one release: (section, value) -> (meaning, terminal note)
+_OLD_ON_INVALID = {
+    ("sliding", "mask"): ("drop", '[sliding].on_invalid = "mask" is deprecated: it drops the '
+                          'contacts violating Eq 1, as before; write "drop" ("mask" will mark '
+                          "the direction invalid, as in Python)"),
+    ("hierarchy", "raise"): ("error", '[hierarchy].on_invalid = "raise" is deprecated: write '
+                             '"error" (the same meaning)'),
+}  # fmt: skip
+
+
+def _on_invalid(section: str, value: str, notes: dict[str, Any]) -> str:
+    """The meaning of a TOML ``on_invalid``; an old spelling adds a terminal note."""
+    if (section, value) in _OLD_ON_INVALID:
+        value, note = _OLD_ON_INVALID[section, value]
+        notes.setdefault("warnings", []).append(note)
+    return value
 
 
 def _range(t: Table, name: str, last: str) -> tuple[float, float, Any]:
@@ -217,8 +233,9 @@ SLIDING = Section("sliding", (
           choices=CONTROLS, **_L),
     Field("separation", NUMBER, "separation c (control = separation)", "m", **_L),
     Field("phase", listed(float, "number", 2), "initial offset of the upper surface", "m", **_L),
-    Field("on_invalid", STRING, "contacts violating Eq 1: error, or mask (drop them, report "
-          "their fraction)", "", "error", choices=tuple(ON_INVALID_KEYS)),
+    Field("on_invalid", STRING, "contacts violating Eq 1: error, or drop them (report their "
+          'fraction); "mask" is a deprecated spelling of "drop" here', "", "error",
+          choices=tuple(ON_INVALID_KEYS)),
 ), "how the upper surface slides", "[sliding]")  # fmt: skip
 LATTICE = Section("lattice", (
     Field("stations", _either(listed(int, "integer", (1, 2)), INTEGER), "lattice stations "
@@ -244,12 +261,13 @@ OUTPUT = Section("output", (
           open="low", allowed="0 < step <= 90"),
     Field("statistics", BOOL, "write the sampled surfaces' statistics (CSV, PNG)", "", False),
 ), "figures", "[output]")  # fmt: skip
+_E: dict[str, Any] = {"by": ElasticSettings}  # > 0 (hardness > pressure): ElasticSettings checks
 CONTACT = Section("contact", (
     Field("model", STRING, "load distribution: the paper's springs or an elastic half-space",
           "", "lattice", choices=CONTACT_MODELS),
-    Field("pressure", NUMBER, "nominal mean pressure (model = elastic)", "Pa", None, **_POS),
-    Field("modulus", NUMBER, "effective contact modulus E*", "Pa", None, **_POS),
-    Field("hardness", NUMBER, "optional cap on the local pressure", "Pa", None, **_POS),
+    Field("pressure", NUMBER, "nominal mean pressure (model = elastic)", "Pa", None, **_E),
+    Field("modulus", NUMBER, "effective contact modulus E*", "Pa", None, **_E),
+    Field("hardness", NUMBER, "optional cap on the local pressure", "Pa", None, **_E),
 ), "the load distribution (roughness.elastic)", "[contact]")  # fmt: skip
 ADHESION = Section("adhesion", (
     Field("loads", LOADS, "loads per spring: a list or {start, stop, count}", "N", REQUIRED),
@@ -260,17 +278,13 @@ ADHESION = Section("adhesion", (
     _BETA,
     Field("compare_without_adhesion", BOOL, "also run without tensile springs", "", True),
 ), "load sweep with tensile springs (Eqs 21-22)", "[adhesion]")  # fmt: skip
-_W: dict[str, Any] = {"default": REQUIRED, "low": 0.0, "open": "low"}
+_W: dict[str, Any] = {"default": REQUIRED, "by": WearSettings}  # > 0: WearSettings checks
 WEAR = Section("wear", (
-    Field("wear_coefficient", NUMBER, "Archard K", "-", allowed="a positive number "
-          "(dimensionless)", **_W),
-    Field("hardness", NUMBER, "hardness", "Pa", allowed="a positive number (Pa)", **_W),
-    Field("normal_load", NUMBER, "force on the nominal area", "N",
-          allowed="a positive number (N)", **_W),
-    Field("velocity", NUMBER, "sliding velocity", "m/s", allowed="a positive number (m/s)",
-          **_W),
-    Field("nominal_area", NUMBER, "nominal contact area", "m^2",
-          allowed="a positive number (m^2)", **_W),
+    Field("wear_coefficient", NUMBER, "Archard K", "-", **_W),
+    Field("hardness", NUMBER, "hardness", "Pa", **_W),
+    Field("normal_load", NUMBER, "force on the nominal area", "N", **_W),
+    Field("velocity", NUMBER, "sliding velocity", "m/s", **_W),
+    Field("nominal_area", NUMBER, "nominal contact area", "m^2", **_W),
     Field("surfaces", STRING, "which surfaces wear", "", "both", choices=WEAR_SURFACES),
     Field("samples", INTEGER, "times from 0 to T_w", "", 21, low=2),
     Field("method", STRING, "how the worn polar is computed", "", "auto", choices=WEAR_METHODS),
@@ -290,7 +304,8 @@ HIERARCHY = Section("hierarchy", (
           allowed="a scale factor > 1"),
     Field("inner", table=LEVEL, many=True, doc="inner levels (instead of levels, ratio)"),
     Field("mu_passed", STRING, "mu passed between levels", "", "magnitude", choices=MU_PASSED),
-    Field("on_invalid", STRING, "contacts violating Eq 1", "", "raise", choices=ON_INVALID),
+    Field("on_invalid", STRING, "contacts violating Eq 1: error, or mask the level and those "
+          'above ("raise": deprecated)', "", "error", choices=(*ON_INVALID, "raise")),
     Field("samples_per_level", INTEGER, "hierarchy with [wear]: times per level window", "",
           11, low=2),
     _BETA,
@@ -405,7 +420,7 @@ def parse_roughness(
     _check_cell(lower, upper, notes)
     sliding = SLIDING.read(top.raw("sliding"), only_given=True)
     betas = sliding.pop("beta_deg")
-    sliding["on_invalid"] = ON_INVALID_KEYS[sliding.get("on_invalid", "error")]
+    sliding["on_invalid"] = _on_invalid("sliding", sliding.get("on_invalid", "error"), notes)
     sliding.setdefault("load", "full")
     sliding.setdefault("control", "load")
     if "phase" in sliding:
@@ -425,7 +440,7 @@ def parse_roughness(
     if "wear" in top:
         wear = _wear(top.raw("wear"), betas)
     if "hierarchy" in top:
-        hierarchy = _hierarchy(top.table("hierarchy"), lower, upper, betas, base)  # type: ignore[arg-type]
+        hierarchy = _hierarchy(top.table("hierarchy"), lower, upper, betas, base, notes)  # type: ignore[arg-type]
     if "multiscale" in top:
         multiscale = _multiscale(top.raw("multiscale"), betas)
     contact = _contact(CONTACT.read(top.raw("contact", {})), settings)
@@ -461,7 +476,7 @@ def _contact(v: dict[str, Any], settings: LatticeSettings) -> ElasticSettings | 
         return ElasticSettings(
             pressure=v["pressure"], modulus=v["modulus"], hardness=v["hardness"],
             stations=settings.stations, mu_definition=settings.mu_definition,
-            on_invalid="raise" if settings.on_invalid == "raise" else "drop",
+            on_invalid=settings.on_invalid,
         )  # fmt: skip
     except ParameterError as exc:
         raise InputError(f"[contact].{exc}") from None
@@ -543,9 +558,15 @@ def _wear(data: Any, betas: np.ndarray) -> WearOptions:
 
 
 def _hierarchy(
-    table: Table, lower: Surface, upper: Surface, betas: np.ndarray, base_dir: Path
+    table: Table,
+    lower: Surface,
+    upper: Surface,
+    betas: np.ndarray,
+    base_dir: Path,
+    notes: dict[str, Any],
 ) -> HierarchyOptions:
     v = HIERARCHY.read(table)
+    v["on_invalid"] = _on_invalid("hierarchy", v["on_invalid"], notes)
     has_inner = "inner" in table
     if has_inner == (v["levels"] is not None or v["ratio"] is not None):
         raise InputError(

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import enum
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -258,59 +259,34 @@ def _solve(
     """Run the kernel on checked inputs; the result over ``buffers`` (``views``: left
     writeable, the caller's buffers; otherwise made read-only)."""
     n = state.n_points
-    kernel = kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
+    kernel: Callable[..., Any] = (
+        kernels.step_points_parallel if n >= PARALLEL_MIN_POINTS else kernels.step_points
+    )
     try:
         kernel(
-            np.ascontiguousarray(state.traction),
-            np.ascontiguousarray(state.F),
-            np.ascontiguousarray(state.R),
-            np.ascontiguousarray(state.gap),
+            *kernel_inputs(state),
             np.ascontiguousarray(du),
             np.ascontiguousarray(dt),
-            params._kernel_table,
-            dt.shape[0] == 1,
-            SURFACE_CODES[params.surface],
-            params.tear_k,
-            _U_CODES[params.U_law],
-            _INTEG_CODES[params.F_integrator],
-            _FORM_CODES[params.recovery_form],
-            params.open_recovery == "frozen",
-            tangent,
-            buffers["traction"],
-            buffers["F"],
-            buffers["R"],
-            buffers["gap"],
-            buffers["dlam"],
-            buffers["vp"],
-            buffers["diss"],
-            buffers["tangent"],
-            buffers["status"],
-            buffers["iterations"],
+            *kernel_settings(params, dt.shape[0] == 1, tangent),
+            *kernel_outputs(buffers),
         )
     except ArithmeticError:  # a division by an underflowed value (f_n ~ 1e-300): no result
         _keep_old_state(state, buffers)
-    if not views:
+    if views:  # the caller's buffers are reused: the state views them
+        slip = np.add(state.plastic_slip, buffers["dlam"], out=buffers["plastic_slip"])
+    else:
         slip = state.plastic_slip + buffers["dlam"]
-        new_state = ContactState._trusted(
-            traction=buffers["traction"],
-            F=buffers["F"],
-            R=buffers["R"],
-            plastic_slip=slip,
-            gap=buffers["gap"],
-            frame=state.frame,
-        )
+    new_state = (ContactState._views if views else ContactState._trusted)(
+        traction=buffers["traction"],
+        F=buffers["F"],
+        R=buffers["R"],
+        plastic_slip=slip,
+        gap=buffers["gap"],
+        frame=state.frame,
+    )
+    if not views:
         for key in ("traction", "tangent", "vp", "dlam", "diss", "status", "iterations"):
             buffers[key].setflags(write=False)
-    else:
-        slip = np.add(state.plastic_slip, buffers["dlam"], out=buffers["plastic_slip"])
-        new_state = ContactState._views(
-            traction=buffers["traction"],
-            F=buffers["F"],
-            R=buffers["R"],
-            plastic_slip=slip,
-            gap=buffers["gap"],
-            frame=state.frame,
-        )
     return StepResult(
         state=new_state,
         traction=new_state.traction,
@@ -321,6 +297,45 @@ def _solve(
         status=buffers["status"],
         iterations=buffers["iterations"],
     )
+
+
+# The kernel's arguments in three parts, in its order: the state at t_n, then the slip and
+# time increments, the settings, and the output buffers. Callers that repeat the kernel
+# (the driver's steps) build the parts once and join them per call.
+
+
+def kernel_inputs(state: ContactState) -> tuple[np.ndarray, ...]:
+    """The state arrays the kernel reads: traction, F, R, gap (contiguous)."""
+    return (
+        np.ascontiguousarray(state.traction),
+        np.ascontiguousarray(state.F),
+        np.ascontiguousarray(state.R),
+        np.ascontiguousarray(state.gap),
+    )
+
+
+def kernel_settings(params: SubloadingParams, shared_dt: bool, tangent: bool) -> tuple[Any, ...]:
+    """The kernel's arguments after the increments: parameters, codes and flags."""
+    return (
+        params._kernel_table,
+        shared_dt,
+        SURFACE_CODES[params.surface],
+        params.tear_k,
+        _U_CODES[params.U_law],
+        _INTEG_CODES[params.F_integrator],
+        _FORM_CODES[params.recovery_form],
+        params.open_recovery == "frozen",
+        tangent,
+    )
+
+
+#: The output buffers of ``kernels.empty_outputs``, in the kernel's order.
+OUTPUT_KEYS = ("traction", "F", "R", "gap", "dlam", "vp", "diss", "tangent", "status", "iterations")
+
+
+def kernel_outputs(buffers: dict[str, np.ndarray]) -> tuple[np.ndarray, ...]:
+    """The output buffers in the kernel's order."""
+    return tuple(buffers[key] for key in OUTPUT_KEYS)
 
 
 def _keep_old_state(state: ContactState, out: dict[str, np.ndarray]) -> None:

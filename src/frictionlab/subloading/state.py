@@ -378,8 +378,10 @@ def check_normal_capacity(
     """
     if params.is_cone:
         return
-    fn = np.atleast_1d(np.asarray(normal_traction, dtype=np.float64))
-    kinetic = np.broadcast_to(np.asarray(params.kinetic, dtype=np.float64), fn.shape)
+    fn, kinetic = np.broadcast_arrays(
+        np.atleast_1d(np.asarray(normal_traction, dtype=np.float64)),
+        np.asarray(params.kinetic, dtype=np.float64),
+    )
     over = np.flatnonzero(~(fn < kinetic))
     if over.size == 0:
         return

@@ -60,7 +60,7 @@ def test_elastic_model_writes_contact_outputs(tmp_path: Path, check_summary) -> 
         ("[contact]\npressure = 1e6\n", ["pressure", "model = 'elastic'"]),
         (
             '[contact]\nmodel = "elastic"\npressure = -1.0\nmodulus = 1e9\n',
-            ["pressure", "positive"],
+            ["[contact].pressure = -1.0", "pressure > 0 Pa"],
         ),
         (
             '[contact]\nmodel = "elastic"\npressure = 1e6\nmodulus = 1e9\nhardness = 1e5\n',

@@ -2,7 +2,7 @@
 
 End to end: provenance in summary.json (file, sha256, preparation, rms after
 filtering), --quiet and --no-plots, [multiscale] output, validity failures with a way
-forward (exit 2, nothing written), ``on_invalid = "mask"``, the assume-edge warning and
+forward (exit 2, nothing written), ``on_invalid = "drop"``, the assume-edge warning and
 bad values naming their TOML key.
 """
 
@@ -99,7 +99,7 @@ def test_no_plots_and_mask_report_invalid_fraction(tmp_path, capsys) -> None:
     assert "on_invalid" in err and "short_cutoff" in err and "%" in err
     assert not out.exists()
     code, out = run(
-        tmp_path, scenario("steep.x3p", sliding='on_invalid = "mask"', mu0=0.6), "--no-plots"
+        tmp_path, scenario("steep.x3p", sliding='on_invalid = "drop"', mu0=0.6), "--no-plots"
     )
     assert code == 0
     assert sorted(p.name for p in out.iterdir()) == ["polar.csv", "summary.json"]
@@ -107,7 +107,7 @@ def test_no_plots_and_mask_report_invalid_fraction(tmp_path, capsys) -> None:
     fraction = np.asarray(table["invalid_fraction"], dtype=float)
     assert np.all(fraction > 0.0) and np.all(fraction < 0.5)
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["sliding"]["on_invalid"] == "mask"
+    assert summary["sliding"]["on_invalid"] == "drop"
     assert summary["sliding"]["invalid_fraction"] == fraction.tolist()
 
 

@@ -108,7 +108,7 @@ def test_drop_partial_contact_engines_agree_and_equal_raise_when_valid() -> None
     assert np.all(a.invalid_fraction > 0.0)
     gentle = gen.sinusoid(0.5 / (2.0 * math.pi), 1.0)
     c = friction_polar(gentle, upper, 0.6, [0.0, 30.0], **opts)
-    d = friction_polar(gentle, upper, 0.6, [0.0, 30.0], **{**opts, "on_invalid": "raise"})
+    d = friction_polar(gentle, upper, 0.6, [0.0, 30.0], **{**opts, "on_invalid": "error"})
     np.testing.assert_array_equal(c.mu_x, d.mu_x)
     assert np.all(c.invalid_fraction == 0.0)
 
