@@ -8,7 +8,9 @@ The estimate is made from the step counts the programme resolves to before anyth
   state and running figures plus bounded buffers, whatever the number of steps; a
   spring-slider (``[machine]``) and the Python API keep every recorded row in memory;
 * **output**: ``history.csv`` grows with (recorded rows) x (recorded points), where the
-  rows are every ``[output] every``-th step; ``points.csv`` with the points;
+  rows are every ``[output] every``-th step; ``points.csv`` with the points. A history
+  beyond :data:`HISTORY_LIMIT` (1 GB) warns (:func:`history_bound`), and without ``[output]
+  every`` it is recorded every k-th step, the smallest k that keeps it under;
 * **time**: (steps) x (points) point updates plus a fixed cost per step.
 
 A run needing more than half the physical memory, more output than the free space where
@@ -40,6 +42,7 @@ __all__ = [
     "check_output_space",
     "check_roughness",
     "check_run_size",
+    "history_bound",
     "largest",
     "physical_memory",
 ]
@@ -57,10 +60,17 @@ MEMORY_PER_POINT_STREAMED = 1500.0
 STREAM_KEPT_ROWS = 4000
 STREAM_KEPT_POINTS = 40
 STREAM_CHUNK_BYTES = 8.0 * 2**20
-#: Output size per recorded point and row (history.csv, 156 B measured) and per point
+#: Output size per recorded point and row (history.csv: 156 B measured on smooth test
+#: histories, 224 B on 10^3 distinct points whose floats need 16-17 digits) and per point
 #: (points.csv, 274 B measured; summary.json is small) [bytes].
-CSV_PER_POINT_ROW = 160.0
+CSV_PER_POINT_ROW = 240.0
 SUMMARY_PER_POINT = 300.0
+#: History size per recorded point and row of each ``[output] format`` [bytes]
+#: (history.parquet: float64 columns, snappy-compressed; PARQUET measured below).
+HISTORY_BYTES_PER_ROW: dict[str, float] = {"csv": CSV_PER_POINT_ROW, "parquet": 120.0}
+#: The history size beyond which a run warns, and beyond which the default recording
+#: (``[output] every`` not given) records every k-th step instead of every step [bytes].
+HISTORY_LIMIT = 1e9
 #: Computing time per point update and per step outside the kernel [s]: upper-end
 #: figures of this project's benchmarks (docs/performance.md), so that the estimate
 #: refuses only what is clearly out of reach.
@@ -115,15 +125,26 @@ class RunEstimate:
     recorded_points: int | None = None
     streamed: bool = False
     segments: int = 1
+    history_format: str = "csv"
 
     @property
     def recorded_rows(self) -> float:
         """Rows written (at most): the initial row, every ``every``-th step, and the first
         and last step of each segment."""
+        return self.rows_every(self.every)
+
+    def rows_every(self, every: int) -> float:
+        """:attr:`recorded_rows` when recording every ``every``-th step."""
         steps = float(self.rows - 1)
-        if self.every == 1:
+        if every == 1:
             return 1.0 + steps
-        return 1.0 + min(steps, math.ceil(steps / self.every) + 2.0 * self.segments)
+        return 1.0 + min(steps, math.ceil(steps / every) + 2.0 * self.segments)
+
+    @property
+    def history(self) -> float:
+        """Estimated size of the history file (history.csv or .parquet) [bytes]."""
+        per_row = HISTORY_BYTES_PER_ROW[self.history_format]
+        return self.recorded_rows * self._points_out * per_row
 
     @property
     def _points_out(self) -> float:
@@ -144,9 +165,7 @@ class RunEstimate:
     @property
     def output(self) -> float:
         """Estimated size of history.csv, points.csv and summary.json [bytes]."""
-        return self.points * SUMMARY_PER_POINT + self.recorded_rows * self._points_out * (
-            CSV_PER_POINT_ROW
-        )
+        return self.points * SUMMARY_PER_POINT + self.history
 
     @property
     def seconds(self) -> float:
@@ -170,6 +189,7 @@ def largest(
     every: int = 1,
     recorded_points: int | None = None,
     streamed: bool = False,
+    history_format: str = "csv",
 ) -> RunEstimate:
     """The estimate of a run with segments ``(steps, key)``; names the dominant key."""
     rows = 1 + sum(s for s, _ in step_counts)
@@ -182,6 +202,60 @@ def largest(
         recorded_points=recorded_points,
         streamed=streamed,
         segments=len(step_counts),
+        history_format=history_format,
+    )
+
+
+def _ordinal(k: int) -> str:
+    """``2nd``, ``3rd``, ``11th``, ``21st``."""
+    suffix = "th" if 10 <= k % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(k % 10, "th")
+    return f"{k}{suffix}"
+
+
+def history_bound(
+    estimate: RunEstimate, every_given: bool, limit: float | None = None
+) -> tuple[int, str | None]:
+    """The ``[output] every`` to record with and a warning when the history passes ``limit``.
+
+    With ``every`` not given (``estimate.every`` = 1 then), a history beyond ``limit`` is
+    recorded every k-th step, the smallest k that brings it under; with ``every`` given,
+    it is kept and the warning says what would bring it under. The warning names
+    ``[output] every`` and ``[output] points`` with such values. ``limit`` [bytes]:
+    :data:`HISTORY_LIMIT` unless given.
+    """
+    limit = HISTORY_LIMIT if limit is None else limit
+    if estimate.history <= limit:
+        return estimate.every, None
+    name = f"history.{estimate.history_format}"
+    per_row = HISTORY_BYTES_PER_ROW[estimate.history_format]
+    lo, hi = max(estimate.every, 1), max(int(estimate.rows), 2)
+    while lo < hi:  # the smallest every under the limit (rows_every decreases with every)
+        mid = (lo + hi) // 2
+        if estimate.rows_every(mid) * estimate._points_out * per_row <= limit:
+            hi = mid
+        else:
+            lo = mid + 1
+    under_every = lo
+    fits = estimate.rows_every(under_every) * estimate._points_out * per_row <= limit
+    points = int(limit // (estimate.recorded_rows * per_row))
+    size = _size(estimate.history)
+    shape = f"{estimate.recorded_rows:.4g} recorded rows x {int(estimate._points_out)} point(s)"
+    by_points = (
+        f"[output] points listing at most {points} point(s)"
+        if points >= 1
+        else "no choice of [output] points alone"
+    )
+    if not every_given and fits:
+        return under_every, (
+            f"{name} would be about {size} recording every step ({shape}): recording every "
+            f"{_ordinal(under_every)} step instead ([output] every = {under_every}, the "
+            f"smallest that keeps it under {_size(limit)}); set [output] every = 1 to record "
+            f"every step, or {by_points} to keep every step under {_size(limit)}"
+        )
+    every_text = f"[output] every = {under_every}" if fits else "no choice of [output] every alone"
+    return estimate.every, (
+        f"{name} will be about {size} ({shape}, [output] every = {estimate.every}): "
+        f"{every_text} or {by_points} would keep it under {_size(limit)}"
     )
 
 

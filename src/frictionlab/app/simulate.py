@@ -9,6 +9,7 @@ files and summary.json the same way for the demo.
 from __future__ import annotations
 
 import argparse
+import sys
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -84,6 +85,8 @@ class Simulate:
         scenario = load_scenario(args.scenario, args.set)  # every input check happens here
         if scenario.estimate is not None:  # and the output's size against the free disk space
             check_output_space(scenario.estimate, out, scenario.run_options.allow_large)
+        for text in scenario.warnings:  # before the run: the user may stop it
+            print(f"frictionlab: warning: {text}", file=sys.stderr)
         return scenario
 
     def run(self, job: Scenario, progress: ProgressFactory, staging: Path) -> SimulateRun:
@@ -95,7 +98,7 @@ class Simulate:
             if job.kind == "program":
                 shown = shown_points(job.output.recorded_points(job.n_points))
                 with files.HistoryStream(
-                    staging / "history.csv", cone=job.params.is_cone
+                    staging / job.output.history_name, cone=job.params.is_cone
                 ) as stream:
                     history = run_scenario(job, update, stream, files.PLOT_ROWS, shown.tolist())
             else:
@@ -115,7 +118,7 @@ class Simulate:
     ) -> dict[str, Any]:
         history, stream = result.history, result.stream
         if stream is not None:
-            recorded_rows = stream.rows // max(history.n_points, 1)
+            recorded_rows = stream.rows // job.output.recorded_points(job.n_points)
         else:
             recorded_rows = files.select_rows(history, job.output).n_rows
         return files.summarise(job, history, seconds, names, result.healing, recorded_rows)
@@ -137,7 +140,8 @@ class Simulate:
         history = result.history
         if history.success:
             return None
-        return f"{history.message}; the history up to the failure is in {out / 'history.csv'}"
+        name = job.output.history_name
+        return f"{history.message}; the history up to the failure is in {out / name}"
 
 
 #: The simulate workflow.

@@ -36,8 +36,8 @@ from frictionlab.driver.table import (
     history_units,
 )
 from frictionlab.errors import FrictionlabError
-from frictionlab.io.atomic import atomic_path
-from frictionlab.io.tables import format_csv_bytes, write_csv_atomic
+from frictionlab.io.parquet import ParquetStream, write_parquet_atomic
+from frictionlab.io.tables import write_csv, write_csv_atomic
 from frictionlab.schema.scenario import OutputOptions, Scenario
 
 __all__ = [
@@ -100,24 +100,13 @@ def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict
     return out
 
 
-def _write_csv_blocks(path: Path, cols: dict[str, np.ndarray], units: dict[str, str]) -> Path:
-    """Like ``write_csv_atomic``, formatting CSV_BLOCK lines at a time (bounded memory)."""
-    n = len(next(iter(cols.values())))
-    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
-        for start in range(0, max(n, 1), CSV_BLOCK):
-            text = format_csv_bytes(
-                {k: v[start : start + CSV_BLOCK] for k, v in cols.items()}, units
-            )
-            handle.write(text if start == 0 else text[text.index(b"\n") + 1 :])
-    return path
-
-
 class HistoryStream:
-    """A recording sink that appends the recorded rows to ``history.csv`` as they come.
+    """A recording sink that appends the recorded rows to the history file as they come.
 
     Use as a context manager around the run; ``rows`` counts the data rows written. The
-    file is plain CSV (see :mod:`frictionlab.io.tables`): it is not replaced atomically
-    itself, so write it into an output set's staging directory.
+    file is plain CSV (see :mod:`frictionlab.io.tables`), or Parquet when ``path`` ends
+    in ``.parquet`` (one row group per chunk, :mod:`frictionlab.io.parquet`): it is not
+    replaced atomically itself, so write it into an output set's staging directory.
     """
 
     def __init__(
@@ -128,7 +117,10 @@ class HistoryStream:
         self.extra = tuple(extra or ())
         self.units.update(extra or {})
         self.rows = 0
-        self._file = open(self.path, "wb")  # noqa: SIM115
+        self._parquet = (
+            ParquetStream(self.path, self.units) if self.path.suffix == ".parquet" else None
+        )
+        self._file = open(self.path, "wb") if self._parquet is None else None  # noqa: SIM115
 
     def __call__(self, chunk: dict[str, np.ndarray]) -> None:
         rows, m = chunk["time"].shape
@@ -139,14 +131,19 @@ class HistoryStream:
 
     def _write(self, chunk: dict[str, np.ndarray]) -> None:
         cols = chunk_columns(chunk, self.extra)
-        text = format_csv_bytes(cols, self.units)
-        if self.rows:
-            text = text[text.index(b"\n") + 1 :]
-        self._file.write(text)
+        if self._parquet is not None:
+            self._parquet.write(cols)
+        else:
+            assert self._file is not None
+            write_csv(self._file, cols, self.units, header=not self.rows)
         self.rows += len(cols["step"])
 
     def close(self) -> None:
-        self._file.close()
+        if self._parquet is not None:
+            self._parquet.close()
+        else:
+            assert self._file is not None
+            self._file.close()
 
     def __enter__(self) -> HistoryStream:
         return self
@@ -326,7 +323,7 @@ def summarise(
         "title": scenario.title,
         "success": history.success,
         "message": history.message,
-        "warnings": list(history.warnings),
+        "warnings": list(scenario.warnings) + list(history.warnings),
         "n_points": n,
         "steps": steps,
         "recorded": {
@@ -454,7 +451,9 @@ def write_files(
     else:
         chosen = select_rows(history, scenario.output)
         cols, units = history_columns(chosen, cone=scenario.params.is_cone)
-        written.append(write_csv_atomic(out / "history.csv", cols, units))
+        path = out / scenario.output.history_name
+        write = write_parquet_atomic if path.suffix == ".parquet" else write_csv_atomic
+        written.append(write(path, cols, units))
     written.append(_write_points(out, history, scenario.params.is_cone))
     if len(history.peaks):
         written.append(_write_peaks(out, history))
@@ -478,7 +477,7 @@ def _write_points(out: Path, history: History, cone: bool) -> Path:
             name = f"segment_{seg.index}_{key}"
             cols[name] = np.asarray(values)
             units[name] = f_unit if key == "final_F" else "-"
-    return _write_csv_blocks(out / "points.csv", cols, units)
+    return write_csv_atomic(out / "points.csv", cols, units)  # in blocks: bounded memory
 
 
 def _write_peaks(out: Path, history: History) -> Path:

@@ -75,9 +75,19 @@ _LABELS = {STATUS_INITIAL: "initial", **{int(s): s.name.lower() for s in Status}
 ProgressCallback = Callable[[int, int], None]
 
 
+_CODES = np.array(sorted(_LABELS))
+_TEXTS = np.array([_LABELS[int(c)] for c in _CODES], dtype=object)
+
+
 def status_labels(status: np.ndarray) -> np.ndarray:
-    """Text labels (``initial``, ``stick``, ``slip``, ``open``, ``failed``) of status codes."""
-    return np.vectorize(_LABELS.__getitem__, otypes=[object])(np.asarray(status, dtype=int))
+    """Text labels (``initial``, ``stick``, ``slip``, ``open``, ``failed``) of status codes
+    (one table look-up per array; KeyError for an unknown code)."""
+    codes = np.asarray(status, dtype=int)
+    pos = np.searchsorted(_CODES, codes).clip(0, len(_CODES) - 1)
+    unknown = _CODES[pos] != codes
+    if unknown.any():
+        raise KeyError(int(codes[unknown].flat[0]))
+    return _TEXTS[pos]
 
 
 @dataclass(frozen=True)

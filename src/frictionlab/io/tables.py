@@ -9,8 +9,9 @@ Layout of a file written by :func:`write_csv_atomic`: a header row, then the dat
 Every file opens with ``pandas.read_csv(path)`` and no other argument. Each title is
 ``name [unit]`` (``-`` for dimensionless and text columns; the one spelling used
 everywhere). Floats are written in the shortest form that reads back to the same float64
-(orjson's shortest round-trip form, e.g. ``1e-6``), so a round trip is exact; cells are
-formatted column-wise by Arrow's compute kernels, with no Python object per cell.
+(orjson's shortest round-trip form, e.g. ``1e-6``), so a round trip is exact. Each column
+is formatted by one vectorised call and its cells are views of that text; Arrow joins
+the cells of each row in one pass (no Python object per cell, no per-cell string).
 Non-finite values are refused: a table never carries NaN or infinity. Booleans are written
 as ``true``/``false``; text cells may not contain commas or line breaks. An undefined value
 is given as a masked entry (``numpy.ma``) and written as an empty field.
@@ -26,16 +27,24 @@ from __future__ import annotations
 import os
 from collections.abc import Iterator, Mapping
 from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 import numpy as np
 
 from frictionlab._frames import column_title, normalise_unit, split_title, to_dataframe
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.io.atomic import write_bytes_atomic
+from frictionlab.io.atomic import atomic_path
 from frictionlab.io.inputs import read_input_text
 
-__all__ = ["CsvTable", "format_csv", "format_csv_bytes", "read_csv", "write_csv_atomic"]
+__all__ = [
+    "CsvTable",
+    "csv_pieces",
+    "format_csv",
+    "format_csv_bytes",
+    "read_csv",
+    "write_csv",
+    "write_csv_atomic",
+]
 
 _UNITS_PREFIX = "# units:"
 
@@ -93,6 +102,40 @@ def format_csv_bytes(
     and the docs). Raises :class:`~frictionlab.errors.ParameterError` for ragged columns, non-finite
     values, column names or text that would break the format, or units of unknown columns.
     """
+    return b"".join(csv_pieces(columns, units))
+
+
+def csv_pieces(
+    columns: Mapping[str, np.ndarray],
+    units: Mapping[str, str] | None = None,
+    header: bool = True,
+) -> Iterator[bytes | memoryview]:
+    """:func:`format_csv_bytes` as pieces to write one after the other (no joined copy).
+
+    The header line first (unless ``header`` is false), then the rows :data:`BLOCK_ROWS`
+    at a time; every check is made before the first piece is given.
+    """
+    names, arrays = _checked(columns, units)
+    title = ",".join(column_title(name, (units or {}).get(name)) for name in names) + "\n"
+    n = len(arrays[0])
+    blocks = [(s, min(s + BLOCK_ROWS, n)) for s in range(0, n, BLOCK_ROWS)]
+    for name, values in zip(names, arrays, strict=True):  # refuse before writing anything
+        if values.dtype.kind == "f":
+            _check_finite(name, values)
+    if header:
+        yield title.encode()
+    for s, e in blocks:
+        yield _rows_text([a[s:e] for a in arrays], names)
+
+
+#: Rows formatted at a time (bounds the text held in memory, and Arrow's 32-bit offsets).
+BLOCK_ROWS = 65536
+
+
+def _checked(
+    columns: Mapping[str, np.ndarray], units: Mapping[str, str] | None
+) -> tuple[list[str], list[np.ndarray]]:
+    """The names and arrays of ``columns``, checked (see :func:`format_csv_bytes`)."""
     if not columns:
         raise ParameterError("columns", "{}", "at least one column")
     names = list(columns)
@@ -107,60 +150,90 @@ def format_csv_bytes(
     if any(a.ndim != 1 for a in arrays) or len(lengths) != 1:
         shapes = {name: a.shape for name, a in zip(names, arrays, strict=True)}
         raise ParameterError("columns", shapes, "1-D arrays of one common length")
-    units = dict(units or {})
-    unknown = sorted(set(units) - set(names))
+    unknown = sorted(set(units or {}) - set(names))
     if unknown:
         raise ParameterError("units", unknown[0], f"one of the columns {names}")
-    header = (",".join(column_title(name, units.get(name)) for name in names) + "\n").encode()
-    if len(arrays[0]) == 0:
-        return header
+    for name, values in zip(names, arrays, strict=True):
+        if values.dtype.kind not in "biufUO":
+            raise ParameterError(
+                f"column {name}", str(values.dtype), "bool, integer, float or text"
+            )
+    return names, arrays
+
+
+def _check_finite(name: str, values: np.ndarray) -> None:
+    data = np.ma.getdata(values)
+    finite = np.isfinite(data) | np.ma.getmaskarray(values)
+    if not finite.all():
+        raise ParameterError(f"column {name}", float(data[~finite][0]), "finite numbers only")
+
+
+def _rows_text(arrays: list[np.ndarray], names: list[str]) -> memoryview:
+    """The CSV lines of equal-length columns: each column's cells are made with their
+    separator (``,`` or the line's end) by one vectorised call, then Arrow joins the
+    cells of each row in one pass; the lines are one contiguous buffer."""
     import pyarrow as pa
-    import pyarrow.csv as pa_csv
+    import pyarrow.compute as pc
 
-    cells = pa.table([_format_column(name, a) for name, a in zip(names, arrays, strict=True)],
-                     names=[f"c{k}" for k in range(len(names))])  # fmt: skip
-    sink = pa.BufferOutputStream()
-    pa_csv.write_csv(cells, sink, pa_csv.WriteOptions(include_header=False, quoting_style="none"))
-    return header + sink.getvalue().to_pybytes()
+    seps = [b","] * (len(arrays) - 1) + [b"\n"]
+    cells = [_cells(n, a, sep) for n, a, sep in zip(names, arrays, seps, strict=True)]
+    lines = pc.binary_join_element_wise(*cells, pa.scalar("", pa.large_string()))
+    offsets = np.frombuffer(lines.buffers()[1], np.int64)[lines.offset :]
+    return memoryview(lines.buffers()[2])[offsets[0] : offsets[len(lines)]]
 
 
-def _format_column(name: str, values: np.ndarray) -> Any:
-    """One column's cells as an Arrow string array (vectorised; no Python object per cell).
+def _cells(name: str, values: np.ndarray, sep: bytes) -> Any:
+    """One column's cells, each followed by ``sep``, as an Arrow large-string array.
 
-    Floats are written in their shortest round-trip form (orjson's, e.g. ``1e-6``,
-    ``0.00001``, ``2.0``): every value reads back as the same float64.
+    Numbers are written by one ``orjson.dumps`` of the whole column: floats in their
+    shortest round-trip form (e.g. ``1e-6``, ``0.00001``, ``2.0``; every value reads back
+    as the same float64), integers in full. The cells are views of that text: the
+    array's offsets are the positions after its commas.
     """
     import pyarrow as pa
     import pyarrow.compute as pc
 
+    text = pa.large_string()
     if np.ma.isMaskedArray(values):  # undefined entries: empty fields
         mask = np.ma.getmaskarray(values)
         data = np.ma.getdata(values)
-        filled = _format_column(name, np.where(mask, np.zeros((), data.dtype), data))
-        return pc.if_else(pa.array(mask), pa.scalar("", pa.string()), filled)
+        filled = _cells(name, np.where(mask, np.zeros((), data.dtype), data), sep)
+        return pc.if_else(pa.array(mask), pa.scalar(sep.decode(), text), filled)
     if values.dtype.kind == "b":
-        return pc.if_else(pa.array(values), pa.scalar("true"), pa.scalar("false"))
-    if values.dtype.kind in "iu":
-        return pc.cast(pa.array(values), pa.string())
-    if values.dtype.kind == "f":
-        floats = np.ascontiguousarray(values, dtype=np.float64)
-        finite = np.isfinite(floats)
-        if not finite.all():
-            raise ParameterError(f"column {name}", float(floats[~finite][0]), "finite numbers only")
+        yes, no = ("true" + sep.decode(), "false" + sep.decode())
+        return pc.if_else(pa.array(values), pa.scalar(yes, text), pa.scalar(no, text))
+    if values.dtype.kind in "iuf":
         import orjson
 
-        text = orjson.dumps(floats, option=orjson.OPT_SERIALIZE_NUMPY)[1:-1].decode("ascii")
-        return pc.split_pattern(pa.array([text], pa.string()), ",").flatten()
-    if values.dtype.kind in "UO":  # few distinct texts (kinds, statuses): codes + levels
-        import pandas as pd
+        data = np.ascontiguousarray(values, np.float64 if values.dtype.kind == "f" else np.int64)
+        raw = bytearray(orjson.dumps(data, option=orjson.OPT_SERIALIZE_NUMPY))
+        buf = np.frombuffer(raw, np.uint8)
+        buf[-1] = ord(",")  # "[a,b,c]" -> "[a,b,c,": every cell ends with a comma
+        ends = np.flatnonzero(buf == ord(","))
+        if sep != b",":
+            buf[ends] = sep[0]
+        offsets = np.empty(len(data) + 1, np.int64)
+        offsets[0], offsets[1:] = 1, ends + 1
+        return pa.LargeStringArray.from_buffers(len(data), pa.py_buffer(offsets), pa.py_buffer(raw))
+    import pandas as pd  # text: few distinct values (kinds, statuses): codes + levels
 
-        codes, levels = pd.factorize(np.asarray(values, dtype=object))
-        texts = [str(t) for t in levels]
-        bad = [t for t in texts if any(ch in t for ch in ",\n\r")]
-        if bad:
-            raise ParameterError(f"column {name}", bad[0], "text without commas or line breaks")
-        return pa.array(texts, pa.string()).take(pa.array(codes))
-    raise ParameterError(f"column {name}", str(values.dtype), "bool, integer, float or text")
+    codes, levels = pd.factorize(np.asarray(values, dtype=object))
+    texts = [str(t) for t in levels]
+    bad = [t for t in texts if any(ch in t for ch in ",\n\r")]
+    if bad:
+        raise ParameterError(f"column {name}", bad[0], "text without commas or line breaks")
+    return pa.array([t + sep.decode() for t in texts], text).take(pa.array(codes))
+
+
+def write_csv(
+    handle: BinaryIO,
+    columns: Mapping[str, np.ndarray],
+    units: Mapping[str, str] | None = None,
+    header: bool = True,
+) -> None:
+    """Write :func:`format_csv_bytes`'s text to an open binary file, piece by piece."""
+    for piece in csv_pieces(columns, units, header):
+        handle.write(piece)
 
 
 def write_csv_atomic(
@@ -183,7 +256,13 @@ def write_csv_atomic(
     header_comment:
         Accepted for compatibility, not written (see :func:`format_csv`).
     """
-    return write_bytes_atomic(path, format_csv_bytes(columns, units, header_comment))
+    pieces = csv_pieces(columns, units)
+    first = next(pieces)  # every check is made before the file is created
+    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
+        handle.write(first)
+        for piece in pieces:
+            handle.write(piece)
+    return Path(path)
 
 
 def read_csv(path: str | os.PathLike[str]) -> CsvTable:

@@ -12,13 +12,19 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from frictionlab.app.budget import RunEstimate, check_run_size, largest
+from frictionlab.app.budget import (
+    HISTORY_BYTES_PER_ROW,
+    RunEstimate,
+    check_run_size,
+    history_bound,
+    largest,
+)
 from frictionlab.driver import (
     SEGMENT_KINDS,
     InitialConditions,
@@ -122,10 +128,18 @@ RUN = Section("run", (
     Field("allow_large", BOOL, "run past the memory/time estimate", "", False),
 ), "how the run is made", "[run]")  # fmt: skip
 
+#: The file formats of the history (``[output] format``).
+HISTORY_FORMATS = tuple(HISTORY_BYTES_PER_ROW)
+
 OUTPUT = Section("output", (
-    Field("every", INTEGER, "record every k-th step", "", 1, low=1),
+    Field("every", INTEGER, "record every k-th step (default: every step while the history "
+          "stays under 1 GB, else the smallest k that keeps it under, with a warning)", "",
+          None, low=1),
     Field("points", listed(int, "integer"), "the points recorded (1-based; default all)", "",
           None),
+    Field("format", STRING, "file format of the history: csv (history.csv, text) or parquet "
+          "(history.parquet, binary columns with their units)", "", "csv",
+          choices=HISTORY_FORMATS),
 ), "what is recorded", "[output]")  # fmt: skip
 
 _SEG: dict[str, Any] = {"by": SEGMENT_KINDS["slide"], "per_point": True}
@@ -267,10 +281,19 @@ class RunOptions:
 
 @dataclass(frozen=True)
 class OutputOptions:
-    """``[output]``: record every k-th step (``every``) and only some ``points`` (1-based)."""
+    """``[output]``: record every k-th step (``every``) and only some ``points`` (1-based),
+    the history in ``format`` (``"csv"`` or ``"parquet"``). ``every_given``: whether the
+    file set ``every`` (otherwise it was chosen to bound the history's size)."""
 
     every: int = 1
     points: tuple[int, ...] | None = None
+    format: str = "csv"
+    every_given: bool = True
+
+    @property
+    def history_name(self) -> str:
+        """``history.csv`` or ``history.parquet``."""
+        return f"history.{self.format}"
 
     def recording(
         self,
@@ -303,7 +326,8 @@ def _parse_output(t: TomlTable | None) -> OutputOptions:
             if v in points[:i]:
                 raise InputError(f"[output].points has {v} twice: allowed each point once")
         points = tuple(sorted(points))
-    return OutputOptions(values["every"], points)
+    every = values["every"]
+    return OutputOptions(every or 1, points, values["format"], every is not None)
 
 
 def _parse_segment(t: TomlTable, base_dir: Path) -> Any:
@@ -418,6 +442,9 @@ class Scenario:
     output: OutputOptions = field(default_factory=OutputOptions)
     #: The work estimate made while parsing (``None`` for a scenario built in Python).
     estimate: RunEstimate | None = None
+    #: Warnings about the inputs, made while parsing (printed before the run, and in
+    #: summary.json's warnings).
+    warnings: tuple[str, ...] = ()
 
     @property
     def kind(self) -> str:
@@ -546,8 +573,12 @@ def parse_scenario(
     else:
         assert machine is not None
         counts = [(_machine_steps(machine), f"[machine].{_steps_key(machine)}")]
-    estimate = largest(counts, n, "[run].n_points", output.every, recorded, streamed)
-    check_run_size(estimate, opts.allow_large)
+    estimate = largest(counts, n, "[run].n_points", output.every, recorded, streamed, output.format)
+    check_run_size(estimate, opts.allow_large)  # the steps run whatever is recorded
+    every, warning = history_bound(estimate, output.every_given)
+    if every != output.every:  # the default recording, bounded
+        output = replace(output, every=every)
+        estimate = replace(estimate, every=every)
     inputs: dict[str, Any] = {
         "title": top["title"],
         "description": top["description"],
@@ -559,7 +590,11 @@ def parse_scenario(
             "max_halvings": opts.max_halvings,
             "peak_accuracy": opts.peak_accuracy,
         },
-        "output": {"every": output.every, "points": _or(output.points, "all")},
+        "output": {
+            "every": output.every,
+            "points": _or(output.points, "all"),
+            "format": output.format,
+        },
     }
     if program is not None:
         inputs["program"] = [_segment_echo(s) for s in program]
@@ -569,6 +604,7 @@ def parse_scenario(
         title=top["title"], description=top["description"], params=params, initial=init,
         run_options=opts, n_points=n, program=program, machine=machine, inputs=inputs,
         labels=_labels(n, varying), source=source, output=output, estimate=estimate,
+        warnings=() if warning is None else (warning,),
     )  # fmt: skip
 
 
