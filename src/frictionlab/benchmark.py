@@ -11,7 +11,7 @@ Figures (per contact point per increment, N points, all sliding unless stated):
   dlam out), compiled with numba ``parallel=True`` like the law's kernel;
 * ``coulomb_like_for_like``: :func:`coulomb_like_for_like`, a Coulomb radial return with
   the law's inputs and outputs (the 3x3 tangent included) into fresh arrays, as
-  ``update()`` returns them: the baseline of the ``<= 3x`` target (issue 26), timed with
+  ``update()`` returns them: the baseline of the ``<= 3x`` target, timed with
   one numba thread and with all of them, each time beside ``update()``;
 * ``floor``: :func:`transcendental_floor`, only the update's memory traffic and the
   math-library calls the law's per-point definition makes per sliding point (a test
