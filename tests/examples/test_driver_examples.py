@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -13,11 +11,8 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 @pytest.mark.slow
-def test_slide_hold_slide_example(tmp_path: Path) -> None:
-    out = subprocess.run(
-        [sys.executable, str(EXAMPLES / "slide_hold_slide.py"), str(tmp_path)],
-        capture_output=True, text=True, timeout=300,
-    )  # fmt: skip
+def test_slide_hold_slide_example(tmp_path: Path, run_script) -> None:  # type: ignore[no-untyped-def]
+    out = run_script(EXAMPLES / "slide_hold_slide.py", str(tmp_path))
     assert out.returncode == 0, out.stderr
     rows = np.loadtxt(tmp_path / "restart_peaks.csv", delimiter=",", skiprows=1)
     hold, mu_end, closed, peak = rows.T
@@ -28,11 +23,8 @@ def test_slide_hold_slide_example(tmp_path: Path) -> None:
 
 
 @pytest.mark.slow
-def test_stick_slip_example(tmp_path: Path) -> None:
-    out = subprocess.run(
-        [sys.executable, str(EXAMPLES / "stick_slip.py"), str(tmp_path)],
-        capture_output=True, text=True, timeout=300,
-    )  # fmt: skip
+def test_stick_slip_example(tmp_path: Path, run_script) -> None:  # type: ignore[no-untyped-def]
+    out = run_script(EXAMPLES / "stick_slip.py", str(tmp_path))
     assert out.returncode == 0, out.stderr
     regimes = [
         line.split()[-1] for line in out.stdout.splitlines() if line[:6].strip()[:1].isdigit()

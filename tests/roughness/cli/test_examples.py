@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -15,14 +13,8 @@ ROOT = Path(__file__).resolve().parents[3]
 
 
 @pytest.mark.slow
-def test_roughness_figures_example(tmp_path) -> None:
-    done = subprocess.run(
-        [sys.executable, str(ROOT / "examples" / "roughness_figures.py"), str(tmp_path)],
-        capture_output=True,
-        text=True,
-        timeout=300,
-        check=False,
-    )
+def test_roughness_figures_example(tmp_path, run_script) -> None:  # type: ignore[no-untyped-def]
+    done = run_script(ROOT / "examples" / "roughness_figures.py", str(tmp_path))
     assert done.returncode == 0, done.stderr
     out = tmp_path / "roughness_figures"
     names = ("fig6a_wedge_cases", "fig6b_generic_cases", "fig7_surfaces_2d", "fig8_wavelength_map")
@@ -52,14 +44,8 @@ def test_roughness_figures_example(tmp_path) -> None:
 
 
 @pytest.mark.slow
-def test_roughness_life_example(tmp_path) -> None:
-    done = subprocess.run(
-        [sys.executable, str(ROOT / "examples" / "roughness_life.py"), str(tmp_path)],
-        capture_output=True,
-        text=True,
-        timeout=300,
-        check=False,
-    )
+def test_roughness_life_example(tmp_path, run_script) -> None:  # type: ignore[no-untyped-def]
+    done = run_script(ROOT / "examples" / "roughness_life.py", str(tmp_path))
     assert done.returncode == 0, done.stderr
     out = tmp_path / "roughness_life"
     for name in ("fig10_adhesion", "fig11_wear", "fig12_hierarchy_1d", "fig13_hierarchy_2d",
