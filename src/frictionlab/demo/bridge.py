@@ -20,7 +20,7 @@ import numpy as np
 
 from frictionlab.app.bridge import run_bridge, write_bridge
 from frictionlab.app.simulate import run_scenario, write_results
-from frictionlab.demo import DemoContext
+from frictionlab.demo import DemoContext, law_rows
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_json_atomic, write_text_atomic
 from frictionlab.io.report import Section, format_value
@@ -165,12 +165,8 @@ def _law_rows(run: object) -> list[tuple[str, str, str]]:
     from frictionlab.app.bridge import BridgeRun
 
     assert isinstance(run, BridgeRun)
-    table = run.law.params
-    return [
-        (key, format_value(float(np.ravel(getattr(table, key))[0])), unit)
-        for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"), ("u", "1/m"),
-                          ("kappa", "1/m"), ("xi", "1/s"))
-    ]  # fmt: skip
+    return law_rows(run.law.params, (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"),
+                                     ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s")))  # fmt: skip
 
 
 #: The bridge's demo sections, in report order.

@@ -13,7 +13,7 @@ from collections.abc import Iterator
 from importlib import resources
 from pathlib import Path
 
-from frictionlab.demo import DemoContext
+from frictionlab.demo import DemoContext, law_rows
 from frictionlab.demo.fretting import fretting_section
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
@@ -125,12 +125,9 @@ def _law_rows(scenario: object) -> list[tuple[str, str, str]]:
     from frictionlab.schema.contact import ContactScenario
 
     assert isinstance(scenario, ContactScenario)
-    p = scenario.params
-    return [
-        (key, format_value(float(getattr(p, key))), unit)
-        for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"), ("alpha_t", "Pa/m"),
-                          ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s"))
-    ]  # fmt: skip
+    return law_rows(scenario.params, (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"),
+                                      ("alpha_t", "Pa/m"), ("u", "1/m"), ("kappa", "1/m"),
+                                      ("xi", "1/s")))  # fmt: skip
 
 
 #: The contact model's demo sections, in report order.
