@@ -41,6 +41,11 @@ def bundled_bridge_scenario(name: str) -> Iterator[Path]:
         yield Path(path)
 
 
+#: The fitted law's rows of the report: (key, unit).
+_LAW_KEYS = (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"), ("u", "1/m"), ("kappa", "1/m"),
+             ("xi", "1/s"))  # fmt: skip
+
+
 def _relative_source(summary_path: Path, source: Path) -> None:
     """Record ``source`` in a summary relative to the summary's folder.
 
@@ -107,7 +112,7 @@ def bridge_section(ctx: DemoContext) -> Section:
         "along -x, and a ridged surface, which resists across the ridges more than along "
         "them. The law takes its kinetic friction from the roughness (scale = roughness) and "
         "its static friction, healing and slip scales from the [law] table.",
-        law=_law_rows(run),
+        law=law_rows(params, _LAW_KEYS),  # the report compares them with the first law table
         parameters=_parameters(run),
     )
     sec.add_figure(
@@ -158,15 +163,6 @@ def _parameters(run: object) -> list[tuple[str, str, str]]:
         ("normal traction f_n", format_value(opts.normal_traction), "Pa"),
     ]
     return rows
-
-
-def _law_rows(run: object) -> list[tuple[str, str, str]]:
-    """The fitted law's rows (the report compares them with the first law table)."""
-    from frictionlab.app.bridge import BridgeRun
-
-    assert isinstance(run, BridgeRun)
-    return law_rows(run.law.params, (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"),
-                                     ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s")))  # fmt: skip
 
 
 #: The bridge's demo sections, in report order.

@@ -30,6 +30,11 @@ def bundled_contact_scenario(name: str) -> Iterator[Path]:
         yield Path(path)
 
 
+#: The contact law's rows of the report: (key, unit).
+_LAW_KEYS = (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"), ("alpha_t", "Pa/m"),
+             ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s"))  # fmt: skip
+
+
 def contact_section(ctx: DemoContext) -> Section:
     """The law in a finite-element contact model: precursor slip at the trailing edge"""
     from frictionlab.app.contact import run_contact_scenario, write_contact_results
@@ -65,7 +70,7 @@ def contact_section(ctx: DemoContext) -> Section:
         "1 MPa: slide 30 um, hold 10 s, slide 20 um. The drag's moment unloads the trailing "
         "edge, so sliding starts there while the rest of the interface is still in the "
         "sub-sliding state.",
-        law=_law_rows(scenario),
+        law=law_rows(scenario.params, _LAW_KEYS),  # compared with the first law table
         parameters=_parameters(scenario),
     )
     sec.add_figure(
@@ -118,16 +123,6 @@ def _parameters(scenario: object) -> list[tuple[str, str, str]]:
         ("pressure", format_value(scenario.normal.value), "Pa"),
     ]
     return rows
-
-
-def _law_rows(scenario: object) -> list[tuple[str, str, str]]:
-    """The contact law's rows (the report compares them with the first law table)."""
-    from frictionlab.schema.contact import ContactScenario
-
-    assert isinstance(scenario, ContactScenario)
-    return law_rows(scenario.params, (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"),
-                                      ("alpha_t", "Pa/m"), ("u", "1/m"), ("kappa", "1/m"),
-                                      ("xi", "1/s")))  # fmt: skip
 
 
 #: The contact model's demo sections, in report order.
