@@ -21,17 +21,8 @@ from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.tribometer import ROLES, read_tribometer
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    REQUIRED,
-    STRING,
-    Field,
-    Section,
-    listed,
-    load,
-)
+from frictionlab.schema.core import REQUIRED, Field, Section, load
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, listed
 from frictionlab.schema.scenario import (
     INITIAL,
     LAW,

@@ -29,19 +29,8 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import load_toml
 from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    PAIRS,
-    REQUIRED,
-    STRING,
-    Field,
-    Section,
-    listed,
-    load,
-    reraise,
-)
+from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, PAIRS, STRING, listed
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 

@@ -47,18 +47,8 @@ from frictionlab.roughness.topography import (
     read_prepared,
 )
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    REQUIRED,
-    STRING,
-    Field,
-    Kind,
-    Section,
-    listed,
-    load,
-)
+from frictionlab.schema.core import REQUIRED, Field, Section, load
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
 
 __all__ = [
     "ROUGHNESS_FILE", "SURFACE", "SURFACE_KINDS", "AdhesionOptions", "HierarchyOptions",

@@ -33,20 +33,8 @@ from frictionlab.driver.simulate import MAX_HALVINGS, count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    NUMBERS,
-    PAIRS,
-    REQUIRED,
-    STRING,
-    Field,
-    Section,
-    listed,
-    load,
-    reraise,
-)
+from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, NUMBERS, PAIRS, STRING, listed
 from frictionlab.subloading import SURFACES, SubloadingParams
 from frictionlab.subloading.params import (
     F_INTEGRATORS,
