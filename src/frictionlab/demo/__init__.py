@@ -73,9 +73,10 @@ def bundled_scenarios() -> list[str]:
 
 
 @contextlib.contextmanager
-def bundled_scenario(name: str) -> Iterator[Path]:
-    """A filesystem path to the bundled scenario ``name`` (e.g. ``"slide_hold_slide"``)."""
-    ref = resources.files("frictionlab") / "data" / "scenarios" / f"{name}.toml"
+def bundled_scenario(name: str, folder: str = "scenarios") -> Iterator[Path]:
+    """A filesystem path to the bundled scenario ``name`` (e.g. ``"slide_hold_slide"``) of
+    ``frictionlab/data/<folder>``."""
+    ref = resources.files("frictionlab") / "data" / folder / f"{name}.toml"
     with resources.as_file(ref) as path:
         yield Path(path)
 

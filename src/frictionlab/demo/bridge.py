@@ -12,15 +12,13 @@ import contextlib
 import json
 import os
 import time
-from collections.abc import Iterator
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
 from frictionlab.app.bridge import run_bridge, write_bridge
 from frictionlab.app.simulate import run_scenario, write_results
-from frictionlab.demo import DemoContext, law_rows
+from frictionlab.demo import DemoContext, bundled_scenario, law_rows
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_json_atomic, write_text_atomic
 from frictionlab.io.report import Section, format_value
@@ -33,12 +31,9 @@ __all__ = ["BRIDGE_SECTIONS", "bridge_section", "bundled_bridge_scenario"]
 CURVE_DIRECTIONS = (0.0, 90.0, 180.0, 270.0)
 
 
-@contextlib.contextmanager
-def bundled_bridge_scenario(name: str) -> Iterator[Path]:
+def bundled_bridge_scenario(name: str) -> contextlib.AbstractContextManager[Path]:
     """A filesystem path to the bundled bridge scenario ``name`` (e.g. ``"ratchet"``)."""
-    ref = resources.files("frictionlab") / "data" / "bridge" / f"{name}.toml"
-    with resources.as_file(ref) as path:
-        yield Path(path)
+    return bundled_scenario(name, "bridge")
 
 
 #: The fitted law's rows of the report: (key, unit).

@@ -9,11 +9,9 @@ from __future__ import annotations
 
 import contextlib
 import time
-from collections.abc import Iterator
-from importlib import resources
 from pathlib import Path
 
-from frictionlab.demo import DemoContext, law_rows
+from frictionlab.demo import DemoContext, bundled_scenario, law_rows
 from frictionlab.demo.fretting import fretting_section
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
@@ -22,12 +20,9 @@ from frictionlab.io.report import Section, format_value
 __all__ = ["CONTACT_SECTIONS", "bundled_contact_scenario", "contact_section"]
 
 
-@contextlib.contextmanager
-def bundled_contact_scenario(name: str) -> Iterator[Path]:
+def bundled_contact_scenario(name: str) -> contextlib.AbstractContextManager[Path]:
     """A filesystem path to the bundled contact scenario ``name`` (e.g. ``"pmma_block"``)."""
-    ref = resources.files("frictionlab") / "data" / "contact" / f"{name}.toml"
-    with resources.as_file(ref) as path:
-        yield Path(path)
+    return bundled_scenario(name, "contact")
 
 
 #: The contact law's rows of the report: (key, unit).

@@ -37,6 +37,7 @@ from frictionlab.schema.kinds import (  # re-exported: the declarations' vocabul
 __all__ = [
     "BOOL",
     "DEFS",
+    "DESCRIPTION",
     "INTEGER",
     "NUMBER",
     "NUMBERS",
@@ -44,6 +45,7 @@ __all__ = [
     "PAIRS",
     "REQUIRED",
     "STRING",
+    "TITLE",
     "Field",
     "Kind",
     "Section",
@@ -157,6 +159,11 @@ class Field:
         if doc and "$ref" not in out:
             out["description"] = doc
         return out
+
+
+#: The ``title`` and ``description`` keys at the top of every scenario file.
+TITLE = Field("title", STRING, "title of the run", "", "")
+DESCRIPTION = Field("description", STRING, "free text", "", "")
 
 
 @dataclass(frozen=True)
