@@ -1,7 +1,8 @@
 """The ``frictionlab`` command line.
 
 Exit codes: 0 success, 1 a computation failed, 2 bad input. Each subcommand lives in
-``frictionlab.commands.<name>`` and provides ``add_parser(subparsers)`` and ``run(args)``.
+``frictionlab.commands.<name>`` and provides ``add_parser(subparsers)``, which sets the
+``handler(args)`` that runs it.
 """
 
 from __future__ import annotations

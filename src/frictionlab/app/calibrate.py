@@ -20,7 +20,7 @@ import numpy as np
 
 from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
-from frictionlab.app.outputs import write_outputs
+from frictionlab.app.outputs import WorkflowBase, write_outputs
 from frictionlab.calibration import (
     CORRELATION_LIMIT,
     RELATIVE_STDERR_LIMIT,
@@ -318,7 +318,7 @@ def _inputs(cfg: CalibrationConfig) -> list[Path]:
     return [Path(cfg.source)] + [Path(cfg.source).parent / e["file"] for e in cfg.data_echo]
 
 
-class Calibrate:
+class Calibrate(WorkflowBase):
     """``frictionlab calibrate CONFIG.toml --out DIR`` (:mod:`frictionlab.commands.calibrate`)."""
 
     name = "calibrate"
@@ -388,13 +388,7 @@ class Calibrate:
         print(f"residual std {np.sqrt(fit.residual_variance):.3g} (friction ratio)")
         for line in identifiability(fit, result.profiles):
             print("  " + line)
-        print("wrote " + ", ".join(str(p) for p in written))
-
-    def notes(self, job: Any, result: CalibrationRun) -> list[str]:
-        return []
-
-    def failure(self, job: Any, result: CalibrationRun, out: Path) -> str | None:
-        return None
+        super().report(job, result, seconds, written)
 
 
 #: The calibration workflow.

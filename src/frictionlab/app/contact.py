@@ -18,7 +18,7 @@ import numpy as np
 
 from frictionlab._progress import ProgressFactory
 from frictionlab._version import __version__
-from frictionlab.app.outputs import write_outputs
+from frictionlab.app.outputs import WorkflowBase, write_outputs
 from frictionlab.contact.history import ContactHistory, front_arrival
 from frictionlab.contact.mesh import Discretisation
 from frictionlab.driver.simulate import status_labels
@@ -223,11 +223,10 @@ def _field_files(out: Path, history: ContactHistory, disc: Discretisation) -> li
     ]
 
 
-class Contact:
+class Contact(WorkflowBase):
     """``frictionlab contact SCENARIO.toml --out DIR`` (:mod:`frictionlab.commands.contact`)."""
 
     name = "contact"
-    aliases: tuple[str, ...] = ()
 
     def __init__(self) -> None:
         self._meshes: dict[int, Discretisation] = {}  # a run's mesh, for its field files
@@ -290,10 +289,7 @@ class Contact:
                 f"the sliding zone spans the interface at {100 * arrival['fraction_of_peak']:.1f}"
                 f" % of the peak force (t = {arrival['time']:.4g} s)"
             )
-        print("wrote " + ", ".join(str(p) for p in written))
-
-    def notes(self, job: ContactScenario, result: ContactHistory) -> list[str]:
-        return []
+        super().report(job, history, seconds, written)
 
     def failure(self, job: ContactScenario, history: ContactHistory, out: Path) -> str | None:
         if history.success:

@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from frictionlab._progress import ProgressFactory
+from frictionlab.app.outputs import WorkflowBase
 from frictionlab.io.scenario import Scenario
 
 __all__ = ["EXPORT", "ExportJob"]
@@ -31,11 +32,10 @@ class ExportJob:
     F_initial: float | None
 
 
-class Export:
+class Export(WorkflowBase):
     """``frictionlab export abaqus SCENARIO.toml --out DIR`` (frictionlab.commands.export)."""
 
     name = "export"
-    aliases: tuple[str, ...] = ()
 
     def parse(self, args: argparse.Namespace, out: Path) -> ExportJob:
         from frictionlab.errors import ParameterError
@@ -75,15 +75,6 @@ class Export:
 
     def inputs(self, job: ExportJob) -> list[Path]:
         return [Path(job.scenario.source)] if job.scenario.source else []
-
-    def report(self, job: ExportJob, result: None, seconds: float, written: list[Path]) -> None:
-        print("wrote " + ", ".join(str(p) for p in written))
-
-    def notes(self, job: ExportJob, result: None) -> list[str]:
-        return []
-
-    def failure(self, job: ExportJob, result: None, out: Path) -> str | None:
-        return None
 
 
 #: The export workflow.

@@ -10,7 +10,7 @@ from frictionlab._progress import ProgressFactory
 from frictionlab.io.atomic import write_json_atomic
 from frictionlab.io.provenance import stamp
 
-__all__ = ["SUMMARY", "Workflow", "write_outputs"]
+__all__ = ["SUMMARY", "Workflow", "WorkflowBase", "write_outputs"]
 
 #: The summary every workflow writes (last), with the provenance block.
 SUMMARY = "summary.json"
@@ -47,6 +47,22 @@ class Workflow(Protocol):
 
     def failure(self, job: Any, result: Any, out: Path) -> str | None:
         """Why the computation failed (exit code 1), or ``None``."""
+
+
+class WorkflowBase:
+    """The defaults of a :class:`Workflow`: no deprecated copies, the files written as
+    the terminal line, no notes, no failure."""
+
+    aliases: tuple[str, ...] = ()
+
+    def report(self, job: Any, result: Any, seconds: float, written: list[Path]) -> None:
+        print("wrote " + ", ".join(str(p) for p in written))
+
+    def notes(self, job: Any, result: Any) -> list[str]:
+        return []
+
+    def failure(self, job: Any, result: Any, out: Path) -> str | None:
+        return None
 
 
 def write_outputs(

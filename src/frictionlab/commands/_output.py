@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import argparse
+import importlib
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 
 def add_overwrite(parser: argparse.ArgumentParser) -> None:
@@ -40,3 +43,36 @@ def add_run_arguments(
         parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     parser.add_argument("--quiet", action="store_true", help=quiet_help)
     add_overwrite(parser)
+
+
+def add_workflow_parser(
+    sub: Any,
+    name: str,
+    help: str,
+    workflow: str,
+    input_help: str,
+    set_example: str,
+    *,
+    description: str | None = None,
+    **options: Any,
+) -> argparse.ArgumentParser:
+    """Register ``frictionlab NAME`` running ``workflow`` (``"module:ATTRIBUTE"``, imported
+    when the command runs) through :func:`frictionlab.commands._pipeline.run_command`;
+    ``options`` go to :func:`add_run_arguments`."""
+    parser = sub.add_parser(name, help=help, description=description or help)
+    add_run_arguments(parser, input_help, set_example, **options)
+    parser.set_defaults(handler=workflow_handler(workflow))
+    return parser
+
+
+def workflow_handler(workflow: str) -> Callable[[argparse.Namespace], int]:
+    """The ``args.handler`` running the workflow named ``"module:ATTRIBUTE"`` (imported
+    only then, so that ``frictionlab --help`` stays fast) through ``run_command``."""
+
+    def handler(args: argparse.Namespace) -> int:
+        from frictionlab.commands._pipeline import run_command
+
+        module, attribute = workflow.split(":")
+        return run_command(getattr(importlib.import_module(module), attribute), args)
+
+    return handler

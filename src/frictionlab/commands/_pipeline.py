@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Callable
 
 from frictionlab.app.outputs import Workflow, write_outputs
 from frictionlab.errors import FrictionlabError, InputError, ParameterError, ValidityError
@@ -53,11 +52,6 @@ def run_command(command: Command, args: argparse.Namespace) -> int:
         print(f"frictionlab: computation failed: {failure}", file=sys.stderr)
         return EXIT_FAILED
     return EXIT_OK
-
-
-def handler(command: Command) -> Callable[[argparse.Namespace], int]:
-    """The ``args.handler`` of a command: ``run_command(command, args)``."""
-    return lambda args: run_command(command, args)
 
 
 def exit_code(exc: BaseException, command: str) -> tuple[int, str | None]:

@@ -19,15 +19,20 @@ from __future__ import annotations
 
 import argparse
 
-from frictionlab.commands._output import add_run_arguments
+from frictionlab.commands._output import add_workflow_parser
 
 HELP = "fit the law's anisotropy to the roughness polar mu(beta) and write a runnable law"
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
-    parser = sub.add_parser(
+    add_workflow_parser(
+        sub,
         "bridge",
-        help=HELP,
+        HELP,
+        "frictionlab.app.bridge:BRIDGE",
+        "bridge scenario file (TOML)",
+        "bridge.scale=roughness",
+        plots=False,
         description=(
             "Compute mu(beta) of two rough surfaces over the full circle (lattice-spring "
             "model), fit the subloading-friction law's orthotropy and rotation vector to it, "
@@ -36,12 +41,3 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
             "bridge.png into --out (bridge.json: a deprecated copy of summary.json)."
         ),
     )
-    add_run_arguments(parser, "bridge scenario file (TOML)", "bridge.scale=roughness", plots=False)
-    parser.set_defaults(handler=run)
-
-
-def run(args: argparse.Namespace) -> int:
-    from frictionlab.app.bridge import BRIDGE
-    from frictionlab.commands._pipeline import run_command
-
-    return run_command(BRIDGE, args)

@@ -14,20 +14,12 @@ from __future__ import annotations
 
 import argparse
 
-from frictionlab.commands._output import add_run_arguments
+from frictionlab.commands._output import add_workflow_parser
 
 HELP = "fit the law's parameters to tribometer curves and write fitted.toml, summary.json, a report"
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
-    parser = sub.add_parser("calibrate", help=HELP, description=HELP)
-    add_run_arguments(parser, "calibration file (TOML)", "fit.profile=false or --set law.mu_s=0.6",
-                      input_name="config", plots=False)  # fmt: skip
-    parser.set_defaults(handler=run)
-
-
-def run(args: argparse.Namespace) -> int:
-    from frictionlab.app.calibrate import CALIBRATE
-    from frictionlab.commands._pipeline import run_command
-
-    return run_command(CALIBRATE, args)
+    add_workflow_parser(sub, "calibrate", HELP, "frictionlab.app.calibrate:CALIBRATE",
+                        "calibration file (TOML)", "fit.profile=false or --set law.mu_s=0.6",
+                        input_name="config", plots=False)  # fmt: skip

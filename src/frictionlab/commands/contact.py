@@ -11,19 +11,11 @@ from __future__ import annotations
 
 import argparse
 
-from frictionlab.commands._output import add_run_arguments
+from frictionlab.commands._output import add_workflow_parser
 
 HELP = "run the finite-element contact model (a block on a rigid base) from a TOML file"
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
-    parser = sub.add_parser("contact", help=HELP, description=HELP)
-    add_run_arguments(parser, "contact scenario file (TOML)", "block.element_size=0.005")
-    parser.set_defaults(handler=run)
-
-
-def run(args: argparse.Namespace) -> int:
-    from frictionlab.app.contact import CONTACT
-    from frictionlab.commands._pipeline import run_command
-
-    return run_command(CONTACT, args)
+    add_workflow_parser(sub, "contact", HELP, "frictionlab.app.contact:CONTACT",
+                        "contact scenario file (TOML)", "block.element_size=0.005")  # fmt: skip

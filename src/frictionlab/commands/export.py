@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import argparse
 
-from frictionlab.commands._output import add_run_arguments
+from frictionlab.commands._output import add_run_arguments, workflow_handler
 
 HELP = "write the scenario's law as an Abaqus user interaction (UINTER/VUINTER, C)"
 
@@ -21,11 +21,4 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("target", choices=("abaqus",), help="the FE code (abaqus)")
     add_run_arguments(parser, "scenario file (TOML) whose [law] is exported", "law.mu_s=0.6",
                       plots=False, quiet_help="print nothing")  # fmt: skip
-    parser.set_defaults(handler=run)
-
-
-def run(args: argparse.Namespace) -> int:
-    from frictionlab.app.export import EXPORT
-    from frictionlab.commands._pipeline import run_command
-
-    return run_command(EXPORT, args)
+    parser.set_defaults(handler=workflow_handler("frictionlab.app.export:EXPORT"))

@@ -11,9 +11,9 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from frictionlab.commands._output import add_overwrite
+from frictionlab.commands._output import add_overwrite, workflow_handler
 
-__all__ = ["add_parser", "run"]
+__all__ = ["add_parser"]
 
 
 def add_parser(subparsers: Any) -> argparse.ArgumentParser:
@@ -40,13 +40,5 @@ def add_parser(subparsers: Any) -> argparse.ArgumentParser:
         "--quiet", action="store_true", help="no progress bar, warnings or summary line"
     )
     add_overwrite(parser)
-    parser.set_defaults(handler=run)
+    parser.set_defaults(handler=workflow_handler("frictionlab.app.roughness:ROUGHNESS"))
     return parser
-
-
-def run(args: argparse.Namespace) -> int:
-    """Run the command; returns the exit code (errors propagate to ``cli.main``)."""
-    from frictionlab.app.roughness import ROUGHNESS
-    from frictionlab.commands._pipeline import run_command
-
-    return run_command(ROUGHNESS, args)

@@ -16,19 +16,13 @@ from __future__ import annotations
 
 import argparse
 
-from frictionlab.commands._output import add_run_arguments
+from frictionlab.commands._output import add_workflow_parser
 
 HELP = "run a scenario file (TOML) and write history.csv, summary.json and plots"
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
-    parser = sub.add_parser("simulate", help=HELP, description=HELP)
-    add_run_arguments(parser, "scenario file (TOML)", "law.mu_s=0.6 or --set program.2.steps=50")
-    parser.set_defaults(handler=run)
-
-
-def run(args: argparse.Namespace) -> int:
-    from frictionlab.app.simulate import SIMULATE
-    from frictionlab.commands._pipeline import run_command
-
-    return run_command(SIMULATE, args)
+    add_workflow_parser(
+        sub, "simulate", HELP, "frictionlab.app.simulate:SIMULATE", "scenario file (TOML)",
+        "law.mu_s=0.6 or --set program.2.steps=50",
+    )  # fmt: skip

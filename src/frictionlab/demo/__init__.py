@@ -20,9 +20,10 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
+from typing import Any
 
 from frictionlab._progress import ProgressFactory, no_progress
-from frictionlab.io.report import Report, Section
+from frictionlab.io.report import Report, Section, format_value
 
 __all__ = [
     "EXTRAS",
@@ -32,6 +33,7 @@ __all__ = [
     "bundled_scenarios",
     "check_extras",
     "default_builders",
+    "law_rows",
     "run_demo",
 ]
 
@@ -40,6 +42,15 @@ EXTRAS: dict[str, tuple[str, str]] = {
     "skfem": ("fem", "the finite-element contact section (scikit-fem)"),
     "threadpoolctl": ("fem", "the finite-element contact section (threadpoolctl)"),
 }
+
+
+def law_rows(params: Any, keys: Sequence[tuple[str, str]]) -> list[tuple[str, str, str]]:
+    """Rows ``(key, value, unit)`` of a report's law table: ``keys`` are ``(key, unit)``
+    pairs of ``params`` (a SubloadingParams); the value is that of the first point."""
+    import numpy as np
+
+    return [(key, format_value(float(np.ravel(getattr(params, key))[0])), unit)
+            for key, unit in keys]  # fmt: skip
 
 
 @dataclass
@@ -62,9 +73,10 @@ def bundled_scenarios() -> list[str]:
 
 
 @contextlib.contextmanager
-def bundled_scenario(name: str) -> Iterator[Path]:
-    """A filesystem path to the bundled scenario ``name`` (e.g. ``"slide_hold_slide"``)."""
-    ref = resources.files("frictionlab") / "data" / "scenarios" / f"{name}.toml"
+def bundled_scenario(name: str, folder: str = "scenarios") -> Iterator[Path]:
+    """A filesystem path to the bundled scenario ``name`` (e.g. ``"slide_hold_slide"``) of
+    ``frictionlab/data/<folder>``."""
+    ref = resources.files("frictionlab") / "data" / folder / f"{name}.toml"
     with resources.as_file(ref) as path:
         yield Path(path)
 

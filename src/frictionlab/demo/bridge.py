@@ -12,15 +12,13 @@ import contextlib
 import json
 import os
 import time
-from collections.abc import Iterator
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
 from frictionlab.app.bridge import run_bridge, write_bridge
 from frictionlab.app.simulate import run_scenario, write_results
-from frictionlab.demo import DemoContext
+from frictionlab.demo import DemoContext, bundled_scenario, law_rows
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_json_atomic, write_text_atomic
 from frictionlab.io.report import Section, format_value
@@ -33,12 +31,14 @@ __all__ = ["BRIDGE_SECTIONS", "bridge_section", "bundled_bridge_scenario"]
 CURVE_DIRECTIONS = (0.0, 90.0, 180.0, 270.0)
 
 
-@contextlib.contextmanager
-def bundled_bridge_scenario(name: str) -> Iterator[Path]:
+def bundled_bridge_scenario(name: str) -> contextlib.AbstractContextManager[Path]:
     """A filesystem path to the bundled bridge scenario ``name`` (e.g. ``"ratchet"``)."""
-    ref = resources.files("frictionlab") / "data" / "bridge" / f"{name}.toml"
-    with resources.as_file(ref) as path:
-        yield Path(path)
+    return bundled_scenario(name, "bridge")
+
+
+#: The fitted law's rows of the report: (key, unit).
+_LAW_KEYS = (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"), ("u", "1/m"), ("kappa", "1/m"),
+             ("xi", "1/s"))  # fmt: skip
 
 
 def _relative_source(summary_path: Path, source: Path) -> None:
@@ -107,7 +107,7 @@ def bridge_section(ctx: DemoContext) -> Section:
         "along -x, and a ridged surface, which resists across the ridges more than along "
         "them. The law takes its kinetic friction from the roughness (scale = roughness) and "
         "its static friction, healing and slip scales from the [law] table.",
-        law=_law_rows(run),
+        law=law_rows(params, _LAW_KEYS),  # the report compares them with the first law table
         parameters=_parameters(run),
     )
     sec.add_figure(
@@ -158,19 +158,6 @@ def _parameters(run: object) -> list[tuple[str, str, str]]:
         ("normal traction f_n", format_value(opts.normal_traction), "Pa"),
     ]
     return rows
-
-
-def _law_rows(run: object) -> list[tuple[str, str, str]]:
-    """The fitted law's rows (the report compares them with the first law table)."""
-    from frictionlab.app.bridge import BridgeRun
-
-    assert isinstance(run, BridgeRun)
-    table = run.law.params
-    return [
-        (key, format_value(float(np.ravel(getattr(table, key))[0])), unit)
-        for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_t", "Pa/m"), ("u", "1/m"),
-                          ("kappa", "1/m"), ("xi", "1/s"))
-    ]  # fmt: skip
 
 
 #: The bridge's demo sections, in report order.

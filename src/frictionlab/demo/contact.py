@@ -9,11 +9,9 @@ from __future__ import annotations
 
 import contextlib
 import time
-from collections.abc import Iterator
-from importlib import resources
 from pathlib import Path
 
-from frictionlab.demo import DemoContext
+from frictionlab.demo import DemoContext, bundled_scenario, law_rows
 from frictionlab.demo.fretting import fretting_section
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
@@ -22,12 +20,14 @@ from frictionlab.io.report import Section, format_value
 __all__ = ["CONTACT_SECTIONS", "bundled_contact_scenario", "contact_section"]
 
 
-@contextlib.contextmanager
-def bundled_contact_scenario(name: str) -> Iterator[Path]:
+def bundled_contact_scenario(name: str) -> contextlib.AbstractContextManager[Path]:
     """A filesystem path to the bundled contact scenario ``name`` (e.g. ``"pmma_block"``)."""
-    ref = resources.files("frictionlab") / "data" / "contact" / f"{name}.toml"
-    with resources.as_file(ref) as path:
-        yield Path(path)
+    return bundled_scenario(name, "contact")
+
+
+#: The contact law's rows of the report: (key, unit).
+_LAW_KEYS = (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"), ("alpha_t", "Pa/m"),
+             ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s"))  # fmt: skip
 
 
 def contact_section(ctx: DemoContext) -> Section:
@@ -65,7 +65,7 @@ def contact_section(ctx: DemoContext) -> Section:
         "1 MPa: slide 30 um, hold 10 s, slide 20 um. The drag's moment unloads the trailing "
         "edge, so sliding starts there while the rest of the interface is still in the "
         "sub-sliding state.",
-        law=_law_rows(scenario),
+        law=law_rows(scenario.params, _LAW_KEYS),  # compared with the first law table
         parameters=_parameters(scenario),
     )
     sec.add_figure(
@@ -118,19 +118,6 @@ def _parameters(scenario: object) -> list[tuple[str, str, str]]:
         ("pressure", format_value(scenario.normal.value), "Pa"),
     ]
     return rows
-
-
-def _law_rows(scenario: object) -> list[tuple[str, str, str]]:
-    """The contact law's rows (the report compares them with the first law table)."""
-    from frictionlab.schema.contact import ContactScenario
-
-    assert isinstance(scenario, ContactScenario)
-    p = scenario.params
-    return [
-        (key, format_value(float(getattr(p, key))), unit)
-        for key, unit in (("mu_s", "-"), ("mu_k", "-"), ("alpha_n", "Pa/m"), ("alpha_t", "Pa/m"),
-                          ("u", "1/m"), ("kappa", "1/m"), ("xi", "1/s"))
-    ]  # fmt: skip
 
 
 #: The contact model's demo sections, in report order.

@@ -109,6 +109,12 @@ def _law_rows(scenario: Scenario) -> list[tuple[str, str, str]]:
     return rows
 
 
+def _section(title: str, scenario: Scenario, description: str | None = None) -> Section:
+    """A report section with the scenario's law and parameter tables."""
+    text = scenario.description if description is None else description
+    return Section(title, text, law=_law_rows(scenario), parameters=_parameters(scenario))
+
+
 def _parameters(scenario: Scenario) -> list[tuple[str, str, str]]:
     """Parameter table rows: the initial contact and the programme."""
     rows = []
@@ -165,12 +171,7 @@ def monotonic_section(ctx: DemoContext) -> Section:
     )
     save_figure(ax.figure, ctx.out_dir / rel / "steady.png")  # type: ignore[arg-type]
     peaks = h.friction_ratio.max(axis=0)
-    sec = Section(
-        "Monotonic sliding to kinetic friction",
-        sc.description,
-        law=_law_rows(sc),
-        parameters=_parameters(sc),
-    )
+    sec = _section("Monotonic sliding to kinetic friction", sc)
     sec.add_figure(
         f"{rel}/friction.png",
         "Friction ratio against slip (left) and time (right) at four sliding velocities: a "
@@ -223,8 +224,7 @@ def slide_hold_slide_section(ctx: DemoContext) -> Section:
     show_length_in(zoom.axes[0].xaxis, "slip along e_1", *window)  # um, not 0.0009 m
     zoom.axes[0].set_ylim(*_zoom_limits(h.slip[..., 0], h.friction_ratio, window))
     save_figure(zoom, ctx.out_dir / rel / "restart_zoom.png")
-    sec = Section("Slide-hold-slide: recovery of static friction", sc.description,
-                  law=_law_rows(sc), parameters=_parameters(sc))  # fmt: skip
+    sec = _section("Slide-hold-slide: recovery of static friction", sc)
     sec.add_figure(
         f"{rel}/friction.png",
         "The whole programme for five hold times: sliding to kinetic friction, the hold "
@@ -286,8 +286,7 @@ def reversal_section(ctx: DemoContext) -> Section:
     )
     amplitude = float(np.ravel(sc.inputs["program"][2]["amplitude"])[0])
     max_step = float(np.ravel(sc.inputs["program"][1]["max_step"])[0])
-    sec = Section("Reversal, displacement cycles and ratcheting", sc.description,
-                  law=_law_rows(sc), parameters=_parameters(sc))  # fmt: skip
+    sec = _section("Reversal, displacement cycles and ratcheting", sc)
     sec.add_figure(
         f"{rel}/friction.png",
         "Forward slide, reversal back to the start, then four cycles of "
@@ -332,11 +331,8 @@ def anisotropy_section(ctx: DemoContext) -> Section:
     final = hr.traction[-1, :, 0] / hr.traction[-1, :, 2]
     C = np.asarray(so.params.orthotropy)
     distance = float(np.ravel(sr.inputs["program"][0]["distance"])[0])
-    sec = Section(
-        "Rotational and orthotropic anisotropy",
-        sr.description + " " + so.description,
-        law=_law_rows(sr),
-        parameters=_parameters(sr),
+    sec = _section(
+        "Rotational and orthotropic anisotropy", sr, sr.description + " " + so.description
     )
     sec.add_figure(
         f"{rel_r}/friction.png",
@@ -393,8 +389,7 @@ def pressure_section(ctx: DemoContext) -> Section:
     assert main is not None
     ax = plot_pressure_dependence(results, curves)
     save_figure(ax.figure, ctx.out_dir / "pressure" / "pressure.png")  # type: ignore[arg-type]
-    sec = Section("Pressure dependence of the closed sliding-yield surfaces", main.description,
-                  law=_law_rows(main), parameters=_parameters(main))  # fmt: skip
+    sec = _section("Pressure dependence of the closed sliding-yield surfaces", main)
     sec.add_figure(
         "pressure/pressure.png",
         "Steady friction coefficient against normal traction for the four closed surfaces "
@@ -448,12 +443,7 @@ def stick_slip_section(ctx: DemoContext) -> Section:
     )
     ax = plot_stability_map(factors, osc, V)
     save_figure(ax.figure, ctx.out_dir / rel / "stability_map.png")  # type: ignore[arg-type]
-    sec = Section(
-        "Stick-slip of a spring-slider",
-        sc.description,
-        law=_law_rows(sc),
-        parameters=_parameters(sc),
-    )
+    sec = _section("Stick-slip of a spring-slider", sc)
     sec.add_figure(
         f"{rel}/friction.png",
         "Quasi-static slider: friction ratio and slider speed against load-point travel. "

@@ -17,7 +17,8 @@ import numpy as np
 
 from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient, steady_distance
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.schema.core import INTEGER, NUMBER, STRING, Field, Section, listed, load
+from frictionlab.schema.core import Field, Section, load
+from frictionlab.schema.kinds import INTEGER, NUMBER, STRING, listed
 from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, parse_roughness
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, initial_state

@@ -21,18 +21,8 @@ from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.tribometer import ROLES, read_tribometer
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    REQUIRED,
-    STRING,
-    Field,
-    Kind,
-    Section,
-    listed,
-    load,
-)
+from frictionlab.schema.core import DESCRIPTION, REQUIRED, TITLE, Field, Section, load
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
 from frictionlab.schema.scenario import (
     INITIAL,
     LAW,
@@ -122,8 +112,8 @@ DATA = Section("data", (
     Field("program", table=SEGMENT, many=True, default=REQUIRED),
 ), "one measured curve", "[[data]]")  # fmt: skip
 CALIBRATE_FILE = Section("calibrate", (
-    Field("title", STRING, "title of the run", "", ""),
-    Field("description", STRING, "free text", "", ""),
+    TITLE,
+    DESCRIPTION,
     Field("law", table=LAW, default=REQUIRED),
     Field("fit", table=FIT, default=REQUIRED),
     Field("data", table=DATA, many=True, default=REQUIRED),

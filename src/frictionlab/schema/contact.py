@@ -29,19 +29,8 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import load_toml
 from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    PAIRS,
-    REQUIRED,
-    STRING,
-    Field,
-    Section,
-    listed,
-    load,
-    reraise,
-)
+from frictionlab.schema.core import DESCRIPTION, REQUIRED, TITLE, Field, Section, load, reraise
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, PAIRS, STRING, listed
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
@@ -162,8 +151,8 @@ LAW_REGION = Section("law_region", (
 ), "a part of the interface with its own law values (later regions override earlier "
    "ones; keys given here override the bridge's)", "[[law_region]]", ref=True)  # fmt: skip
 CONTACT_FILE = Section("contact", (
-    Field("title", STRING, "title of the run", "", ""),
-    Field("description", STRING, "free text", "", ""),
+    TITLE,
+    DESCRIPTION,
     Field("block", table=BLOCK, default=REQUIRED),
     Field("mesh", table=MESH),
     Field("law", table=LAW, default=REQUIRED),

@@ -1,4 +1,4 @@
-"""Input declarations: :class:`Field`, :class:`Kind` and :class:`Section`.
+"""Input declarations: :class:`Field` and :class:`Section` (value kinds: :mod:`.kinds`).
 
 Every key of every input file is declared once, as a :class:`Field` of a :class:`Section`
 (its kind, unit, allowed range, default, per-point flag and a one-line doc). From that
@@ -14,7 +14,6 @@ section in front of the class's :class:`~frictionlab.errors.ParameterError`).
 from __future__ import annotations
 
 import dataclasses
-import math
 import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
@@ -23,9 +22,22 @@ from typing import Any, TypeVar
 
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import REQUIRED, Table, apply_overrides, load_toml, unknown_key
+from frictionlab.schema.kinds import (  # re-exported: the declarations' vocabulary
+    BOOL,
+    DEFS,
+    INTEGER,
+    NUMBER,
+    NUMBERS,
+    PAIRS,
+    STRING,
+    Kind,
+    listed,
+)
 
 __all__ = [
     "BOOL",
+    "DEFS",
+    "DESCRIPTION",
     "INTEGER",
     "NUMBER",
     "NUMBERS",
@@ -33,6 +45,7 @@ __all__ = [
     "PAIRS",
     "REQUIRED",
     "STRING",
+    "TITLE",
     "Field",
     "Kind",
     "Section",
@@ -50,90 +63,6 @@ class _Omit:
 
 #: Default meaning "optional; when absent the key is not passed on" (the class's default).
 OMIT: Any = _Omit()
-
-
-@dataclass(frozen=True)
-class Kind:
-    """A value kind: how a value is read from TOML and how it is written in JSON Schema.
-
-    ``read(table, field)`` returns the typed value of a present key; ``json`` is the
-    JSON Schema of a value (``$defs`` names are resolved by the generator).
-    """
-
-    name: str
-    read: Callable[[Table, Field], Any]
-    json: Mapping[str, Any]
-
-
-def _scalar(kind: type) -> Callable[[Table, Field], Any]:
-    def read(t: Table, f: Field) -> Any:
-        return t.get(f.name, kind, choices=f.choices, check=f.check(), allowed=f.allowed_text())
-
-    return read
-
-
-def _number(value: Any, name: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise InputError(f"{name} must be a number, got {type(value).__name__} {value!r}")
-    if not math.isfinite(value):
-        raise InputError(f"{name} = {value} must be finite")
-    return float(value)
-
-
-def _numbers(t: Table, f: Field) -> Any:
-    """A number or a non-empty list of numbers (one per point)."""
-    value, name = t.raw(f.name), f"{t.where}.{f.name}"
-    if isinstance(value, list):
-        if not value:
-            raise InputError(f"{name} must be a number or a non-empty list of numbers, got []")
-        return [_number(v, f"{name}[{i}]") for i, v in enumerate(value)]
-    return _number(value, name)
-
-
-def _pairs(t: Table, f: Field) -> Any:
-    """A pair ``[a, b]`` or a list of pairs (one per point)."""
-    value, name = t.raw(f.name), f"{t.where}.{f.name}"
-    if isinstance(value, list) and len(value) == 2 and not any(isinstance(v, list) for v in value):
-        return [_number(v, f"{name}[{i}]") for i, v in enumerate(value)]
-    if isinstance(value, list) and value and all(isinstance(v, list) for v in value):
-        out = []
-        for i, pair in enumerate(value):
-            if len(pair) != 2:
-                raise InputError(f"{name}[{i}] must have 2 entries, got {len(pair)}")
-            out.append([_number(v, f"{name}[{i}][{j}]") for j, v in enumerate(pair)])
-        return out
-    raise InputError(f"{name} must be a pair [a, b] or a list of pairs, got {value!r}")
-
-
-def listed(items: type, json_items: str, length: int | tuple[int, ...] | None = None) -> Kind:
-    """A list of ``items`` (float, int or str), optionally of a given length (or lengths)."""
-    lengths = (length,) if isinstance(length, int) else length
-    schema: dict[str, Any] = {"type": "array", "items": {"type": json_items}}
-    if lengths:
-        schema.update(minItems=min(lengths), maxItems=max(lengths))
-
-    def read(t: Table, f: Field) -> Any:
-        return t.get_list(f.name, items, length=length)
-
-    return Kind(f"list of {json_items}s", read, schema)
-
-
-NUMBER = Kind("number", _scalar(float), {"type": "number"})
-INTEGER = Kind("integer", _scalar(int), {"type": "integer"})
-STRING = Kind("string", _scalar(str), {"type": "string"})
-BOOL = Kind("bool", _scalar(bool), {"type": "boolean"})
-#: A number, or a list of numbers (one per contact point).
-NUMBERS = Kind("number(s)", _numbers, {"$ref": "#/$defs/numbers"})
-#: A pair [a, b], or a list of pairs (one per contact point).
-PAIRS = Kind("pair(s)", _pairs, {"$ref": "#/$defs/pairs"})
-#: Schemas of the shared value kinds (``$defs`` of each generated schema that uses them).
-DEFS: dict[str, Any] = {
-    "numbers": {"anyOf": [{"type": "number"},
-                          {"type": "array", "items": {"type": "number"}, "minItems": 1}]},
-    "pairs": {"anyOf": [{"$ref": "#/$defs/pair"},
-                        {"type": "array", "items": {"$ref": "#/$defs/pair"}, "minItems": 1}]},
-    "pair": {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2},
-}  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -230,6 +159,11 @@ class Field:
         if doc and "$ref" not in out:
             out["description"] = doc
         return out
+
+
+#: The ``title`` and ``description`` keys at the top of every scenario file.
+TITLE = Field("title", STRING, "title of the run", "", "")
+DESCRIPTION = Field("description", STRING, "free text", "", "")
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,8 @@ from typing import Any
 from frictionlab.schema.bridge import BRIDGE_FILE
 from frictionlab.schema.calibrate import CALIBRATE_FILE
 from frictionlab.schema.contact import CONTACT_FILE
-from frictionlab.schema.core import DEFS, OMIT, REQUIRED, Field, Section
+from frictionlab.schema.core import OMIT, REQUIRED, Field, Section
+from frictionlab.schema.kinds import DEFS
 from frictionlab.schema.roughness import ROUGHNESS_FILE
 from frictionlab.schema.scenario import SCENARIO_FILE
 from frictionlab.schema.sweep import SWEEP_FILE

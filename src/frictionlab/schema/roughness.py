@@ -47,18 +47,8 @@ from frictionlab.roughness.topography import (
     read_prepared,
 )
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    REQUIRED,
-    STRING,
-    Field,
-    Kind,
-    Section,
-    listed,
-    load,
-)
+from frictionlab.schema.core import REQUIRED, TITLE, Field, Section, load
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
 
 __all__ = [
     "ROUGHNESS_FILE", "SURFACE", "SURFACE_KINDS", "AdhesionOptions", "HierarchyOptions",
@@ -383,7 +373,7 @@ _TOP = (
         open="low",
         allowed="a local friction coefficient mu0 > 0",
     ),
-    Field("title", STRING, "title of the run", "", ""),
+    TITLE,
     Field("lower", table=SURFACE, default=REQUIRED, doc="surface 1, fixed"),
     Field("upper", table=SURFACE, default=REQUIRED, doc="surface 2, sliding"),
     Field("sliding", table=SLIDING, default=REQUIRED),

@@ -39,20 +39,8 @@ from frictionlab.driver.simulate import MAX_HALVINGS, count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import (
-    BOOL,
-    INTEGER,
-    NUMBER,
-    NUMBERS,
-    PAIRS,
-    REQUIRED,
-    STRING,
-    Field,
-    Section,
-    listed,
-    load,
-    reraise,
-)
+from frictionlab.schema.core import DESCRIPTION, REQUIRED, TITLE, Field, Section, load, reraise
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, NUMBERS, PAIRS, STRING, listed
 from frictionlab.subloading import SURFACES, SubloadingParams
 from frictionlab.subloading.params import (
     F_INTEGRATORS,
@@ -191,8 +179,8 @@ MACHINE = Section("machine", (
 ), "the stick-slip spring-slider (instead of [[program]])", "[machine]")  # fmt: skip
 
 SCENARIO_FILE = Section("scenario", (
-    Field("title", STRING, "title of the run", "", ""),
-    Field("description", STRING, "free text", "", ""),
+    TITLE,
+    DESCRIPTION,
     Field("law", table=LAW, default=REQUIRED),
     Field("initial", table=INITIAL, default=REQUIRED),
     Field("run", table=RUN),

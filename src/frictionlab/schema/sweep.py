@@ -15,7 +15,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from frictionlab.errors import InputError
-from frictionlab.schema.core import INTEGER, REQUIRED, STRING, Field, Section, load
+from frictionlab.schema.core import REQUIRED, Field, Section, load
+from frictionlab.schema.kinds import INTEGER, STRING
 
 if TYPE_CHECKING:
     from frictionlab.sweep.cases import Case

@@ -22,10 +22,8 @@ from frictionlab._jit import njit
 from frictionlab.errors import ParameterError
 from frictionlab.subloading.params import SubloadingParams
 from frictionlab.subloading.surfaces import (
-    CAM_CLAY,
-    MODIFIED_CAM_CLAY,
     SURFACE_CODES,
-    TEAR,
+    g_inverse_scalar,
     g_value,
     potentials,
 )
@@ -321,25 +319,12 @@ def _closed_snap_back(code, tear_k, fn, Fk, Fs, kappa, m, alpha_t, a_max, failed
             continue
         for j in range(65):
             F = Fk[i] + (Fs[i] - Fk[i]) * (j / 64.0)
-            chi = _g_inverse(code, F / fn[i], tear_k)
+            chi = g_inverse_scalar(code, F / fn[i], tear_k)
             dg = g_value(code, tear_k, chi)[1]
             softening = kappa[i] * max(F / Fk[i] - 1.0, 0.0) ** m[i]
             if not alpha_t[i] * dg / a_max[i] > softening:
                 failed_at[i] = F
                 break
-
-
-@njit(cache=True)
-def _g_inverse(code: int, G: float, tear_k: float) -> float:
-    """Scalar chi* with g(chi*) = G >= 1 (same formulas as ``surfaces.g_inverse``)."""
-    if code == CAM_CLAY:
-        return math.log(G)
-    if code == MODIFIED_CAM_CLAY:
-        return math.sqrt(G - 1.0)
-    if code == TEAR:
-        a = 1.0 / (2.0 * tear_k + 1.0)
-        return math.sqrt((1.0 - G ** (-1.0 / tear_k)) / a)
-    return 2.0 * (1.0 - 1.0 / G)  # parabola
 
 
 def check_snap_back(

@@ -18,6 +18,7 @@ return map; the NumPy functions below them are the public, vectorised views.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -147,6 +148,14 @@ def g_inverse(surface: str, G: ArrayLike, tear_k: float = 1.0) -> np.ndarray:
     G = np.asarray(G, dtype=np.float64)
     if np.any(~(G >= 1.0)):
         raise ParameterError("G", G, "G = F/f_n >= 1 (the normal traction inside the surface)")
+    if code not in (CAM_CLAY, MODIFIED_CAM_CLAY, TEAR, PARABOLA):
+        raise ParameterError("surface", surface, "a closed surface (the cone has no g)")
+    return _g_inverse(code, G, tear_k)
+
+
+def _g_inverse(code: int, G: Any, tear_k: float) -> Any:
+    """chi* with g(chi*) = G >= 1 of the closed surface ``code``: on NumPy arrays here, on
+    scalars compiled (:data:`g_inverse_scalar`)."""
     if code == CAM_CLAY:
         return np.log(G)
     if code == MODIFIED_CAM_CLAY:
@@ -154,9 +163,11 @@ def g_inverse(surface: str, G: ArrayLike, tear_k: float = 1.0) -> np.ndarray:
     if code == TEAR:
         a = 1.0 / (2.0 * tear_k + 1.0)
         return np.sqrt((1.0 - G ** (-1.0 / tear_k)) / a)
-    if code == PARABOLA:
-        return 2.0 * (1.0 - 1.0 / G)
-    raise ParameterError("surface", surface, "a closed surface (the cone has no g)")
+    return 2.0 * (1.0 - 1.0 / G)  # parabola
+
+
+#: Scalar chi* = g^-1(G) of a closed surface (code, G >= 1, tear_k), compiled.
+g_inverse_scalar = njit(cache=True)(_g_inverse)
 
 
 def friction_coefficient_on_yield(
