@@ -64,7 +64,7 @@ def test_elastic_model_writes_contact_outputs(tmp_path: Path, check_summary) -> 
         ("[contact]\npressure = 1e6\n", ["stiffness_per_area", "missing"]),
         (
             '[contact]\nmodel = "elastic"\npressure = -1.0\nmodulus = 1e9\n',
-            ["[contact].pressure = -1.0", "pressure > 0 Pa"],
+            ["[contact].pressure = -1.0", "allowed a positive value (Pa)"],
         ),
         (
             '[contact]\nmodel = "elastic"\npressure = 1e6\nmodulus = 1e9\nhardness = 1e5\n',
