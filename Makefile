@@ -39,11 +39,11 @@ docs: $(STAMP)
 	$(BIN)/mkdocs build --strict --quiet
 
 pytest: $(STAMP)
-	$(BIN)/python -m pytest -n auto -q
+	$(BIN)/python -m pytest -n auto --dist loadgroup -q
 
 # While developing: lint, type check and the tests not marked slow (no docs site).
 test-fast: check
-	$(BIN)/python -m pytest -n auto -q -m "not slow"
+	$(BIN)/python -m pytest -n auto --dist loadgroup -q -m "not slow"
 
 # docs/schemas/*.json and the key tables of the docs, from src/frictionlab/schema/.
 schemas: $(STAMP)

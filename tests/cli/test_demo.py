@@ -21,7 +21,8 @@ from frictionlab.cli import main
 from frictionlab.demo import bundled_scenarios, default_builders
 
 #: The whole demo runs once for this module (minutes on a 2-core machine).
-pytestmark = pytest.mark.slow
+# One worker runs the module: its fixture runs the whole demo once (make test: --dist loadgroup).
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("demo")]
 
 
 class Page(HTMLParser):
