@@ -96,9 +96,13 @@ class Measured:
 
 @cache
 def _registry() -> Any:
+    """pint's default registry; its parsed definitions are cached on disk (pint's own
+    ``cache_folder``, beside the compiled kernels), which saves ~0.4 CPU s per process."""
     import pint
 
-    return pint.UnitRegistry()
+    from frictionlab._compile_cache import cache_dir
+
+    return pint.UnitRegistry(cache_folder=cache_dir() / "pint")
 
 
 def _key(name: str) -> str:
