@@ -97,12 +97,17 @@ class Measured:
 @cache
 def _registry() -> Any:
     """pint's default registry; its parsed definitions are cached on disk (pint's own
-    ``cache_folder``, beside the compiled kernels), which saves ~0.4 CPU s per process."""
+    ``cache_folder``, beside the compiled kernels), which saves ~0.4 CPU s per process.
+    A cache that cannot be read or written (another process writing it, a read-only
+    folder) gives the registry built from pint's definition files instead."""
     import pint
 
     from frictionlab._compile_cache import cache_dir
 
-    return pint.UnitRegistry(cache_folder=cache_dir() / "pint")
+    try:
+        return pint.UnitRegistry(cache_folder=cache_dir() / "pint")
+    except Exception:  # pint/flexcache raise OSError or pickle's errors
+        return pint.UnitRegistry()
 
 
 def _key(name: str) -> str:
