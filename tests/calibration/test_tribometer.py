@@ -99,7 +99,7 @@ def test_unit_registry_cache_gives_the_si_factors(
     import frictionlab._compile_cache as cc
     from frictionlab.io import tribometer
 
-    monkeypatch.setattr(cc, "cache_dir", lambda: tmp_path)
+    monkeypatch.setattr(cc, "cache_dir", lambda: tmp_path / "0.0-key")
     tribometer._registry.cache_clear()
     try:
         tribometer._registry()  # writes the cache
