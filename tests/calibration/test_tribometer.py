@@ -88,3 +88,30 @@ def test_missing_file_and_empty_file(tmp_path: Path) -> None:
         read_tribometer(tmp_path / "nope.csv")
     with pytest.raises(InputError, match="holds no table"):
         read_tribometer(write(tmp_path / "empty.csv", ["# only a comment"]))
+
+
+@pytest.mark.parametrize("damage", ["none", "truncated"])
+def test_unit_registry_cache_gives_the_si_factors(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, damage: str
+) -> None:
+    """pint's on-disk cache (and a damaged one: the plain registry instead) gives the
+    definitions' exact factors: 1 min = 60 s, 1 h = 3600 s, 1 mm = 1e-3 m, 1 kN = 1e3 N."""
+    import frictionlab._compile_cache as cc
+    from frictionlab.io import tribometer
+
+    monkeypatch.setattr(cc, "cache_dir", lambda: tmp_path / "0.0-key")
+    tribometer._registry.cache_clear()
+    try:
+        tribometer._registry()  # writes the cache
+        pickles = list((tmp_path / "pint").glob("*.pickle"))
+        assert pickles, "pint wrote no cache"
+        if damage == "truncated":
+            for p in pickles:
+                p.write_bytes(p.read_bytes()[:20])
+        tribometer._registry.cache_clear()
+        assert tribometer._factor("min", "time", "t") == 60.0
+        assert tribometer._factor("h", "time", "t") == 3600.0
+        assert tribometer._factor("mm", "slip", "t") == pytest.approx(1e-3, rel=1e-15)
+        assert tribometer._factor("kN", "normal_force", "t") == pytest.approx(1e3, rel=1e-15)
+    finally:
+        tribometer._registry.cache_clear()
