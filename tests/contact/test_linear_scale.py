@@ -68,3 +68,39 @@ def test_memory_estimate_refuses_a_million_hex_block_before_meshing() -> None:
     with pytest.raises(ParameterError, match=r"element_size .* memory_limit = 4e\+09"):
         check_memory(block, SolverOptions(memory_limit=4e9))
     check_memory(pmma_block(), SolverOptions(memory_limit=4e9))
+
+
+def test_nested_dissection_gets_a_symmetric_graph_from_an_unsymmetric_pattern(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Fixed unknowns that keep only their diagonal row make K0's pattern unsymmetric;
+    METIS needs a symmetric adjacency (an unsymmetric one corrupted its heap and hung the
+    3-D Hertz run), so the ordering symmetrises the pattern it hands over."""
+    pymetis = pytest.importorskip("pymetis")
+    import scipy.sparse as sp
+
+    from frictionlab.contact import linear
+
+    disc = discretise(Block(3e9, 0.35, 0.01, 0.01, 0.0025, element="hex", depth=0.01))
+    K0 = disc.stiffness.tolil()
+    rows = np.arange(0, K0.shape[0], 7)
+    for r in rows:  # a fixed unknown: its row becomes the identity, its column stays
+        K0.rows[r], K0.data[r] = [int(r)], [1.0]
+    K0 = K0.tocsr()
+    assert abs(K0 - K0.T).nnz > 0  # the pattern is unsymmetric
+    seen: list[sp.csr_matrix] = []
+    real = pymetis.nested_dissection
+
+    def spy(adjacency: object, *args: object, **kwargs: object) -> object:
+        starts = np.asarray(adjacency.adj_starts)  # type: ignore[attr-defined]
+        adjacent = np.asarray(adjacency.adjacent)  # type: ignore[attr-defined]
+        n = len(starts) - 1
+        seen.append(sp.csr_matrix((np.ones(len(adjacent)), adjacent, starts), shape=(n, n)))
+        return real(adjacency, *args, **kwargs)
+
+    monkeypatch.setattr(pymetis, "nested_dissection", spy)
+    contact = disc.dofs[-1][np.isclose(disc.nodes[-1], disc.nodes[-1].min())]
+    order, k = linear._contact_last_order(K0, contact)
+    assert len(seen) == 1 and abs(seen[0] - seen[0].T).nnz == 0
+    assert np.array_equal(np.sort(order), np.arange(K0.shape[0]))
+    assert k >= contact.size

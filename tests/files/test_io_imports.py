@@ -12,8 +12,15 @@ from pathlib import Path
 
 import frictionlab.io
 
-#: frictionlab modules io/ may import besides itself: errors, the version, table helpers.
-ALLOWED = ("frictionlab.io", "frictionlab.errors", "frictionlab._version", "frictionlab._frames")
+#: Leaf helpers io/ may use: errors, the version, frame helpers, and the cache folder's
+#: location (pint's parsed unit definitions are cached beside the compiled kernels).
+ALLOWED = (
+    "frictionlab.io",
+    "frictionlab.errors",
+    "frictionlab._version",
+    "frictionlab._frames",
+    "frictionlab._compile_cache",
+)
 
 #: The old names of the input parsers, kept for one release as re-exports of
 #: frictionlab.schema (the parsers themselves live there). Remove them with the shims.

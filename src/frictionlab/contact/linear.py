@@ -435,7 +435,10 @@ def _contact_last_order(K0: sp.csc_matrix, contact: np.ndarray) -> tuple[np.ndar
     dense = np.flatnonzero(degree > 8 * max(int(np.median(degree)), 1))
     last = np.union1d(contact, dense)
     bulk = np.setdiff1d(np.arange(n), last)
-    graph = K0[bulk][:, bulk].tocsr()
+    graph = abs(K0[bulk][:, bulk]).tocsr()
+    # METIS needs a symmetric adjacency (an unsymmetric one corrupts its heap and hangs):
+    # K0's pattern is unsymmetric when fixed unknowns keep only their diagonal row.
+    graph = (graph + graph.T).tocsr()
     graph.setdiag(0.0)
     graph.eliminate_zeros()
     try:
