@@ -38,12 +38,14 @@ typecheck: $(STAMP)
 docs: $(STAMP)
 	$(BIN)/mkdocs build --strict --quiet
 
+# --dist loadfile: each test file on one worker, so a module-scoped fixture (the whole demo,
+# the Hertz-Mindlin solve) runs once and not once per worker.
 pytest: $(STAMP)
-	$(BIN)/python -m pytest -n auto --dist loadgroup -q
+	$(BIN)/python -m pytest -n auto --dist loadfile -q
 
 # While developing: lint, type check and the tests not marked slow (no docs site).
 test-fast: check
-	$(BIN)/python -m pytest -n auto --dist loadgroup -q -m "not slow"
+	$(BIN)/python -m pytest -n auto --dist loadfile -q -m "not slow"
 
 # docs/schemas/*.json and the key tables of the docs, from src/frictionlab/schema/.
 schemas: $(STAMP)

@@ -21,8 +21,7 @@ from frictionlab.cli import main
 from frictionlab.demo import bundled_scenarios, default_builders
 
 #: The whole demo runs once for this module (minutes on a 2-core machine).
-# One worker runs the module: its fixture runs the whole demo once (make test: --dist loadgroup).
-pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("demo")]
+pytestmark = pytest.mark.slow
 
 
 class Page(HTMLParser):

@@ -37,8 +37,7 @@ W, H = 40 * A, 20 * A
 H_FINE = A / 40  # documented mesh of the Hertz and Cattaneo-Mindlin checks
 RATIOS = (0.3, 0.6, 0.9)
 
-# One worker runs the module: its fixture solves the Hertz-Mindlin problem once (--dist loadgroup).
-pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("classical")]
+pytestmark = pytest.mark.slow
 
 
 def _block(size: float, nu: float = NU) -> Block:
