@@ -49,6 +49,7 @@ from frictionlab.roughness import _kernels
 from frictionlab.roughness.lattice import (
     MU_DEFINITIONS,
     LatticeGeometry,
+    _check_mu0,
     check_betas,
     lattice_geometry,
     masked_columns,
@@ -502,16 +503,6 @@ def _settings(settings: ElasticSettings | None, options: dict[str, Any]) -> Elas
     if options:
         raise ParameterError("options", sorted(options), "either settings= or keyword options")
     return settings
-
-
-def _check_mu0(mu0: Any) -> float:
-    if (
-        isinstance(mu0, bool)
-        or not isinstance(mu0, int | float | np.floating)
-        or not (math.isfinite(float(mu0)) and float(mu0) >= 0.0)
-    ):
-        raise ParameterError("mu0", mu0, "a finite local friction coefficient >= 0")
-    return float(mu0)
 
 
 def elastic_polar(
