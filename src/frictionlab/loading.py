@@ -13,6 +13,16 @@ rules, and read by both :func:`frictionlab.driver.program.plan_program` (N point
   the model's default resolution (``DEFAULT_STEPS`` of :mod:`frictionlab.driver.program`
   and of :mod:`frictionlab.contact.loading`).
 
+Both models also have a ``Traction`` segment (kind ``"traction"``): the tangential
+traction is prescribed and the slip solved for. What is loaded differs (a pair
+(f_t1, f_t2) at each point in the driver; the mean shear on the top, a scalar ``target``
+along ``direction_deg``, in the contact model), so each package declares its own class;
+``cycles`` has one meaning and one check here (:func:`_cycles`): the number of full
+load cycles, 0 (the default) for a single ramp to the target. The cycle's shape is the
+model's: in the driver the traction goes between its start value and the target and
+ends at the start (ratcheting); in the contact model it ramps to the target, then
+alternates +target -> -target -> +target (fretting) and ends at the target.
+
 Numeric fields are scalars or arrays ``(N,)`` (one value per point; the contact model
 takes scalars). Segments are frozen and checked at construction
 (:class:`~frictionlab.errors.ParameterError` naming the field).
@@ -68,6 +78,23 @@ def _steps(name: str, value: Any) -> int | None:
         return None
     if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:
         raise ParameterError(name, value, "an integer >= 1")
+    return int(value)
+
+
+#: The most load cycles of a traction segment.
+MAX_CYCLES = 10_000
+
+
+def _cycles(value: Any) -> int:
+    """``cycles`` of a traction segment: an integer 0 <= cycles <= 1e4 (``None``: 0)."""
+    if value is None:  # the driver's earlier spelling of "no cycles", kept for one release
+        return 0
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, int | np.integer)
+        or not 0 <= value <= MAX_CYCLES
+    ):
+        raise ParameterError("cycles", value, "an integer 0 <= cycles <= 1e4")
     return int(value)
 
 

@@ -14,7 +14,7 @@ from frictionlab.driver import (
     NormalStep,
     Reverse,
     Slide,
-    TractionControl,
+    Traction,
     Turn,
     simulate,
 )
@@ -30,7 +30,7 @@ def test_program_duration_is_the_time_the_driver_runs() -> None:
         Turn(angle_deg=90.0, steps=10),
         Cycle(amplitude=1e-5, velocity=1e-5, cycles=2, steps=40),
         NormalStep(traction=1.5e6, duration=3.0),
-        TractionControl(traction=[1e5, 0.0], duration=4.0, steps=10),
+        Traction(traction=[1e5, 0.0], duration=4.0, steps=10),
     )
     history = simulate(true_params(), program, InitialConditions(normal_traction=1e6))
     assert history.success, history.message

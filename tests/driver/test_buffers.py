@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from frictionlab.driver import Hold, Recording, Slide, TractionControl, simulate
+from frictionlab.driver import Hold, Recording, Slide, Traction, simulate
 from frictionlab.driver.program import plan_program
 from frictionlab.driver.stepping import OutputPool, advance
 from frictionlab.subloading import initial_state
@@ -73,7 +73,7 @@ def test_traction_control_of_many_points_is_not_checked_as_a_normal_traction() -
     normal-traction check and failed to broadcast)."""
     program = (
         Slide(velocity=0.1, distance=0.03, steps=3),
-        TractionControl(traction=(0.2, 0.0), steps=4),
+        Traction(traction=(0.2, 0.0), steps=4),
     )
     h = simulate(set_a(), program, n_points=4)
     assert h.success, h.message

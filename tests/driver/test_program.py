@@ -14,7 +14,7 @@ from frictionlab.driver import (
     Reverse,
     Slide,
     Table,
-    TractionControl,
+    Traction,
     Turn,
     plan_program,
     slide_hold_slide,
@@ -49,7 +49,7 @@ def controls(plan, start=None, n=1):  # type: ignore[no-untyped-def]
         (lambda: NormalStep(), "normal"),
         (lambda: NormalStep(approach=1e-3, traction=2.0), "normal"),
         (lambda: NormalStep(traction=-1.0), "traction"),
-        (lambda: TractionControl(traction=(0.1, 0.2, 0.3)), "traction"),
+        (lambda: Traction(traction=(0.1, 0.2, 0.3)), "traction"),
         (lambda: Table(time=[0.0], slip=[[0.0, 0.0]]), "time"),
         (lambda: Table(time=[0.0, 1.0, 0.5], slip=np.zeros((3, 2))), "time"),
         (lambda: Table(time=[0.0, 1.0], slip=np.zeros((3, 2))), "slip"),
@@ -119,7 +119,7 @@ def test_cycle_is_a_triangle_wave_about_the_start() -> None:
 
 
 def test_traction_control_cycles_go_to_the_target_and_back() -> None:
-    [plan] = plan_program((TractionControl(traction=(0.4, 0.2), cycles=2, steps=4),), 1)
+    [plan] = plan_program((Traction(traction=(0.4, 0.2), cycles=2, steps=4),), 1)
     cs = controls(plan, start=np.array([[0.1, 0.0, 1.0]]))
     targets = np.array([c.ft_target[0] for c in cs])  # type: ignore[index]
     assert len(cs) == 16
@@ -129,7 +129,7 @@ def test_traction_control_cycles_go_to_the_target_and_back() -> None:
 
 
 def test_traction_control_max_step_is_resolved_at_the_segment_start() -> None:
-    [plan] = plan_program((TractionControl(traction=(0.35, 0.0), max_step=0.1),), 1)
+    [plan] = plan_program((Traction(traction=(0.35, 0.0), max_step=0.1),), 1)
     assert plan.begin(np.array([[0.05, 0.0, 1.0]])) == 3
 
 
@@ -189,7 +189,7 @@ def test_slide_hold_slide_builder() -> None:
 def test_traction_legs_end_exactly_on_their_targets() -> None:
     """From f_t = (1, 0) Pa to (1e-17, 0): ``a + s (b - a)`` would end at 0 (1 + (1e-17 - 1)
     rounds to 0); each leg must end on its target exactly, and the return leg on the start."""
-    [plan] = plan_program((TractionControl(traction=(1e-17, 0.0), steps=3, cycles=2),), 1)
+    [plan] = plan_program((Traction(traction=(1e-17, 0.0), steps=3, cycles=2),), 1)
     steps = plan.begin(np.array([[1.0, 0.0, 5.0]]))
     ends = [plan.control(k).ft_target for k in (2, 5, 8, 11)]
     assert steps == 12

@@ -16,7 +16,7 @@ from frictionlab.driver import (
     Reverse,
     Slide,
     Table,
-    TractionControl,
+    Traction,
     Turn,
     simulate,
 )
@@ -48,7 +48,7 @@ segment = st.one_of(
     st.builds(Cycle, amplitude=st.floats(1e-4, 0.05), velocity=speeds, steps=st.integers(4, 24)),
     st.builds(NormalStep, traction_change=st.floats(-0.15, 1.0), steps=st.integers(1, 3)),
     st.builds(
-        TractionControl,
+        Traction,
         traction=st.tuples(st.floats(-0.25, 0.25), st.floats(-0.25, 0.25)),
         steps=st.integers(1, 10),
     ),

@@ -16,7 +16,7 @@ from frictionlab.driver import (
     Hold,
     Recording,
     Slide,
-    TractionControl,
+    Traction,
     Turn,
     simulate,
     slide_hold_slide,
@@ -132,7 +132,7 @@ def test_streamed_chunks_are_the_recorded_rows() -> None:
 def test_the_last_completed_step_of_a_failed_run_is_recorded() -> None:
     prog = (
         Slide(velocity=0.1, distance=0.5, steps=50),
-        TractionControl(traction=(0.6, 0.0), steps=10),
+        Traction(traction=(0.6, 0.0), steps=10),
     )
     full = simulate(set_a(), prog)
     part = simulate(set_a(), prog, recording=Recording(every=7))
@@ -234,7 +234,7 @@ def test_a_failed_run_thinned_in_memory_still_ends_on_its_last_step(chunk: int) 
     """Whatever chunk boundary the failure falls on, the last completed step stays."""
     prog = (
         Slide(velocity=0.1, distance=0.5, steps=50),
-        TractionControl(traction=(0.6, 0.0), steps=10),
+        Traction(traction=(0.6, 0.0), steps=10),
     )
     full = simulate(set_a(), prog)
     rec = Recording(every=3, sink=lambda c: None, chunk_rows=chunk, keep_rows=4)

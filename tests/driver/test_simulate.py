@@ -15,7 +15,7 @@ from frictionlab.driver import (
     Reverse,
     Slide,
     Table,
-    TractionControl,
+    Traction,
     Turn,
     simulate,
     slide_hold_slide,
@@ -103,7 +103,7 @@ def test_displacement_cycles_turning_points_alternate_and_decay() -> None:
 def test_ratcheting_under_traction_cycles_is_exact(steps: int) -> None:
     params = set_a(kappa=0.0, xi=0.0)
     R_max = 0.8
-    h = simulate(params, (TractionControl(traction=(R_max * MU_S, 0.0), cycles=4, steps=steps),))
+    h = simulate(params, (Traction(traction=(R_max * MU_S, 0.0), cycles=4, steps=steps),))
     assert h.success
     residual = h.slip[2 * steps * np.arange(1, 5), 0, 0]
     per_cycle = np.diff(np.concatenate([[0.0], residual]))
@@ -114,7 +114,7 @@ def test_ratcheting_under_traction_cycles_is_exact(steps: int) -> None:
 def test_traction_control_in_two_directions_reaches_the_target() -> None:
     params = set_a(orthotropy=(1.0, 0.6), rotation=(0.03, -0.02))
     target = np.array([[0.2, 0.1], [-0.1, 0.15]])
-    h = simulate(params, (TractionControl(traction=target, steps=20, duration=5.0),))
+    h = simulate(params, (Traction(traction=target, steps=20, duration=5.0),))
     assert h.success and h.n_points == 2
     np.testing.assert_allclose(h.traction[-1, :, :2], target, rtol=1e-11)
     # the slip found is the one that produces the traction: replaying it gives it back
@@ -131,7 +131,7 @@ def test_unreachable_traction_fails_and_keeps_the_history() -> None:
         set_a(),
         (
             Slide(velocity=0.1, distance=0.5, steps=50),
-            TractionControl(traction=(0.6, 0.0), steps=10),
+            Traction(traction=(0.6, 0.0), steps=10),
         ),
     )
     assert not h.success

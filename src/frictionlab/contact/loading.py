@@ -36,7 +36,7 @@ from typing import Any
 import numpy as np
 
 from frictionlab.errors import ParameterError
-from frictionlab.loading import Hold, Reverse, Slide
+from frictionlab.loading import Hold, Reverse, Slide, _cycles
 
 __all__ = [
     "DEFAULT_STEPS",
@@ -112,7 +112,15 @@ class NormalLoad:
 
 @dataclass(frozen=True)
 class Traction:
-    """Ramp the mean shear traction on the top to ``target`` [Pa] over ``duration`` [s]."""
+    """Ramp the mean shear traction on the top to ``target`` [Pa] over ``duration`` [s].
+
+    ``target`` is a scalar along ``direction_deg`` (counter-clockwise from x): the
+    contact model loads one top face, where the driver's
+    :class:`frictionlab.driver.program.Traction` prescribes a pair (f_t1, f_t2) per
+    point. ``cycles`` counts full load cycles as there (0, the default: one ramp); here
+    each cycle, after the ramp, goes +target -> -target -> +target (fretting), each leg
+    in ``duration`` and ``steps``.
+    """
 
     target: float
     duration: float
@@ -121,9 +129,7 @@ class Traction:
     cycles: int = 0
 
     def __post_init__(self) -> None:
-        c = self.cycles
-        if isinstance(c, bool) or not isinstance(c, int) or not (0 <= c <= 10_000):
-            raise ParameterError("cycles", c, "an integer 0 <= cycles <= 1e4")
+        object.__setattr__(self, "cycles", _cycles(self.cycles))
         _real("target", self.target, "a finite target [Pa]", True)
         _real("direction_deg", self.direction_deg, "a finite angle [deg]", True)
         _real("duration", self.duration, "duration > 0 [s]", self.duration > 0)

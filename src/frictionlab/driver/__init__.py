@@ -3,7 +3,7 @@
 Public API:
 
 * segments :class:`Slide`, :class:`Hold`, :class:`Reverse`, :class:`Turn`, :class:`Cycle`,
-  :class:`NormalStep`, :class:`TractionControl`, :class:`Table`; a :data:`Program` is a
+  :class:`NormalStep`, :class:`Traction`, :class:`Table`; a :data:`Program` is a
   tuple of them (:mod:`~frictionlab.driver.program`);
 * :func:`simulate` -> :class:`History` (:mod:`~frictionlab.driver.simulate`): N points in
   one vectorised run, automatic substepping, work counters;
@@ -13,6 +13,9 @@ Public API:
 Pure computation: no file I/O, no printing (progress through a callback).
 """
 
+from typing import Any
+
+from frictionlab.driver import program as _program
 from frictionlab.driver.program import (
     SEGMENT_KINDS,
     Control,
@@ -24,7 +27,7 @@ from frictionlab.driver.program import (
     Segment,
     Slide,
     Table,
-    TractionControl,
+    Traction,
     Turn,
     plan_program,
     slide_hold_slide,
@@ -64,7 +67,7 @@ __all__ = [
     "Slide",
     "SpringSlider",
     "Table",
-    "TractionControl",
+    "Traction",
     "Turn",
     "count_slip_events",
     "critical_stiffness",
@@ -76,3 +79,10 @@ __all__ = [
     "status_labels",
     "steady_F",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    """Former names (``TractionControl``), with a DeprecationWarning (PEP 562)."""
+    if name in _program.DEPRECATED_NAMES:
+        return getattr(_program, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

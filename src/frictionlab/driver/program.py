@@ -10,8 +10,8 @@ A :data:`Program` is a tuple of segments, run one after the other:
 * :class:`Cycle` — displacement-controlled cycles ``0 -> +A -> -A -> 0`` about the
   current position;
 * :class:`NormalStep` — a prescribed normal approach or normal-traction change;
-* :class:`TractionControl` — tangential traction-controlled loading (the driver solves
-  for the slip, so ratcheting can be simulated);
+* :class:`Traction` — tangential traction-controlled loading (the driver solves for
+  the slip, so ratcheting can be simulated); ``TractionControl`` is its deprecated name;
 * :class:`Table` — time, slip and normal traction (or approach) read from a table.
 
 Numeric fields are scalars shared by every point or arrays of shape ``(N,)`` (one value
@@ -31,6 +31,7 @@ time [s], tractions [Pa], angles in degrees (``*_deg``).
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, fields
 from typing import Any, ClassVar
@@ -45,6 +46,7 @@ from frictionlab.loading import (
     _array,
     _check_steps,
     _checked,
+    _cycles,
     _init_inherited,
     _max_step,
     _one_of,
@@ -67,7 +69,7 @@ __all__ = [
     "SegmentPlan",
     "Slide",
     "Table",
-    "TractionControl",
+    "Traction",
     "Turn",
     "plan_program",
     "program_points",
@@ -514,14 +516,18 @@ class _NormalPlan(SegmentPlan):
 
 
 @dataclass(frozen=True)
-class TractionControl:
+class Traction:
     """Tangential traction-controlled loading: reach the traction ``traction`` = (f_t1, f_t2) [Pa].
 
     The traction goes linearly from its value at the start of the segment to the
     target in ``steps`` equal increments (default 100; or ``max_step`` [Pa] of traction
     per step); the driver solves for the slip of each step with Newton's method on the
-    consistent tangent. With ``cycles = n`` the segment goes to the target and back to
-    the start traction n times (ratcheting: the residual slip grows each cycle).
+    consistent tangent. ``cycles`` counts full load cycles (0, the default: one ramp;
+    ``None`` is accepted as 0 for one release): with ``cycles = n`` the segment goes to
+    the target and back to the start traction n times (ratcheting: the residual slip
+    grows each cycle). The contact model's :class:`frictionlab.contact.loading.Traction`
+    is the same kind of segment for a whole top face: a mean shear ``target`` along
+    ``direction_deg`` instead of a pair per point.
     ``duration`` [s] is the time of one leg (default 0: rate-independent). The normal
     approach is held. A target the contact cannot carry (gross sliding) makes the
     computation fail.
@@ -529,7 +535,7 @@ class TractionControl:
 
     traction: Any
     duration: Any = 0.0
-    cycles: int | None = None
+    cycles: int = 0
     steps: int | None = None
     max_step: float | None = None
     kind: ClassVar[str] = "traction"
@@ -538,7 +544,7 @@ class TractionControl:
     def __post_init__(self) -> None:
         object.__setattr__(self, "traction", _array("traction", self.traction, shape_tail=(2,)))
         object.__setattr__(self, "duration", _checked("duration", self.duration, ">=0"))
-        _steps("cycles", self.cycles)
+        object.__setattr__(self, "cycles", _cycles(self.cycles))
         _check_steps(self)
 
     def sizes(self) -> set[int]:
@@ -549,7 +555,7 @@ class TractionControl:
 
 
 class _TractionPlan(SegmentPlan):
-    def __init__(self, seg: TractionControl, n: int) -> None:
+    def __init__(self, seg: Traction, n: int) -> None:
         target = np.broadcast_to(seg.traction, (n, 2)).astype(np.float64)
         resolved = {
             "kind": seg.kind,
@@ -560,7 +566,7 @@ class _TractionPlan(SegmentPlan):
         super().__init__(seg.kind, n, resolved)
         self.seg = seg
         self.target = target
-        self.legs = 1 if seg.cycles is None else 2 * seg.cycles
+        self.legs = 2 * seg.cycles if seg.cycles else 1
         self.per_leg = seg.steps or seg.default_steps
         self.resolved["steps"] = self.per_leg * self.legs
 
@@ -719,13 +725,13 @@ def _inherit(seg: Any, ctx: PlanContext) -> tuple[np.ndarray, np.ndarray]:
 
 
 # --------------------------------------------------------------------------- programmes
-Segment = Slide | Hold | Reverse | Turn | Cycle | NormalStep | TractionControl | Table
+Segment = Slide | Hold | Reverse | Turn | Cycle | NormalStep | Traction | Table
 #: A loading programme: segments run one after the other.
 Program = tuple[Segment, ...]
 
 #: Segment classes by their ``kind`` (the ``kind`` key of a scenario's ``[[program]]``).
 SEGMENT_KINDS: dict[str, type] = {
-    cls.kind: cls for cls in (Slide, Hold, Reverse, Turn, Cycle, NormalStep, TractionControl, Table)
+    cls.kind: cls for cls in (Slide, Hold, Reverse, Turn, Cycle, NormalStep, Traction, Table)
 }
 
 
@@ -809,3 +815,20 @@ def slide_hold_slide(
         Hold(duration=hold_time, steps=hold_steps),
         Slide(velocity=velocity, distance=again, steps=n_again),
     )
+
+
+#: Former names, accepted for one release with a DeprecationWarning: {old: new}.
+DEPRECATED_NAMES = {"TractionControl": "Traction"}
+
+
+def __getattr__(name: str) -> Any:
+    """The deprecated names of :data:`DEPRECATED_NAMES` (PEP 562)."""
+    new = DEPRECATED_NAMES.get(name)
+    if new is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    warnings.warn(
+        f"{name} is deprecated and will be removed in the next release: use {new} (the same class)",
+        DeprecationWarning,
+        stacklevel=2,
+    )
+    return globals()[new]

@@ -89,8 +89,8 @@ SEGMENT = Section("contact_segment", (
           by=Traction),
     Field("steps", INTEGER, "number of steps", "", 20, by=Slide),
     Field("direction_deg", NUMBER, "sliding direction from x", "deg", 0.0, by=Slide),
-    Field("cycles", INTEGER, "fretting: after the ramp, this many full cycles +target -> "
-          "-target -> +target", "", 0, by=Traction),
+    Field("cycles", INTEGER, "full load cycles after the ramp, +target -> -target -> "
+          "+target (0: one ramp to the target)", "", 0, by=Traction),
 ), "one tangential segment", "[[program]]", variants={
     "slide": ("velocity", "distance", "duration", "steps", "direction_deg"),
     "reverse": ("velocity", "distance", "steps"),

@@ -31,6 +31,7 @@ from frictionlab.driver import (
     Program,
     SpringSlider,
     Table,
+    Traction,
     plan_program,
 )
 from frictionlab.driver.program import segment_fields
@@ -156,7 +157,9 @@ SEGMENT = Section("segment", (
     "cycle": ("steps", "max_step", "amplitude", "velocity", "cycles", "direction_deg"),
     "normal": ("steps", "max_step", "approach", "traction", "traction_change", "duration"),
     "traction": ("steps", "max_step", Field("traction", PAIRS, "tangential traction target "
-                 "(pair)", "Pa", **_SEG), "duration", "cycles", "magnitude", "direction_deg"),
+                 "(pair)", "Pa", **_SEG), "duration", Field("cycles", INTEGER, "full load cycles "
+                 "start -> target -> start (0: one ramp to the target)", "", 0, by=Traction),
+                 "magnitude", "direction_deg"),
     "table": ("file", "steps_per_row", "max_step"),
 }, required_by={
     "slide": ("velocity",), "hold": ("duration",), "turn": ("angle_deg",),
