@@ -638,6 +638,28 @@ static inline double norm2(double x, double y)
     return hypot(x, y);
 }
 
+/* the point on the surface reached with the parameter q = gamma/(Aref^2 + gamma) from the
+   trial traction (fh1t, fh2t): scaled traction t, plastic multiplier dlam and the
+   potential phi(w, fn) with its derivatives (shared by state_at and model_at) */
+typedef struct {
+    double gamma, i1, i2, t1, t2, W, dlam, w, phi, phi_w, phi_fn;
+} surface_point_t;
+
+static void surface_point(double q, double omq, double fh1t, double fh2t, double fn,
+                          const law_t *L, surface_point_t *p)
+{
+    double A1 = L->A1, A2 = L->A2, Aref = L->Aref;
+    p->gamma = Aref * Aref * q / omq;
+    p->i1 = 1.0 / (A1 * A1 + p->gamma);
+    p->i2 = 1.0 / (A2 * A2 + p->gamma);
+    p->t1 = fh1t * p->i1;
+    p->t2 = fh2t * p->i2;
+    p->W = norm2(p->t1, p->t2);
+    p->dlam = p->gamma * p->W / L->alpha_t;
+    p->w = norm2(A1 * p->t1, A2 * p->t2);
+    potential(L->surface, L->tear_k, p->w, fn, &p->phi, &p->phi_w, &p->phi_fn);
+}
+
 /* the residual of the local solve and its derivatives (kernels._state_at) */
 typedef struct {
     double r, r_gamma, phi_1, phi_2, dlam, R, dR, F, dF, phi_fn, gamma, W, hard, phi;
@@ -647,7 +669,7 @@ typedef struct {
 static void state_at(double q, double omq, double fh1t, double fh2t, double fn, const law_t *L,
                      double R0, double y0, double s0, double F0, state_t *o)
 {
-    double A1 = L->A1, A2 = L->A2, Aref = L->Aref, alpha_t = L->alpha_t;
+    double A1 = L->A1, A2 = L->A2, alpha_t = L->alpha_t;
     if (omq <= 0.0) {
         double dlam = norm2(fh1t, fh2t) / alpha_t;
         double R, dR, F, dF;
@@ -674,16 +696,10 @@ static void state_at(double q, double omq, double fh1t, double fh2t, double fn, 
         o->cond = 0.0;
         return;
     }
-    double gamma = Aref * Aref * q / omq;
-    double i1 = 1.0 / (A1 * A1 + gamma);
-    double i2 = 1.0 / (A2 * A2 + gamma);
-    double t1 = fh1t * i1;
-    double t2 = fh2t * i2;
-    double W = norm2(t1, t2);
-    double dlam = gamma * W / alpha_t;
-    double w = norm2(A1 * t1, A2 * t2);
-    double phi, phi_w, phi_fn;
-    potential(L->surface, L->tear_k, w, fn, &phi, &phi_w, &phi_fn);
+    surface_point_t p;
+    surface_point(q, omq, fh1t, fh2t, fn, L, &p);
+    double gamma = p.gamma, i1 = p.i1, i2 = p.i2, t1 = p.t1, t2 = p.t2, W = p.W;
+    double dlam = p.dlam, w = p.w, phi = p.phi, phi_w = p.phi_w, phi_fn = p.phi_fn;
     double R, dR, F, dF;
     ratio_from(L->ulaw, L->u, y0, s0, R0, dlam, &R, &dR);
     size_after(F0, L->Fs, L->Fk, L->kappa, L->xi, L->m, L->n, dlam, L->dt, L->integ, L->rform,
@@ -857,16 +873,10 @@ static void model_at(double q, double fh1t, double fh2t, double fn, const law_t 
 {
     double A1 = L->A1, A2 = L->A2, Aref = L->Aref;
     double omq = 1.0 - q;
-    double gamma = Aref * Aref * q / omq;
-    double i1 = 1.0 / (A1 * A1 + gamma);
-    double i2 = 1.0 / (A2 * A2 + gamma);
-    double t1 = fh1t * i1;
-    double t2 = fh2t * i2;
-    double W = norm2(t1, t2);
-    double dlam = gamma * W / L->alpha_t;
-    double w = norm2(A1 * t1, A2 * t2);
-    double phi, phi_w, phi_fn;
-    potential(L->surface, L->tear_k, w, fn, &phi, &phi_w, &phi_fn);
+    surface_point_t p;
+    surface_point(q, omq, fh1t, fh2t, fn, L, &p);
+    double gamma = p.gamma, i1 = p.i1, i2 = p.i2, t1 = p.t1, t2 = p.t2, W = p.W;
+    double dlam = p.dlam, w = p.w, phi = p.phi, phi_w = p.phi_w;
     double R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR * (1.0 / 6.0)));
     double Rp = dR + dlam * (ddR + 0.5 * dddR * dlam);
     if (R > 1.0 || Rp < 0.0) {
