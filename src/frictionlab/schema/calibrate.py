@@ -21,7 +21,7 @@ from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.tribometer import ROLES, read_tribometer
-from frictionlab.schema.core import DESCRIPTION, REQUIRED, TITLE, Field, Section, load
+from frictionlab.schema.core import REQUIRED, Field, Section, load, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
 from frictionlab.schema.scenario import (
     INITIAL,
@@ -111,9 +111,7 @@ DATA = Section("data", (
     Field("initial", table=INITIAL, default=REQUIRED),
     Field("program", table=SEGMENT, many=True, default=REQUIRED),
 ), "one measured curve", "[[data]]")  # fmt: skip
-CALIBRATE_FILE = Section("calibrate", (
-    TITLE,
-    DESCRIPTION,
+CALIBRATE_FILE = run_file("calibrate", (
     Field("law", table=LAW, default=REQUIRED),
     Field("fit", table=FIT, default=REQUIRED),
     Field("data", table=DATA, many=True, default=REQUIRED),
@@ -238,8 +236,8 @@ def parse_calibrate(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> CalibrationConfig:
     """Validate a parsed calibration mapping (reads the data files; nothing is fitted)."""
-    root = CALIBRATE_FILE.table(data, "")
-    title = CALIBRATE_FILE.read(root)["title"]
+    root, top = CALIBRATE_FILE.read_top(data)
+    title = top["title"]
     law = root.raw("law")
     fit = root.table("fit", required=True)
     data_tables = root.tables("data", required=True)

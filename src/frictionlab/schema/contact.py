@@ -29,7 +29,7 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import load_toml
 from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import DESCRIPTION, REQUIRED, TITLE, Field, Section, load, reraise
+from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, PAIRS, STRING, listed
 from frictionlab.schema.scenario import LAW, parse_law_table
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
@@ -150,9 +150,7 @@ LAW_REGION = Section("law_region", (
       for key in (*FIELD_KEYS, "orthotropy_angle_deg", *PAIR_KEYS)),
 ), "a part of the interface with its own law values (later regions override earlier "
    "ones; keys given here override the bridge's)", "[[law_region]]", ref=True)  # fmt: skip
-CONTACT_FILE = Section("contact", (
-    TITLE,
-    DESCRIPTION,
+CONTACT_FILE = run_file("contact", (
     Field("block", table=BLOCK, default=REQUIRED),
     Field("mesh", table=MESH),
     Field("law", table=LAW, default=REQUIRED),
@@ -472,8 +470,7 @@ def parse_contact(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> ContactScenario:
     """Validate a parsed contact scenario mapping (nothing runs, nothing is meshed)."""
-    root = CONTACT_FILE.table(data, "")
-    top = CONTACT_FILE.read(root)
+    root, top = CONTACT_FILE.read_top(data)
     block_t, law_t = root.table("block", required=True), root.table("law", required=True)
     normal_t = root.table("normal", required=True)
     program_ts = root.tables("program", required=True)

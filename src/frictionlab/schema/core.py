@@ -241,6 +241,11 @@ class Section:
                 out[f.name] = None if f.default is OMIT else f.default
         return out
 
+    def read_top(self, data: Any) -> tuple[Table, dict[str, Any]]:
+        """The top table of an input file, checked (unknown keys refused), and its values."""
+        root = self.table(data, "")
+        return root, self.read(root)
+
     def schema(self) -> dict[str, Any]:
         """The JSON Schema of the table (tagged tables: one ``if/then`` rule per kind)."""
         out: dict[str, Any] = {"type": "object", "additionalProperties": False}
@@ -266,6 +271,11 @@ class Section:
         if own:
             then["properties"] = own
         return {"if": {"properties": {"kind": {"const": kind}}}, "then": then}
+
+
+def run_file(name: str, fields: tuple[Field, ...], doc: str, where: str = "", **kw: Any) -> Section:
+    """The top section of a run file: ``title`` and ``description``, then ``fields``."""
+    return Section(name, (TITLE, DESCRIPTION, *fields), doc, where, **kw)
 
 
 def reraise(where: str, call: Callable[[], Any]) -> Any:

@@ -483,8 +483,7 @@ def parse_roughness(
 ) -> RoughnessScenario:
     """Build a :class:`RoughnessScenario`; any problem is one :class:`InputError` line."""
     base = Path(base_dir)
-    top = ROUGHNESS_FILE.table(data, "")
-    values = ROUGHNESS_FILE.read(top)
+    top, values = ROUGHNESS_FILE.read_top(data)
     notes: dict[str, Any] = {}
     lower = _surface(top.raw("lower"), "[lower]", base, notes, "lower")
     upper = _surface(top.raw("upper"), "[upper]", base, notes, "upper")

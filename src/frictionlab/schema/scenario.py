@@ -40,7 +40,7 @@ from frictionlab.driver.simulate import MAX_HALVINGS, count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import DESCRIPTION, REQUIRED, TITLE, Field, Section, load, reraise
+from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, NUMBERS, PAIRS, STRING, listed
 from frictionlab.subloading import SURFACES, SubloadingParams
 from frictionlab.subloading.params import (
@@ -181,9 +181,7 @@ MACHINE = Section("machine", (
     Field("max_step", NUMBER, "largest step (instead of steps)", "s", None, low=0, open="low"),
 ), "the stick-slip spring-slider (instead of [[program]])", "[machine]")  # fmt: skip
 
-SCENARIO_FILE = Section("scenario", (
-    TITLE,
-    DESCRIPTION,
+SCENARIO_FILE = run_file("scenario", (
     Field("law", table=LAW, default=REQUIRED),
     Field("initial", table=INITIAL, default=REQUIRED),
     Field("run", table=RUN),
@@ -500,8 +498,7 @@ def parse_scenario(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> Scenario:
     """Validate a parsed scenario mapping and build a :class:`Scenario` (nothing runs)."""
-    root = SCENARIO_FILE.table(data, "")
-    top = SCENARIO_FILE.read(root)
+    root, top = SCENARIO_FILE.read_top(data)
     law, initial = root.table("law", required=True), root.table("initial", required=True)
     run, output_table, machine_table = (
         root.table("run"),
