@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from frictionlab._progress import ProgressFactory, no_progress
 from frictionlab.io.report import Report, Section, format_value
@@ -34,6 +34,7 @@ __all__ = [
     "check_extras",
     "default_builders",
     "law_rows",
+    "load_bundled",
     "run_demo",
 ]
 
@@ -79,6 +80,16 @@ def bundled_scenario(name: str, folder: str = "scenarios") -> Iterator[Path]:
     ref = resources.files("frictionlab") / "data" / folder / f"{name}.toml"
     with resources.as_file(ref) as path:
         yield Path(path)
+
+
+_T = TypeVar("_T")
+
+
+def load_bundled(name: str, folder: str, load: Callable[[Path], _T]) -> tuple[_T, str]:
+    """The bundled scenario ``name`` of ``frictionlab/data/<folder>`` read by ``load`` (a
+    path -> scenario), and its text (the demo copies it next to the results)."""
+    with bundled_scenario(name, folder) as path:
+        return load(path), path.read_text(encoding="utf-8")
 
 
 def default_builders() -> list[SectionBuilder]:

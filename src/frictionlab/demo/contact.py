@@ -11,7 +11,7 @@ import contextlib
 import time
 from pathlib import Path
 
-from frictionlab.demo import DemoContext, bundled_scenario, law_rows
+from frictionlab.demo import DemoContext, bundled_scenario, law_rows, load_bundled
 from frictionlab.demo.fretting import fretting_section
 from frictionlab.errors import FrictionlabError
 from frictionlab.io.atomic import write_text_atomic
@@ -38,9 +38,7 @@ def contact_section(ctx: DemoContext) -> Section:
 
     rel = "contact"
     out = ctx.out_dir / rel
-    with bundled_contact_scenario("pmma_block") as path:
-        text = path.read_text(encoding="utf-8")
-        scenario = load_contact_scenario(path)
+    scenario, text = load_bundled("pmma_block", "contact", load_contact_scenario)
     start = time.perf_counter()
     with ctx.progress("contact: PMMA-like block") as progress:
         history = run_contact_scenario(scenario, progress)

@@ -9,12 +9,12 @@ of the scenario file), adds figures comparing with the law's closed forms
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 
 import numpy as np
 
 from frictionlab.app.simulate import run_scenario, write_results
-from frictionlab.demo import DemoContext, bundled_scenario
+from frictionlab.demo import DemoContext, load_bundled
 from frictionlab.driver import (
     History,
     InitialConditions,
@@ -57,6 +57,12 @@ __all__ = [
     "stick_slip_section",
 ]
 
+
+def _by_value(pattern: str, keys: Iterable[float], values: Iterable[float]) -> str:
+    """``pattern`` (two fields: key, value) for each pair, comma separated, then a period."""
+    return ", ".join(pattern.format(k, v) for k, v in zip(keys, values, strict=True)) + "."
+
+
 _CONE_UNITS = {
     "alpha_n": "Pa/m", "alpha_t": "Pa/m", "mu_s": "-", "mu_k": "-", "u": "1/m",
     "kappa": "1/m", "xi": "1/s", "m": "-", "n": "-", "rotation": "-", "orthotropy": "-",
@@ -71,9 +77,7 @@ def run_bundled(
     """Run the bundled scenario ``name`` into ``OUT/<subdir or name>/``; return it, its
     history and the directory relative to OUT."""
     rel = subdir or name
-    with bundled_scenario(name) as path:
-        scenario = load_scenario(path, overrides)
-        text = path.read_text(encoding="utf-8")
+    scenario, text = load_bundled(name, "scenarios", lambda path: load_scenario(path, overrides))
     start = time.perf_counter()
     with ctx.progress(rel) as progress:
         history = run_scenario(scenario, progress=progress)
@@ -243,8 +247,7 @@ def slide_hold_slide_section(ctx: DemoContext) -> Section:
     )
     sec.notes.append(
         f"mu at the stop mu_0 = {mu0:.5f}. Restart peaks: "
-        + ", ".join(f"t_h = {t:g} s: {p:.4f}" for t, p in zip(hold_time, peaks, strict=True))
-        + "."
+        + _by_value("t_h = {:g} s: {:.4f}", hold_time, peaks)
     )
     return sec
 
@@ -466,8 +469,7 @@ def stick_slip_section(ctx: DemoContext) -> Section:
     )
     sec.notes.append(
         f"Critical stiffness at V = {_speed(V)}: k_c = {kc:.5g} Pa/m. Oscillation amplitude: "
-        + ", ".join(f"k/k_c = {f:g}: {o:.2e}" for f, o in zip(factors, osc, strict=True))
-        + "."
+        + _by_value("k/k_c = {:g}: {:.2e}", factors, osc)
     )
     return sec
 
