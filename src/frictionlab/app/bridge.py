@@ -210,23 +210,23 @@ def _fitted_scenario_text(
     return header + format_toml(data)
 
 
+def _xy(name: str, mu: np.ndarray) -> dict[str, np.ndarray]:
+    """The columns ``<name>_x`` and ``<name>_y`` of friction vectors ``mu`` (n, 2)."""
+    return {f"{name}_x": mu[:, 0], f"{name}_y": mu[:, 1]}
+
+
 def directions_columns(run: BridgeRun) -> dict[str, np.ndarray]:
     """The columns of directions.csv (one row per direction of the polar)."""
     fit = run.fit
     return {
         "beta_deg": fit.beta_deg,
-        "roughness_mu_x": fit.data[:, 0],
-        "roughness_mu_y": fit.data[:, 1],
+        **_xy("roughness_mu", fit.data),
         "roughness_mu": np.hypot(fit.data[:, 0], fit.data[:, 1]),
-        "fit_mu_x": fit.fitted[:, 0],
-        "fit_mu_y": fit.fitted[:, 1],
+        **_xy("fit_mu", fit.fitted),
         "misfit": fit.misfit,
-        "law_kinetic_mu_x": run.kinetic[:, 0],
-        "law_kinetic_mu_y": run.kinetic[:, 1],
-        "law_steady_mu_x": run.closed[:, 0],
-        "law_steady_mu_y": run.closed[:, 1],
-        "simulated_mu_x": run.simulated[:, 0],
-        "simulated_mu_y": run.simulated[:, 1],
+        **_xy("law_kinetic_mu", run.kinetic),
+        **_xy("law_steady_mu", run.closed),
+        **_xy("simulated_mu", run.simulated),
         "check_difference": run.difference,
     }
 
