@@ -44,7 +44,6 @@ _LAZY: dict[str, str] = {
     "Cycle": "frictionlab.driver",
     "NormalStep": "frictionlab.driver",
     "Traction": "frictionlab.driver",
-    "TractionControl": "frictionlab.driver",  # deprecated name of Traction
     "SpringSlider": "frictionlab.driver",
     "History": "frictionlab.driver",
     "simulate": "frictionlab.driver",
@@ -142,8 +141,14 @@ if TYPE_CHECKING:  # for type checkers and IDEs; at run time these come from __g
     )
 
 
+#: Former top-level names (not in ``__all__``): their module warns on each use.
+_DEPRECATED: dict[str, str] = {"TractionControl": "frictionlab.driver"}
+
+
 def __getattr__(name: str) -> Any:
     """Import a top-level name's module on first use (PEP 562)."""
+    if name in _DEPRECATED:
+        return getattr(importlib.import_module(_DEPRECATED[name]), name)
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'frictionlab' has no attribute {name!r}")

@@ -20,7 +20,6 @@ from frictionlab.schema.scenario import SEGMENT as SCENARIO_SEGMENT
 
 @pytest.mark.parametrize("where", [program, driver, frictionlab])
 def test_the_former_name_warns_and_is_the_same_class(where: object) -> None:
-    frictionlab.__dict__.pop("TractionControl", None)  # the top level caches a look-up
     with pytest.warns(DeprecationWarning, match="TractionControl is deprecated.*Traction"):
         old = where.TractionControl  # type: ignore[attr-defined]
     assert old is Traction
