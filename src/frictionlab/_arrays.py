@@ -5,9 +5,12 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, DTypeLike
+from numpy.typing import ArrayLike, DTypeLike, NDArray
 
-__all__ = ["readonly"]
+__all__ = ["FloatArray", "readonly"]
+
+#: A float64 NumPy array (the type of every physical array in the results).
+FloatArray = NDArray[np.float64]
 
 
 def readonly(values: ArrayLike, dtype: DTypeLike | None = np.float64) -> Any:

@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import FloatArray
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
@@ -44,8 +45,6 @@ from frictionlab.roughness.lattice import LatticeSettings, friction_polar
 from frictionlab.roughness.surface import Surface
 
 __all__ = ["DEFAULT_TENSILE_RATIO", "AdhesionSweep", "adhesion_sweep"]
-
-FloatArray = NDArray[np.float64]
 
 #: k_t / k_c by default (the paper's k_t = k_c / 2).
 DEFAULT_TENSILE_RATIO = 0.5

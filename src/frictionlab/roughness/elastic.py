@@ -43,7 +43,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import readonly
+from frictionlab._arrays import FloatArray, readonly
 from frictionlab.errors import ConvergenceError, ParameterError, ValidityError
 from frictionlab.roughness import _kernels
 from frictionlab.roughness.lattice import (
@@ -66,8 +66,6 @@ __all__ = [
     "elastic_polar",
     "pressure_sweep",
 ]
-
-FloatArray = NDArray[np.float64]
 
 
 def _positive(name: str, value: Any, what: str) -> float:

@@ -31,8 +31,9 @@ from dataclasses import dataclass
 from types import MappingProxyType
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import wedge_friction
@@ -69,8 +70,6 @@ __all__ = [
     "wear_cases",
     "wedge_cases",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: The six configuration types of Fig 6 as (phi1, phi2, phi3, phi4)
 #: built from a steep angle "S" and a shallow angle "s" (0: flat face pair).

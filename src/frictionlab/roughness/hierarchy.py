@@ -44,6 +44,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import FloatArray
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError, ValidityError
@@ -65,8 +66,6 @@ __all__ = [
     "self_similar_levels",
     "wedge_hierarchy",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: The scalar passed to the next level; the first is the default.
 MU_PASSED = ("magnitude", "projection")

@@ -45,7 +45,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import readonly
+from frictionlab._arrays import FloatArray, readonly
 from frictionlab._frames import TableResult
 from frictionlab._jit import numba
 from frictionlab.errors import ParameterError, ValidityError
@@ -66,8 +66,6 @@ __all__ = [
     "lattice_geometry",
     "merge_polars",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: Default spring stations per shortest surface period (1-D profiles).
 STATIONS_PER_PERIOD_1D = 2000

@@ -62,8 +62,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.inputs import check_input_file
 from frictionlab.roughness.generators import from_array
@@ -78,8 +79,6 @@ __all__ = [
     "read_prepared",
     "read_surface",
 ]
-
-FloatArray = NDArray[np.float64]
 
 PERIODICITY_MODES = ("require", "assume", "mirror")
 DETREND_MODES = ("none", "center", "height", "curvature")

@@ -34,8 +34,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
@@ -75,8 +76,6 @@ __all__ = [
     "wedge_tan_phi_rate",
     "worn_pair",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: Which surfaces wear; the first is the default.
 WEAR_SURFACES = ("both", "lower", "upper")
