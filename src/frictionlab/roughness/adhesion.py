@@ -41,7 +41,7 @@ from frictionlab._arrays import FloatArray
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
-from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+from frictionlab.roughness.lattice import LatticeSettings, friction_polar, settings_from
 from frictionlab.roughness.surface import Surface
 
 __all__ = ["DEFAULT_TENSILE_RATIO", "AdhesionSweep", "adhesion_sweep"]
@@ -200,17 +200,9 @@ def adhesion_sweep(
         The lattice settings (or their fields as keywords); ``load`` and ``k_t`` are set
         by the sweep; ``control`` must be ``"load"``.
     """
-    if settings is None:
-        k_c = options.get("k_c", 1.0)
-        tensile = DEFAULT_TENSILE_RATIO * k_c if k_t is None and _number(k_c) else k_t
-        try:
-            settings = LatticeSettings(**{**options, "k_t": tensile})
-        except TypeError as exc:
-            raise ParameterError(
-                "options", sorted(options), f"fields of LatticeSettings ({exc})"
-            ) from None
-    elif options:
-        raise ParameterError("options", sorted(options), "either settings= or keyword options")
+    k_c = options.get("k_c", 1.0)
+    tensile = DEFAULT_TENSILE_RATIO * k_c if k_t is None and _number(k_c) else k_t
+    settings = settings_from(LatticeSettings, settings, options, {"k_t": tensile})
     if settings.control != "load":
         raise ParameterError("control", settings.control, "'load' for a load sweep")
     values = _loads(loads)
