@@ -656,6 +656,20 @@ def polar_head_columns(polar: Any) -> dict[str, np.ndarray]:
     return out
 
 
+def long_mu_columns(result: Any, repeats: int) -> dict[str, np.ndarray]:
+    """beta_deg, mu, mu_x, mu_y (and mu/mu0 when mu0 > 0) of a (repeats, n_beta) result,
+    flattened row-major: the tail of the long tables of wear and hierarchy results."""
+    out: dict[str, np.ndarray] = {
+        "beta_deg": np.tile(result.beta_deg, repeats),
+        "mu": result.mu.ravel(),
+        "mu_x": result.mu_x.ravel(),
+        "mu_y": result.mu_y.ravel(),
+    }
+    if result.mu0 > 0.0:
+        out["mu_over_mu0"] = result.mu.ravel() / result.mu0
+    return out
+
+
 def masked_columns(columns: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     """Float columns with NaN or infinite entries masked (empty CSV fields), others as they are."""
     return {
