@@ -44,7 +44,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import FloatArray
+from frictionlab._arrays import FloatArray, readonly_masked
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError, ValidityError
@@ -166,12 +166,6 @@ def self_similar_levels(
     return out
 
 
-def _masked(values: FloatArray, undefined: NDArray[np.bool_]) -> np.ma.MaskedArray:
-    out = np.ma.MaskedArray(np.where(undefined, 0.0, values), mask=np.array(undefined, copy=True))
-    out.setflags(write=False)
-    return out
-
-
 @dataclass(frozen=True, repr=False)
 class HierarchyResult(TableResult):
     """mu_i of every level (rows i = 0 ... n; row 0 is the local mu0) per direction.
@@ -267,9 +261,9 @@ def _recursion(
     invalid = ~valid
     return HierarchyResult(
         beta_deg=_ro(betas),
-        mu=_masked(mu, invalid),
-        mu_x=_masked(mu_x, invalid),
-        mu_y=_masked(mu_y, invalid),
+        mu=readonly_masked(mu, invalid),
+        mu_x=readonly_masked(mu_x, invalid),
+        mu_y=readonly_masked(mu_y, invalid),
         valid=_ro(valid, bool),
         first_invalid_level=_ro(first_bad, np.int64),
         mu0=mu0,
