@@ -5,9 +5,12 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, DTypeLike
+from numpy.typing import ArrayLike, DTypeLike, NDArray
 
-__all__ = ["readonly"]
+__all__ = ["FloatArray", "readonly", "readonly_masked"]
+
+#: A float64 NumPy array (the type of every physical array in the results).
+FloatArray = NDArray[np.float64]
 
 
 def readonly(values: ArrayLike, dtype: DTypeLike | None = np.float64) -> Any:
@@ -19,3 +22,14 @@ def readonly(values: ArrayLike, dtype: DTypeLike | None = np.float64) -> Any:
     arr = np.array(values, dtype=dtype, copy=True)
     arr.setflags(write=False)
     return arr
+
+
+def readonly_masked(values: ArrayLike, undefined: ArrayLike) -> np.ma.MaskedArray:
+    """A read-only masked array of ``values``, masked where ``undefined`` is true.
+
+    0.0 is stored under the mask (never NaN), so the data stay finite.
+    """
+    data = np.where(undefined, 0.0, values)
+    out = np.ma.MaskedArray(data, mask=np.array(undefined, dtype=bool, copy=True))
+    out.setflags(write=False)
+    return out

@@ -110,6 +110,13 @@ class RoughnessRun:
     elastic: Any = None  # ElasticPolar of [contact] model = "elastic" (all directions)
     runs: Any = None  # list of roughness_models.ModelRun: a comparison or a pressure sweep
 
+    @property
+    def model(self) -> str:
+        """Which run this is: "models" (comparison or sweep), "elastic" or "lattice"."""
+        if self.runs is not None:
+            return "models"
+        return "lattice" if self.elastic is None else "elastic"
+
 
 class Roughness:
     """``frictionlab roughness SCENARIO.toml --out DIR`` (:mod:`frictionlab.commands.roughness`)."""
@@ -156,32 +163,15 @@ class Roughness:
         return RoughnessRun(polar, plot_polar, extensions)
 
     def files(self, job: RoughnessJob, result: RoughnessRun, out: Path, plots: bool) -> list[Path]:
-        scenario = job.scenario
-        if result.runs is not None:
-            files = _model_files(job, result.runs, plots)
-        elif result.elastic is not None:
-            files = _elastic_files(job, result.elastic, plots)
-        else:
-            files = {"polar.csv": _csv_text(scenario, result.polar, job.path)}
-            files.update(_extension_files(scenario, result.extensions, job.path, plots))
-            if plots:
-                files["polar.png"] = _png(scenario, result.plot_polar)
-        files.update(_statistics_outputs(scenario, plots)[0])
+        files = _OUTPUTS[result.model].files(job, result, plots)
+        files.update(_statistics_outputs(job.scenario, plots)[0])
         return write_contents_atomic(out, files)
 
     def summary(
         self, job: RoughnessJob, result: RoughnessRun, files: list[str], seconds: float
     ) -> dict[str, Any]:
-        scenario = job.scenario
-        if result.runs is not None:
-            summary = _model_summary(job, result.runs, seconds)
-        elif result.elastic is not None:
-            summary = _elastic_summary(job, result.elastic, seconds)
-        else:
-            summary = _summary(scenario, result.polar, result.plot_polar, job.path, seconds)
-            summary["warnings"] = [*summary["warnings"], *result.polar.notes]
-            summary.update(_extension_summary(scenario, result.extensions))
-        stats = _statistics_outputs(scenario, False)[1]
+        summary = _OUTPUTS[result.model].summary(job, result, seconds)
+        stats = _statistics_outputs(job.scenario, False)[1]
         if stats:
             summary["statistics"] = stats
         summary["files"] = _names(files)
@@ -365,125 +355,155 @@ def _extensions(scenario: RoughnessScenario) -> dict[str, Any]:
     return out
 
 
+def _adhesion_entry(sweep: AdhesionSweep, scenario: RoughnessScenario) -> dict[str, Any]:
+    return {
+        "k_c_N_per_m": sweep.k_c,
+        "k_t_N_per_m": sweep.k_t,
+        "loads_per_spring_N": sweep.load.tolist(),
+        "beta_deg": sweep.beta_deg.tolist(),
+        "mu_apparent": [
+            [None if v is np.ma.masked else float(v) for v in row] for row in sweep.mu_apparent
+        ],
+        "detachment_m": scenario.adhesion.detachment if scenario.adhesion else None,
+    }
+
+
+def _wear_entry(history: WearHistory, scenario: RoughnessScenario) -> dict[str, Any]:
+    return {
+        **history.wear.as_dict(),
+        "wear_time_s": history.wear_time,
+        "roughness_volume_m3": history.volume,
+        "method": history.method,
+        "mu_initial": history.mu[0].tolist(),
+        "mu_final": history.mu[-1].tolist(),
+    }
+
+
+def _hierarchy_entry(result: HierarchyResult, scenario: RoughnessScenario) -> dict[str, Any]:
+    return {
+        "levels": result.n_levels,
+        "mu_passed": result.mu_passed,
+        "beta_deg": result.beta_deg.tolist(),
+        "mu_outermost": [None if v is np.ma.masked else float(v) for v in result.mu[-1]],
+        "first_invalid_level": result.first_invalid_level.tolist(),
+        "messages": list(result.messages),
+    }
+
+
+def _hierarchy_wear_entry(
+    life: HierarchyWearHistory, scenario: RoughnessScenario
+) -> dict[str, Any]:
+    return {
+        "wear_time_per_level_s": life.wear_time.tolist(),
+        "dropout_time_per_level_s": life.dropout_time.tolist(),
+        "volume_per_level_m3": life.volume.tolist(),
+    }
+
+
+def _multiscale_entry(ms: MultiscaleResult, scenario: RoughnessScenario) -> dict[str, Any]:
+    mu = np.where(ms.valid, ms.mu, np.nan)
+    with np.errstate(invalid="ignore"):
+        anisotropy = np.nanmax(mu, axis=1) / np.nanmin(mu, axis=1)
+    return {
+        "cutoffs_m": list(scenario.multiscale.cutoffs) if scenario.multiscale else [],
+        "shortest_wavelength_retained_m": ms.cutoff_m.tolist(),
+        "beta_deg": ms.beta_deg.tolist(),
+        "band_rms_slope": ms.band_rms_slope.tolist(),
+        "anisotropy_max_over_min": [None if not np.isfinite(v) else float(v) for v in anisotropy],
+        "all_valid": bool(ms.valid.all()),
+    }
+
+
+@dataclass(frozen=True)
+class _Extension:
+    """How one extension result is written: CSV header, figure and summary.json entry."""
+
+    header: Callable[[Any], str]  # what follows "frictionlab V roughness: TITLE\nmu0 = MU0"
+    figure: str  # "module.function" in frictionlab.plotting (imported only to draw)
+    caption: str  # the figure's title before ": TITLE"
+    entry: Callable[[Any, RoughnessScenario], dict[str, Any]]
+
+
+#: The extension results by file stem and summary key, in writing order.
+_EXTENSIONS = {
+    "adhesion": _Extension(
+        lambda sweep: (
+            f", k_c = {sweep.k_c:g} N/m, k_t = {sweep.k_t:g} N/m; loads and forces per "
+            "spring (N); mu_apparent = R/L (Eq 22), empty where undefined (L = 0)"
+        ),
+        "roughness_life.adhesion_figure",
+        "adhesion",
+        _adhesion_entry,
+    ),
+    "wear": _Extension(
+        lambda history: (
+            f", wear time T_w = {history.wear_time:.9g} s, volume {history.volume:.9g} m^3, "
+            f"surfaces = {history.wear.surfaces}, method = {history.method}"
+        ),
+        "roughness_life.wear_figure",
+        "wear",
+        _wear_entry,
+    ),
+    "hierarchy": _Extension(
+        lambda result: (
+            f", {result.n_levels} levels (level 0: the local mu0), mu passed upward: "
+            f"{result.mu_passed}; invalid levels empty with valid = false"
+        ),
+        "roughness_life.hierarchy_figure",
+        "hierarchy",
+        _hierarchy_entry,
+    ),
+    "hierarchy_wear": _Extension(
+        lambda life: (
+            ", levels flat (drop out) at t = "
+            + ", ".join(f"{t:.6g}" for t in life.dropout_time)
+            + " s (Eq 35 windows)"
+        ),
+        "roughness_life.hierarchy_wear_figure",
+        "hierarchy with wear",
+        _hierarchy_wear_entry,
+    ),
+    "multiscale": _Extension(
+        lambda ms: (
+            "; bands split at the cutoffs (wavelengths, m) by SurfaceTopography's "
+            "shortcut filter, innermost band = shortest wavelengths, mu passed upward: "
+            f"{ms.mu_passed}; cutoff_m = shortest wavelength retained (last: Nyquist); "
+            "invalid values empty with valid = false"
+        ),
+        "multiscale.multiscale_figure",
+        "scale-resolved friction",
+        _multiscale_entry,
+    ),
+}
+
+
 def _extension_files(
     scenario: RoughnessScenario, results: dict[str, Any], path: Path, plots: bool = True
 ) -> dict[str, str | bytes]:
     """CSV text and PNG bytes of every extension result, rendered before anything is written."""
-    from frictionlab.plotting.multiscale import multiscale_figure
+    from importlib import import_module
+
     from frictionlab.plotting.roughness import figure_png_bytes
-    from frictionlab.plotting.roughness_life import (
-        adhesion_figure,
-        hierarchy_figure,
-        hierarchy_wear_figure,
-        wear_figure,
-    )
 
     title = scenario.title or path.name
     head = f"frictionlab {__version__} roughness: {title}\nmu0 = {scenario.mu0:g}"
-    #: (file stem, result, CSV header, figure function, figure title), in writing order
-    made: list[tuple[str, Any, str, Any, str]] = []
-    if "adhesion" in results:
-        sweep: AdhesionSweep = results["adhesion"]
-        header = (
-            f"{head}, k_c = {sweep.k_c:g} N/m, k_t = {sweep.k_t:g} N/m; loads and forces per "
-            "spring (N); mu_apparent = R/L (Eq 22), empty where undefined (L = 0)"
-        )
-        made.append(("adhesion", sweep, header, adhesion_figure, f"adhesion: {title}"))
-    if "wear" in results:
-        history: WearHistory = results["wear"]
-        header = (
-            f"{head}, wear time T_w = {history.wear_time:.9g} s, volume {history.volume:.9g} m^3, "
-            f"surfaces = {history.wear.surfaces}, method = {history.method}"
-        )
-        made.append(("wear", history, header, wear_figure, f"wear: {title}"))
-    if "hierarchy" in results:
-        result: HierarchyResult = results["hierarchy"]
-        header = (
-            f"{head}, {result.n_levels} levels (level 0: the local mu0), mu passed upward: "
-            f"{result.mu_passed}; invalid levels empty with valid = false"
-        )
-        made.append(("hierarchy", result, header, hierarchy_figure, f"hierarchy: {title}"))
-    if "hierarchy_wear" in results:
-        life: HierarchyWearHistory = results["hierarchy_wear"]
-        drop = ", ".join(f"{t:.6g}" for t in life.dropout_time)
-        header = f"{head}, levels flat (drop out) at t = {drop} s (Eq 35 windows)"
-        made.append(("hierarchy_wear", life, header, hierarchy_wear_figure,
-                     f"hierarchy with wear: {title}"))  # fmt: skip
-    if "multiscale" in results:
-        ms: MultiscaleResult = results["multiscale"]
-        header = (
-            f"{head}; bands split at the cutoffs (wavelengths, m) by SurfaceTopography's "
-            f"shortcut filter, innermost band = shortest wavelengths, mu passed upward: "
-            f"{ms.mu_passed}; cutoff_m = shortest wavelength retained (last: Nyquist); "
-            "invalid values empty with valid = false"
-        )
-        made.append(("multiscale", ms, header, multiscale_figure,
-                     f"scale-resolved friction: {title}"))  # fmt: skip
     files: dict[str, str | bytes] = {}
-    for stem, res, header, figure, caption in made:
-        files[f"{stem}.csv"] = format_csv(res.columns(), res.units(), header)
+    for stem, how in _EXTENSIONS.items():
+        if stem not in results:
+            continue
+        res = results[stem]
+        files[f"{stem}.csv"] = format_csv(res.columns(), res.units(), head + how.header(res))
         if plots:  # figures are rendered only when written
-            files[f"{stem}.png"] = figure_png_bytes(figure(res, caption))
+            module, name = how.figure.split(".")
+            figure = getattr(import_module(f"frictionlab.plotting.{module}"), name)
+            files[f"{stem}.png"] = figure_png_bytes(figure(res, f"{how.caption}: {title}"))
     return files
 
 
 def _extension_summary(scenario: RoughnessScenario, results: dict[str, Any]) -> dict[str, Any]:
-    out: dict[str, Any] = {}
-    if "adhesion" in results:
-        sweep: AdhesionSweep = results["adhesion"]
-        out["adhesion"] = {
-            "k_c_N_per_m": sweep.k_c,
-            "k_t_N_per_m": sweep.k_t,
-            "loads_per_spring_N": sweep.load.tolist(),
-            "beta_deg": sweep.beta_deg.tolist(),
-            "mu_apparent": [
-                [None if v is np.ma.masked else float(v) for v in row] for row in sweep.mu_apparent
-            ],
-            "detachment_m": scenario.adhesion.detachment if scenario.adhesion else None,
-        }
-    if "wear" in results:
-        history: WearHistory = results["wear"]
-        out["wear"] = {
-            **history.wear.as_dict(),
-            "wear_time_s": history.wear_time,
-            "roughness_volume_m3": history.volume,
-            "method": history.method,
-            "mu_initial": history.mu[0].tolist(),
-            "mu_final": history.mu[-1].tolist(),
-        }
-    if "hierarchy" in results:
-        result: HierarchyResult = results["hierarchy"]
-        out["hierarchy"] = {
-            "levels": result.n_levels,
-            "mu_passed": result.mu_passed,
-            "beta_deg": result.beta_deg.tolist(),
-            "mu_outermost": [None if v is np.ma.masked else float(v) for v in result.mu[-1]],
-            "first_invalid_level": result.first_invalid_level.tolist(),
-            "messages": list(result.messages),
-        }
-    if "hierarchy_wear" in results:
-        life: HierarchyWearHistory = results["hierarchy_wear"]
-        out["hierarchy_wear"] = {
-            "wear_time_per_level_s": life.wear_time.tolist(),
-            "dropout_time_per_level_s": life.dropout_time.tolist(),
-            "volume_per_level_m3": life.volume.tolist(),
-        }
-    if "multiscale" in results:
-        ms: MultiscaleResult = results["multiscale"]
-        mu = np.where(ms.valid, ms.mu, np.nan)
-        with np.errstate(invalid="ignore"):
-            anisotropy = np.nanmax(mu, axis=1) / np.nanmin(mu, axis=1)
-        out["multiscale"] = {
-            "cutoffs_m": list(scenario.multiscale.cutoffs) if scenario.multiscale else [],
-            "shortest_wavelength_retained_m": ms.cutoff_m.tolist(),
-            "beta_deg": ms.beta_deg.tolist(),
-            "band_rms_slope": ms.band_rms_slope.tolist(),
-            "anisotropy_max_over_min": [
-                None if not np.isfinite(v) else float(v) for v in anisotropy
-            ],
-            "all_valid": bool(ms.valid.all()),
-        }
-    return out
+    return {
+        key: how.entry(results[key], scenario) for key, how in _EXTENSIONS.items() if key in results
+    }
 
 
 def _full_circle(
@@ -564,16 +584,7 @@ def _summary(
         modes[mode] = modes.get(mode, 0) + 1
     s = scenario.settings
     return {
-        "frictionlab_version": __version__,
-        "command": "roughness",
-        "scenario_file": str(path),
-        "title": scenario.title,
-        "mu0": scenario.mu0,
-        "mu_definition": s.mu_definition,
-        "lower": scenario.lower.describe(),
-        "upper": scenario.upper.describe(),
-        "sources": scenario.sources,
-        "warnings": list(scenario.warnings),
+        **_summary_head(scenario, path, s.mu_definition),
         "sliding": {
             "beta_deg": [float(polar.beta_deg[0]), float(polar.beta_deg[-1])],
             "directions": int(polar.beta_deg.size),
@@ -622,6 +633,39 @@ def _summary(
             "seconds": round(seconds, 3),
         },
         "files": ["polar.csv", "summary.json", "polar.png"],
+    }
+
+
+def _lattice_files(job: RoughnessJob, result: RoughnessRun, plots: bool) -> dict[str, str | bytes]:
+    scenario = job.scenario
+    files: dict[str, str | bytes] = {"polar.csv": _csv_text(scenario, result.polar, job.path)}
+    files.update(_extension_files(scenario, result.extensions, job.path, plots))
+    if plots:
+        files["polar.png"] = _png(scenario, result.plot_polar)
+    return files
+
+
+def _lattice_summary(job: RoughnessJob, result: RoughnessRun, seconds: float) -> dict[str, Any]:
+    scenario = job.scenario
+    summary = _summary(scenario, result.polar, result.plot_polar, job.path, seconds)
+    summary["warnings"] = [*summary["warnings"], *result.polar.notes]
+    summary.update(_extension_summary(scenario, result.extensions))
+    return summary
+
+
+def _summary_head(scenario: RoughnessScenario, path: Path, mu_definition: str) -> dict[str, Any]:
+    """The leading entries of every roughness summary.json: version, inputs, warnings."""
+    return {
+        "frictionlab_version": __version__,
+        "command": "roughness",
+        "scenario_file": str(path),
+        "title": scenario.title,
+        "mu0": scenario.mu0,
+        "mu_definition": mu_definition,
+        "lower": scenario.lower.describe(),
+        "upper": scenario.upper.describe(),
+        "sources": scenario.sources,
+        "warnings": list(scenario.warnings),
     }
 
 
@@ -694,10 +738,10 @@ def _model_name(scenario: RoughnessScenario) -> str:
     return "comparison" if len(scenario.models) > 1 else "sweep"
 
 
-def _model_files(job: RoughnessJob, runs: Any, plots: bool) -> dict[str, str | bytes]:
+def _model_files(job: RoughnessJob, result: RoughnessRun, plots: bool) -> dict[str, str | bytes]:
     from frictionlab.app.roughness_models import model_columns, model_figure, model_units
 
-    scenario = job.scenario
+    scenario, runs = job.scenario, result.runs
     name = _model_name(scenario)
     files: dict[str, str | bytes] = {
         f"{name}.csv": format_csv(model_columns(scenario, runs), model_units(scenario))
@@ -713,23 +757,14 @@ def _model_files(job: RoughnessJob, runs: Any, plots: bool) -> dict[str, str | b
     return files
 
 
-def _model_summary(job: RoughnessJob, runs: Any, seconds: float) -> dict[str, Any]:
+def _model_summary(job: RoughnessJob, result: RoughnessRun, seconds: float) -> dict[str, Any]:
     from frictionlab.app.roughness_models import model_summary
 
     scenario = job.scenario
-    contact = model_summary(scenario, runs)
+    contact = model_summary(scenario, result.runs)
     rows = contact["runs"]
     return {
-        "frictionlab_version": __version__,
-        "command": "roughness",
-        "scenario_file": str(job.path),
-        "title": scenario.title,
-        "mu0": scenario.mu0,
-        "mu_definition": scenario.settings.mu_definition,
-        "lower": scenario.lower.describe(),
-        "upper": scenario.upper.describe(),
-        "sources": scenario.sources,
-        "warnings": list(scenario.warnings),
+        **_summary_head(scenario, job.path, scenario.settings.mu_definition),
         "contact": contact,
         "results": {
             "directions_deg": scenario.beta_deg.tolist(),
@@ -740,8 +775,8 @@ def _model_summary(job: RoughnessJob, runs: Any, seconds: float) -> dict[str, An
     }
 
 
-def _elastic_files(job: RoughnessJob, whole: Any, plots: bool) -> dict[str, str | bytes]:
-    scenario, settings = job.scenario, job.scenario.contact
+def _elastic_files(job: RoughnessJob, result: RoughnessRun, plots: bool) -> dict[str, str | bytes]:
+    scenario, settings, whole = job.scenario, job.scenario.contact, result.elastic
     assert settings is not None
     n = scenario.beta_deg.size
     columns = {k: v[:n] for k, v in whole.columns().items()}
@@ -760,23 +795,14 @@ def _elastic_files(job: RoughnessJob, whole: Any, plots: bool) -> dict[str, str 
     return files
 
 
-def _elastic_summary(job: RoughnessJob, whole: Any, seconds: float) -> dict[str, Any]:
-    scenario, settings = job.scenario, job.scenario.contact
+def _elastic_summary(job: RoughnessJob, result: RoughnessRun, seconds: float) -> dict[str, Any]:
+    scenario, settings, whole = job.scenario, job.scenario.contact, result.elastic
     assert settings is not None
     n = scenario.beta_deg.size
     mu = whole.mu[:n]
     ratio = mu / scenario.mu0
     return {
-        "frictionlab_version": __version__,
-        "command": "roughness",
-        "scenario_file": str(job.path),
-        "title": scenario.title,
-        "mu0": scenario.mu0,
-        "mu_definition": settings.mu_definition,
-        "lower": scenario.lower.describe(),
-        "upper": scenario.upper.describe(),
-        "sources": scenario.sources,
-        "warnings": list(scenario.warnings),
+        **_summary_head(scenario, job.path, settings.mu_definition),
         "contact": {**whole.summary(), "settings": settings.as_dict()},
         "results": {
             "mu_min": float(np.nanmin(mu)),
@@ -866,3 +892,19 @@ def _statistics_outputs(
                 plot_statistics(stats, title=f"{side} surface ({surface.kind})")
             )
     return files, summary
+
+
+@dataclass(frozen=True)
+class _Outputs:
+    """The files (name -> content) and the summary.json entries of one kind of run."""
+
+    files: Callable[[RoughnessJob, RoughnessRun, bool], dict[str, str | bytes]]
+    summary: Callable[[RoughnessJob, RoughnessRun, float], dict[str, Any]]
+
+
+#: The outputs of each kind of run, by :attr:`RoughnessRun.model`.
+_OUTPUTS = {
+    "models": _Outputs(_model_files, _model_summary),
+    "elastic": _Outputs(_elastic_files, _elastic_summary),
+    "lattice": _Outputs(_lattice_files, _lattice_summary),
+}

@@ -33,9 +33,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
+from frictionlab._arrays import FloatArray
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import SubloadingParams, friction_coefficient_on_yield, steady_size
 
@@ -47,8 +48,6 @@ __all__ = [
     "steady_size_at",
     "steady_traction_ratio",
 ]
-
-FloatArray = NDArray[np.float64]
 
 
 def _angles(theta_deg: ArrayLike) -> FloatArray:

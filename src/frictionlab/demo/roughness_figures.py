@@ -68,6 +68,15 @@ class _Writer:
     def table(self, name: str, columns: Any, units: Any, description: str) -> None:
         write_csv_atomic(self.folder / f"{name}.csv", dict(columns), units, description)
 
+    def family(self, name: str, family: Any) -> None:
+        """A figure family's table (columns, units and description attributes)."""
+        self.table(name, family.columns, family.units, family.description)
+
+    def results(self, prefix: str, results: dict[str, Any]) -> None:
+        """One table per named result object, ``<prefix>_<name as a slug>.csv``."""
+        for name, result in results.items():
+            self.table(f"{prefix}_{_slug(name)}", result.columns(), result.units(), name)
+
 
 def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
     from frictionlab.plotting.roughness import new_figure, plot_family_lines, plot_wavelength_map
@@ -84,7 +93,7 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
         anchor="roughness-single-level",
     )
     wedges = families.wedge_cases(MU0, (30.0, 15.0), betas)
-    writer.table("fig6a_wedge_cases", wedges.columns, wedges.units, wedges.description)
+    writer.family("fig6a_wedge_cases", wedges)
     fig = new_figure(6.5, 4.5)
     plot_family_lines(wedges, ax=fig.add_subplot())
     a0, a90 = wedges["mu_over_mu0_B"][0], wedges["mu_over_mu0_B"][-1]
@@ -97,7 +106,7 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
     )
     step()
     generic = families.generic_cases(MU0, (30.0, 15.0), betas[::3], settings=DEMO_1D)
-    writer.table("fig6b_generic_cases", generic.columns, generic.units, generic.description)
+    writer.family("fig6b_generic_cases", generic)
     fig = new_figure(6.5, 4.5)
     plot_family_lines(generic, ax=fig.add_subplot())
     excess = float(np.min(generic["mu_over_mu0_B"] - wedges["mu_over_mu0_B"][::3]))
@@ -109,7 +118,7 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
     )
     step()
     surfaces = families.surfaces_2d_vs_beta(MU0, betas, settings=DEMO_2D)
-    writer.table("fig7_surfaces_2d", surfaces.columns, surfaces.units, surfaces.description)
+    writer.family("fig7_surfaces_2d", surfaces)
     fig = new_figure(6.5, 4.5)
     plot_family_lines(surfaces, ax=fig.add_subplot())
     sym = surfaces["mu_over_mu0_l2pi_2pi"]
@@ -121,7 +130,7 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
     )
     step()
     grid = families.wavelength_map(MU0, settings=DEMO_2D)
-    writer.table("fig8_wavelength_map", grid.columns, grid.units, grid.description)
+    writer.family("fig8_wavelength_map", grid)
     fig = new_figure(14.0, 4.2)
     for k, beta in enumerate((0.0, 45.0, 90.0)):
         plot_wavelength_map(grid, beta, ax=fig.add_subplot(1, 3, k + 1))
@@ -164,8 +173,7 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
     adhesion = families.adhesion_cases(
         MU0, settings=LatticeSettings(stations=1000, time_samples=50)
     )
-    for name, sweep in adhesion.items():
-        writer.table(f"fig10_adhesion_{_slug(name)}", sweep.columns(), sweep.units(), name)
+    writer.results("fig10_adhesion", adhesion)
     sine = adhesion["sine/sine"]
     zero = int(np.flatnonzero(sine.load == 0.0)[0])
     section.add_figure(
@@ -179,8 +187,7 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
     )
     step()
     wear = families.wear_cases(MU0, samples=11, settings=DEMO_2D)
-    for name, history in wear.items():
-        writer.table(f"fig11_wear_{_slug(name)}", history.columns(), history.units(), name)
+    writer.results("fig11_wear", wear)
     w = wear["wedge/wedge"]
     section.add_figure(
         writer.figure("fig11_wear", plots.fig11_wear(wear)),
@@ -191,8 +198,7 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
     )
     step()
     h1 = families.hierarchy_1d_cases(MU0, settings=DEMO_1D)
-    for name, result in h1.items():
-        writer.table(f"fig12_hierarchy_{_slug(name)}", result.columns(), result.units(), name)
+    writer.results("fig12_hierarchy", h1)
     rough30 = h1["wedge 30 rough/rough"]
     last_valid = int(np.flatnonzero(rough30.valid[:, 0])[-1])
     section.add_figure(
@@ -204,8 +210,7 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
     )
     step()
     h2 = families.hierarchy_2d_cases(MU0, settings=DEMO_2D)
-    for name, result in h2.items():
-        writer.table(f"fig13_hierarchy_2d_{name}", result.columns(), result.units(), name)
+    writer.results("fig13_hierarchy_2d", h2)
     a, b, sym = h2["l2pi_3pi"], h2["l3pi_2pi"], h2["l2pi_2pi"]
     n = a.n_levels
     spread = [float(np.ptp(np.ma.getdata(sym.mu[i])) / np.mean(sym.mu[i])) for i in (1, n)]

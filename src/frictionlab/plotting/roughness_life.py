@@ -56,6 +56,15 @@ def _finish(ax: Axes, xlabel: str, ylabel: str, title: str) -> Axes:
     return ax
 
 
+#: The x axis of every adhesion panel.
+_LOAD_LABEL = "normal load per spring L (N)"
+
+
+def _load_panel(sweep: AdhesionSweep, ax: Axes | None) -> tuple[Axes, np.ndarray]:
+    """The panel of an adhesion plot (a new one when ``ax`` is None), loads in rising order."""
+    return (new_figure().add_subplot() if ax is None else ax), np.argsort(sweep.load)
+
+
 def _titled(fig: Figure, title: str | None) -> Figure:
     if title:
         fig.suptitle(title, fontsize=10)
@@ -69,9 +78,7 @@ def plot_adhesion_mu(
 
     ``limit`` bounds the y axis (mu_a diverges as L -> 0); the non-adhesive mu is dashed.
     """
-    if ax is None:
-        ax = new_figure().add_subplot()
-    order = np.argsort(sweep.load)
+    ax, order = _load_panel(sweep, ax)
     for k, beta in enumerate(sweep.beta_deg):
         x, y = _defined(sweep.load[order], sweep.mu_apparent[order, k] / sweep.mu0)
         # two branches: mu_a diverges with opposite signs on either side of L = 0
@@ -83,19 +90,13 @@ def plot_adhesion_mu(
     ax.axvline(0.0, color="0.6", lw=0.8)
     ax.axhline(0.0, color="0.6", lw=0.8)
     ax.set_ylim(-limit, limit)
-    return _finish(
-        ax,
-        "normal load per spring L (N)",
-        "mu_a / mu0 (Eq 22); dashed: k_t = 0",
-        "apparent friction coefficient (undefined at L = 0)",
-    )
+    ylabel = "mu_a / mu0 (Eq 22); dashed: k_t = 0"
+    return _finish(ax, _LOAD_LABEL, ylabel, "apparent friction coefficient (undefined at L = 0)")
 
 
 def plot_adhesion_force(sweep: AdhesionSweep, *, ax: Axes | None = None, label: str = "") -> Axes:
     """Tangential force |R_xy^(c)| per spring vs load per spring."""
-    if ax is None:
-        ax = new_figure().add_subplot()
-    order = np.argsort(sweep.load)
+    ax, order = _load_panel(sweep, ax)
     for k, beta in enumerate(sweep.beta_deg):
         ax.plot(
             sweep.load[order],
@@ -104,19 +105,13 @@ def plot_adhesion_force(sweep: AdhesionSweep, *, ax: Axes | None = None, label: 
             label=f"{label}beta = {beta:g} deg",
         )
     ax.axvline(0.0, color="0.6", lw=0.8)
-    return _finish(
-        ax,
-        "normal load per spring L (N)",
-        "tangential force per spring (N)",
-        "friction force of the compressed springs",
-    )
+    ylabel = "tangential force per spring (N)"
+    return _finish(ax, _LOAD_LABEL, ylabel, "friction force of the compressed springs")
 
 
 def plot_tensile_fraction(sweep: AdhesionSweep, *, ax: Axes | None = None, label: str = "") -> Axes:
     """Mean (solid) and largest (dotted) fraction of stretched springs over the period."""
-    if ax is None:
-        ax = new_figure().add_subplot()
-    order = np.argsort(sweep.load)
+    ax, order = _load_panel(sweep, ax)
     for k, beta in enumerate(sweep.beta_deg):
         line = ax.plot(
             sweep.load[order],
@@ -128,12 +123,8 @@ def plot_tensile_fraction(sweep: AdhesionSweep, *, ax: Axes | None = None, label
             sweep.load[order], sweep.tensile_fraction_max[order, k], ":", color=line.get_color()
         )
     ax.set_ylim(-0.02, 1.02)
-    return _finish(
-        ax,
-        "normal load per spring L (N)",
-        "fraction of stretched springs",
-        "stretched springs over one period (mean; dotted: max)",
-    )
+    title = "stretched springs over one period (mean; dotted: max)"
+    return _finish(ax, _LOAD_LABEL, "fraction of stretched springs", title)
 
 
 def adhesion_figure(sweep: AdhesionSweep, title: str | None = None) -> Figure:

@@ -789,6 +789,29 @@ def sample_np(
     )
 
 
+@numba.njit(cache=True, inline="always")
+def _cell(q: float, d: float, n: int) -> tuple[int, int, float]:
+    """The periodic cell of coordinate ``q`` on ``n`` pixel centres ``(i + 1/2) d``.
+
+    Returns the indices of the samples below and above ``q`` and the weight of the
+    upper one (0 on a sample).
+    """
+    u = q / d - 0.5
+    f = math.floor(u)
+    i = int(f) % n
+    return i, (i + 1) % n, u - f
+
+
+@numba.njit(cache=True, inline="always")
+def _bilinear(
+    fields: np.ndarray, m: int, i0: int, i1: int, j0: int, j1: int, tx: float, ty: float
+) -> float:
+    """Field ``m`` interpolated between samples (i0, i1) x (j0, j1) with weights tx, ty."""
+    return (1.0 - tx) * ((1.0 - ty) * fields[m, i0, j0] + ty * fields[m, i0, j1]) + (
+        tx * ((1.0 - ty) * fields[m, i1, j0] + ty * fields[m, i1, j1])
+    )
+
+
 @numba.njit(cache=True, nogil=True)
 def interp_periodic_nb(
     fields: np.ndarray,
@@ -809,39 +832,18 @@ def interp_periodic_nb(
     ix1 = np.empty(xq.size, dtype=np.int64)
     wx = np.empty(xq.size)
     for a in range(xq.size):
-        u = xq[a] / dx - 0.5
-        f = math.floor(u)
-        wx[a] = u - f
-        i = int(f) % nx
-        ix0[a] = i
-        ix1[a] = (i + 1) % nx
-    iy0 = np.empty(yq.size, dtype=np.int64)
-    iy1 = np.empty(yq.size, dtype=np.int64)
-    wy = np.empty(yq.size)
-    for b in range(yq.size):
-        if ny == 1:
-            iy0[b] = 0
-            iy1[b] = 0
-            wy[b] = 0.0
-        else:
-            v = yq[b] / dy - 0.5
-            f = math.floor(v)
-            wy[b] = v - f
-            j = int(f) % ny
-            iy0[b] = j
-            iy1[b] = (j + 1) % ny
+        ix0[a], ix1[a], wx[a] = _cell(xq[a], dx, nx)
+    iy0 = np.zeros(yq.size, dtype=np.int64)
+    iy1 = np.zeros(yq.size, dtype=np.int64)
+    wy = np.zeros(yq.size)
+    if ny > 1:
+        for b in range(yq.size):
+            iy0[b], iy1[b], wy[b] = _cell(yq[b], dy, ny)
     for m in range(k):
         for a in range(xq.size):
-            i0 = ix0[a]
-            i1 = ix1[a]
-            tx = wx[a]
+            i0, i1, tx = ix0[a], ix1[a], wx[a]
             for b in range(yq.size):
-                j0 = iy0[b]
-                j1 = iy1[b]
-                ty = wy[b]
-                out[m, a, b] = (1.0 - tx) * (
-                    (1.0 - ty) * fields[m, i0, j0] + ty * fields[m, i0, j1]
-                ) + tx * ((1.0 - ty) * fields[m, i1, j0] + ty * fields[m, i1, j1])
+                out[m, a, b] = _bilinear(fields, m, i0, i1, iy0[b], iy1[b], tx, wy[b])
     return out
 
 
@@ -857,18 +859,8 @@ def interp_points_nb(
     k, nx, ny = fields.shape
     out = np.empty((k, xq.size))
     for p in range(xq.size):
-        u = xq[p] / dx - 0.5
-        f = math.floor(u)
-        tx = u - f
-        i0 = int(f) % nx
-        i1 = (i0 + 1) % nx
-        v = yq[p] / dy - 0.5
-        f = math.floor(v)
-        ty = v - f
-        j0 = int(f) % ny
-        j1 = (j0 + 1) % ny
+        i0, i1, tx = _cell(xq[p], dx, nx)
+        j0, j1, ty = _cell(yq[p], dy, ny)
         for m in range(k):
-            out[m, p] = (1.0 - tx) * ((1.0 - ty) * fields[m, i0, j0] + ty * fields[m, i0, j1]) + (
-                tx * ((1.0 - ty) * fields[m, i1, j0] + ty * fields[m, i1, j1])
-            )
+            out[m, p] = _bilinear(fields, m, i0, i1, j0, j1, tx, ty)
     return out

@@ -37,26 +37,17 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import FloatArray, readonly_masked
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
-from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+from frictionlab.roughness.lattice import LatticeSettings, friction_polar, settings_from
 from frictionlab.roughness.surface import Surface
 
 __all__ = ["DEFAULT_TENSILE_RATIO", "AdhesionSweep", "adhesion_sweep"]
 
-FloatArray = NDArray[np.float64]
-
 #: k_t / k_c by default (the paper's k_t = k_c / 2).
 DEFAULT_TENSILE_RATIO = 0.5
-
-
-def _masked(values: FloatArray, undefined: NDArray[np.bool_]) -> np.ma.MaskedArray:
-    """A read-only masked array (0.0 stored under the mask, never NaN)."""
-    data = np.where(undefined, 0.0, values)
-    out = np.ma.MaskedArray(data, mask=np.array(undefined, dtype=bool, copy=True))
-    out.setflags(write=False)
-    return out
 
 
 @dataclass(frozen=True, repr=False)
@@ -201,17 +192,9 @@ def adhesion_sweep(
         The lattice settings (or their fields as keywords); ``load`` and ``k_t`` are set
         by the sweep; ``control`` must be ``"load"``.
     """
-    if settings is None:
-        k_c = options.get("k_c", 1.0)
-        tensile = DEFAULT_TENSILE_RATIO * k_c if k_t is None and _number(k_c) else k_t
-        try:
-            settings = LatticeSettings(**{**options, "k_t": tensile})
-        except TypeError as exc:
-            raise ParameterError(
-                "options", sorted(options), f"fields of LatticeSettings ({exc})"
-            ) from None
-    elif options:
-        raise ParameterError("options", sorted(options), "either settings= or keyword options")
+    k_c = options.get("k_c", 1.0)
+    tensile = DEFAULT_TENSILE_RATIO * k_c if k_t is None and _number(k_c) else k_t
+    settings = settings_from(LatticeSettings, settings, options, {"k_t": tensile})
     if settings.control != "load":
         raise ParameterError("control", settings.control, "'load' for a load sweep")
     values = _loads(loads)
@@ -245,7 +228,7 @@ def adhesion_sweep(
     if compare_without_adhesion:
         undefined = np.array([[p is None] * betas.size for p in plain])
         data = np.array([np.zeros(betas.size) if p is None else p for p in plain])
-        no_adhesion = _masked(data, undefined)
+        no_adhesion = readonly_masked(data, undefined)
     return AdhesionSweep(
         load=_ro(values),
         beta_deg=_ro(betas),
@@ -253,8 +236,8 @@ def adhesion_sweep(
         force_y=_ro(fy),
         tangential_force=_ro(tangential),
         compressed_force=_ro(fc),
-        mu_compressed=_masked(mu_c, ~in_contact),
-        mu_apparent=_masked(mu_a, np.broadcast_to(zero[:, None], mu_a.shape)),
+        mu_compressed=readonly_masked(mu_c, ~in_contact),
+        mu_apparent=readonly_masked(mu_a, np.broadcast_to(zero[:, None], mu_a.shape)),
         mu_no_adhesion=no_adhesion,
         contact_fraction_mean=_ro(stack("contact_fraction_mean")),
         contact_fraction_min=_ro(stack("contact_fraction_min")),

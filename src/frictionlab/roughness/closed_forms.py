@@ -27,8 +27,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab.errors import ParameterError, ValidityError
 
 __all__ = [
@@ -47,8 +48,6 @@ __all__ = [
     "wedge_on_wedge_0deg",
     "wedge_on_wedge_90deg",
 ]
-
-FloatArray = NDArray[np.float64]
 
 
 def _check_mu0(mu0: float) -> float:

@@ -43,7 +43,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import readonly
+from frictionlab._arrays import FloatArray, readonly
 from frictionlab.errors import ConvergenceError, ParameterError, ValidityError
 from frictionlab.roughness import _kernels
 from frictionlab.roughness.lattice import (
@@ -54,6 +54,8 @@ from frictionlab.roughness.lattice import (
     lattice_geometry,
     masked_columns,
     polar_head_columns,
+    polar_mu_fields,
+    settings_from,
 )
 from frictionlab.roughness.surface import Surface
 from frictionlab.roughness.validity import check_on_invalid
@@ -66,8 +68,6 @@ __all__ = [
     "elastic_polar",
     "pressure_sweep",
 ]
-
-FloatArray = NDArray[np.float64]
 
 
 def _positive(name: str, value: Any, what: str) -> float:
@@ -323,7 +323,7 @@ def elastic_contact(
     Raises :class:`~frictionlab.errors.ConvergenceError` when the solver does not converge
     within ``max_iterations`` (raise ``tolerance`` or ``max_iterations``).
     """
-    settings = _settings(settings, options)
+    settings = settings_from(ElasticSettings, settings, options)
     geometry = _grid(lower, upper, settings.stations)
     _check_hardness(settings, geometry)
     return _contact(lower, upper, geometry, settings, settings.pressure, shift, initial)
@@ -492,19 +492,6 @@ class ElasticPolar:
         }
 
 
-def _settings(settings: ElasticSettings | None, options: dict[str, Any]) -> ElasticSettings:
-    if settings is None:
-        try:
-            return ElasticSettings(**options)
-        except TypeError as exc:
-            raise ParameterError(
-                "options", sorted(options), f"fields of ElasticSettings ({exc})"
-            ) from None
-    if options:
-        raise ParameterError("options", sorted(options), "either settings= or keyword options")
-    return settings
-
-
 def elastic_polar(
     lower: Surface,
     upper: Surface,
@@ -520,7 +507,7 @@ def elastic_polar(
     :class:`ElasticSettings` (or its fields as keywords). ``progress(done, total)`` is
     called after each BEM solve.
     """
-    settings = _settings(settings, options)
+    settings = settings_from(ElasticSettings, settings, options)
     return _polar(lower, upper, _check_mu0(mu0), check_betas(beta_deg), settings, progress, None)
 
 
@@ -540,7 +527,7 @@ def pressure_sweep(
     the new mean (far fewer iterations for close pressures: about 26 instead of 150 for
     +5 % on a 512^2 map); the polars are returned in the order of ``pressures``.
     """
-    base = _settings(settings, {"pressure": 1.0, **options} if settings is None else options)
+    base = settings_from(ElasticSettings, settings, options, {"pressure": 1.0})
     values = np.array(pressures, dtype=np.float64, ndmin=1)
     if values.ndim != 1 or values.size == 0:
         raise ParameterError("pressure", pressures, "one pressure or a list of pressures in Pa")
@@ -621,20 +608,11 @@ def _polar(
         valid = bad == 0
         mu_x = np.where(valid, mu_x, np.nan)
         mu_y = np.where(valid, mu_y, np.nan)
-    cos_b = np.array([c for c, _ in cs])
-    sin_b = np.array([s for _, s in cs])
-    mu_mag = np.hypot(mu_x, mu_y)
-    mu_proj = mu_x * cos_b + mu_y * sin_b
     messages = tuple(m for m in first_bad if m is not None)
     n_bad = int(np.count_nonzero(~valid))
     fractions = np.array([s.contact_fraction for s in states])
     return ElasticPolar(
-        beta_deg=readonly(betas, None),
-        mu_x=readonly(mu_x, None),
-        mu_y=readonly(mu_y, None),
-        mu=readonly(mu_mag if settings.mu_definition == "magnitude" else mu_proj, None),
-        mu_magnitude=readonly(mu_mag, None),
-        mu_projection=readonly(mu_proj, None),
+        **polar_mu_fields(betas, mu_x, mu_y, settings.mu_definition),
         valid=readonly(valid, None),
         invalid_fraction=readonly(
             dropped / shifts.shape[0] if settings.on_invalid == "drop" else np.zeros(n_b), None

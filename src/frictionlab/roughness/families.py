@@ -31,8 +31,9 @@ from dataclasses import dataclass
 from types import MappingProxyType
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import wedge_friction
@@ -46,7 +47,7 @@ from frictionlab.roughness.hierarchy import (
     wedge_hierarchy,
 )
 from frictionlab.roughness.lattice import LatticeSettings, friction_polar
-from frictionlab.roughness.surface import Profile
+from frictionlab.roughness.surface import Profile, Surface
 from frictionlab.roughness.wear import WearHistory, WearSettings, wear_history
 
 __all__ = [
@@ -69,8 +70,6 @@ __all__ = [
     "wear_cases",
     "wedge_cases",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: The six configuration types of Fig 6 as (phi1, phi2, phi3, phi4)
 #: built from a steep angle "S" and a shallow angle "s" (0: flat face pair).
@@ -438,6 +437,23 @@ def wear_cases(
     }
 
 
+#: Ratio of successive levels' sizes in the paper's hierarchies (Figs 12-14).
+_LEVEL_RATIO = 10.0
+
+
+def _self_similar(
+    lower: Surface,
+    upper: Surface,
+    levels: int,
+    mu0: float,
+    beta_deg: ArrayLike,
+    settings: LatticeSettings,
+) -> HierarchyResult:
+    """mu_n of ``levels`` self-similar copies of the pair (ratio 10), invalid levels masked."""
+    pairs = self_similar_levels(lower, upper, levels, _LEVEL_RATIO)
+    return hierarchy_friction(pairs, mu0, beta_deg, on_invalid="mask", settings=settings)
+
+
 def hierarchy_1d_cases(
     mu0: float = 0.3, levels: int = 5, *, settings: LatticeSettings | None = None
 ) -> dict[str, HierarchyResult]:
@@ -460,13 +476,7 @@ def hierarchy_1d_cases(
     a = HIERARCHY_LENGTH
     sine = sinusoid(a, 2.0 * math.pi * a)
     for name, upper in (("flat/rough", flat()), ("rough/rough", sine)):
-        out[f"sine {name}"] = hierarchy_friction(
-            self_similar_levels(sine, upper, levels, 10.0),
-            m,
-            [0.0, 90.0],
-            on_invalid="mask",
-            settings=settings,
-        )
+        out[f"sine {name}"] = _self_similar(sine, upper, levels, m, [0.0, 90.0], settings)
     return out
 
 
@@ -487,13 +497,7 @@ def hierarchy_2d_cases(
         a = HIERARCHY_LENGTH
         lengths = (pair[0] * math.pi * a, pair[1] * math.pi * a)
         s = sinusoid(a, lengths)
-        out[_label(lengths, a)] = hierarchy_friction(
-            self_similar_levels(s, s, levels, 10.0),
-            m,
-            beta_deg,
-            on_invalid="mask",
-            settings=settings,
-        )
+        out[_label(lengths, a)] = _self_similar(s, s, levels, m, beta_deg, settings)
     return out
 
 
@@ -513,7 +517,7 @@ def hierarchy_wear_case(
     a = HIERARCHY_LENGTH
     s = sinusoid(a, (2.0 * math.pi * a, 2.0 * math.pi * a))
     return hierarchy_wear(
-        self_similar_levels(s, s, levels, 10.0),
+        self_similar_levels(s, s, levels, _LEVEL_RATIO),
         m,
         [0.0],
         wear,

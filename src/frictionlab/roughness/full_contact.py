@@ -30,12 +30,11 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from frictionlab._arrays import FloatArray
 from frictionlab._jit import numba
 from frictionlab.roughness._kernels import _FAST, multipliers_np
 
 __all__ = ["FullContactSums", "full_contact_sums"]
-
-FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)

@@ -21,8 +21,9 @@ from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.surface import (
     Evaluation,
@@ -53,8 +54,6 @@ __all__ = [
     "smooth_wedge",
     "wedge",
 ]
-
-FloatArray = NDArray[np.float64]
 
 
 def _floats(value: Any, name: str) -> list[float]:

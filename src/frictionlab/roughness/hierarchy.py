@@ -44,15 +44,28 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from frictionlab._arrays import FloatArray, readonly_masked
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError, ValidityError
 from frictionlab.roughness.closed_forms import wedge_friction
 from frictionlab.roughness.generators import scaled
-from frictionlab.roughness.lattice import LatticeSettings, check_betas, friction_polar
+from frictionlab.roughness.lattice import (
+    LatticeSettings,
+    check_betas,
+    friction_polar,
+    long_mu_columns,
+)
 from frictionlab.roughness.surface import Surface
 from frictionlab.roughness.validity import check_on_invalid
-from frictionlab.roughness.wear import WearSettings, pair_volume, wear_time, worn_pair
+from frictionlab.roughness.wear import (
+    WearingFriction,
+    WearSettings,
+    pair_volume,
+    wear_time,
+    wearing_fields,
+    worn_pair,
+)
 
 __all__ = [
     "MU_PASSED",
@@ -65,8 +78,6 @@ __all__ = [
     "self_similar_levels",
     "wedge_hierarchy",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: The scalar passed to the next level; the first is the default.
 MU_PASSED = ("magnitude", "projection")
@@ -155,12 +166,6 @@ def self_similar_levels(
     return out
 
 
-def _masked(values: FloatArray, undefined: NDArray[np.bool_]) -> np.ma.MaskedArray:
-    out = np.ma.MaskedArray(np.where(undefined, 0.0, values), mask=np.array(undefined, copy=True))
-    out.setflags(write=False)
-    return out
-
-
 @dataclass(frozen=True, repr=False)
 class HierarchyResult(TableResult):
     """mu_i of every level (rows i = 0 ... n; row 0 is the local mu0) per direction.
@@ -193,13 +198,8 @@ class HierarchyResult(TableResult):
         n1, n_b = self.mu.shape
         out: dict[str, np.ndarray] = {
             "level": np.repeat(np.arange(n1), n_b),
-            "beta_deg": np.tile(self.beta_deg, n1),
-            "mu": self.mu.ravel(),
-            "mu_x": self.mu_x.ravel(),
-            "mu_y": self.mu_y.ravel(),
+            **long_mu_columns(self, n1),
         }
-        if self.mu0 > 0.0:
-            out["mu_over_mu0"] = self.mu.ravel() / self.mu0
         out["valid"] = self.valid.ravel()
         return out
 
@@ -261,9 +261,9 @@ def _recursion(
     invalid = ~valid
     return HierarchyResult(
         beta_deg=_ro(betas),
-        mu=_masked(mu, invalid),
-        mu_x=_masked(mu_x, invalid),
-        mu_y=_masked(mu_y, invalid),
+        mu=readonly_masked(mu, invalid),
+        mu_x=readonly_masked(mu_x, invalid),
+        mu_y=readonly_masked(mu_y, invalid),
         valid=_ro(valid, bool),
         first_invalid_level=_ro(first_bad, np.int64),
         mu0=mu0,
@@ -364,20 +364,16 @@ def wedge_hierarchy(
 
 
 @dataclass(frozen=True, repr=False)
-class HierarchyWearHistory(TableResult):
+class HierarchyWearHistory(WearingFriction):
     """mu_i(t) of every level of a wearing hierarchy (innermost level first).
+
+    The fields of :class:`~frictionlab.roughness.wear.WearingFriction`, then these:
+    ``reduction`` holds B_i(t) of each level, shape (n_t, n); ``mu``, ``mu_x``, ``mu_y``
+    have shape (n_t, n + 1, n_beta): row 0 is mu0, row i the global coefficient of level
+    i (``mu`` is the scalar passed upward).
 
     Attributes
     ----------
-    time:
-        Times (s), shape (n_t,).
-    reduction:
-        B_i(t) of each level, shape (n_t, n).
-    beta_deg:
-        Directions (deg), shape (n_beta,).
-    mu, mu_x, mu_y:
-        Shape (n_t, n + 1, n_beta): row 0 is mu0, row i the global coefficient of level
-        i (``mu`` is the scalar passed upward).
     wear_time:
         T_w,i of each level (s), Eq 35, shape (n,).
     start_time, dropout_time:
@@ -388,12 +384,6 @@ class HierarchyWearHistory(TableResult):
         Number of levels not yet flat at each time, shape (n_t,).
     """
 
-    time: FloatArray
-    reduction: FloatArray
-    beta_deg: FloatArray
-    mu: FloatArray
-    mu_x: FloatArray
-    mu_y: FloatArray
     wear_time: FloatArray
     start_time: FloatArray
     dropout_time: FloatArray
@@ -485,12 +475,7 @@ def hierarchy_wear(
         )
         mu[k], mu_x[k], mu_y[k] = (np.ma.getdata(a) for a in (result.mu, result.mu_x, result.mu_y))
     return HierarchyWearHistory(
-        time=_ro(t),
-        reduction=_ro(reduction),
-        beta_deg=_ro(betas),
-        mu=_ro(mu),
-        mu_x=_ro(mu_x),
-        mu_y=_ro(mu_y),
+        **wearing_fields(t, reduction, betas, mu, mu_x, mu_y),
         wear_time=_ro(tw),
         start_time=_ro(start),
         dropout_time=_ro(end),

@@ -40,12 +40,12 @@ import queue
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, fields, replace
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import readonly
+from frictionlab._arrays import FloatArray, readonly
 from frictionlab._frames import TableResult
 from frictionlab._jit import numba
 from frictionlab.errors import ParameterError, ValidityError
@@ -66,8 +66,6 @@ __all__ = [
     "lattice_geometry",
     "merge_polars",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: Default spring stations per shortest surface period (1-D profiles).
 STATIONS_PER_PERIOD_1D = 2000
@@ -658,11 +656,75 @@ def polar_head_columns(polar: Any) -> dict[str, np.ndarray]:
     return out
 
 
+def long_mu_columns(result: Any, repeats: int) -> dict[str, np.ndarray]:
+    """beta_deg, mu, mu_x, mu_y (and mu/mu0 when mu0 > 0) of a (repeats, n_beta) result,
+    flattened row-major: the tail of the long tables of wear and hierarchy results."""
+    out: dict[str, np.ndarray] = {
+        "beta_deg": np.tile(result.beta_deg, repeats),
+        "mu": result.mu.ravel(),
+        "mu_x": result.mu_x.ravel(),
+        "mu_y": result.mu_y.ravel(),
+    }
+    if result.mu0 > 0.0:
+        out["mu_over_mu0"] = result.mu.ravel() / result.mu0
+    return out
+
+
 def masked_columns(columns: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     """Float columns with NaN or infinite entries masked (empty CSV fields), others as they are."""
     return {
         k: np.ma.masked_invalid(v) if v.dtype.kind == "f" and not np.all(np.isfinite(v)) else v
         for k, v in columns.items()
+    }
+
+
+_Settings = TypeVar("_Settings")
+
+
+def settings_from(
+    kind: type[_Settings],
+    settings: _Settings | None,
+    options: dict[str, Any],
+    defaults: dict[str, Any] | None = None,
+) -> _Settings:
+    """``settings``, or a ``kind`` built from the keyword ``options`` (not both).
+
+    ``defaults`` fill what ``options`` leaves out; a bad option or both given raise
+    :class:`ParameterError` naming the options.
+    """
+    if settings is None:
+        try:
+            return kind(**{**(defaults or {}), **options})
+        except TypeError as exc:
+            raise ParameterError(
+                "options", sorted(options), f"fields of {kind.__name__} ({exc})"
+            ) from None
+    if options:
+        raise ParameterError("options", sorted(options), "either settings= or keyword options")
+    return settings
+
+
+def polar_mu_fields(
+    betas: FloatArray, mu_x: FloatArray, mu_y: FloatArray, mu_definition: str
+) -> dict[str, FloatArray]:
+    """The leading fields of a polar, read-only: beta_deg, mu_x, mu_y, mu and both mu's.
+
+    ``mu_magnitude = |(mu_x, mu_y)|``, ``mu_projection = mu_x cos(beta) + mu_y sin(beta)``
+    (cos and sin exact at multiples of 90 degrees); ``mu`` is the one ``mu_definition``
+    names. Shared by the lattice's and the elastic model's polars.
+    """
+    cs = [_cos_sin_deg(float(b)) for b in betas]
+    cos_b = np.array([c for c, _ in cs])
+    sin_b = np.array([s for _, s in cs])
+    mu_mag = np.hypot(mu_x, mu_y)
+    mu_proj = mu_x * cos_b + mu_y * sin_b
+    return {
+        "beta_deg": readonly(betas, None),
+        "mu_x": readonly(mu_x, None),
+        "mu_y": readonly(mu_y, None),
+        "mu": readonly(mu_mag if mu_definition == "magnitude" else mu_proj, None),
+        "mu_magnitude": readonly(mu_mag, None),
+        "mu_projection": readonly(mu_proj, None),
     }
 
 
@@ -712,15 +774,7 @@ def friction_polar(
     ParameterError
         For bad arguments.
     """
-    if settings is None:
-        try:
-            settings = LatticeSettings(**options)
-        except TypeError as exc:
-            raise ParameterError(
-                "options", sorted(options), f"fields of LatticeSettings ({exc})"
-            ) from None
-    elif options:
-        raise ParameterError("options", sorted(options), "either settings= or keyword options")
+    settings = settings_from(LatticeSettings, settings, options)
     m0 = _check_mu0(mu0)
     betas = check_betas(beta_deg)
     lattice = _prepare(lower, upper, settings)
@@ -732,10 +786,6 @@ def friction_polar(
         results = _all_directions(lattice, lower, upper, m0, betas, settings, progress)
     mu_x = np.array([r.mu_x for r in results])
     mu_y = np.array([r.mu_y for r in results])
-    cos_b = np.array([_cos_sin_deg(float(b))[0] for b in betas])
-    sin_b = np.array([_cos_sin_deg(float(b))[1] for b in betas])
-    mu_mag = np.hypot(mu_x, mu_y)
-    mu_proj = mu_x * cos_b + mu_y * sin_b
     messages = tuple(r.invalid for r in results if r.invalid is not None)
     n_bad = len(messages)
     notes: tuple[str, ...] = ()
@@ -746,12 +796,7 @@ def friction_polar(
             "the unequal spring forces; load = 'full' computes that limit in one pass",
         )
     return FrictionPolar(
-        beta_deg=readonly(betas, None),
-        mu_x=readonly(mu_x, None),
-        mu_y=readonly(mu_y, None),
-        mu=readonly(mu_mag if settings.mu_definition == "magnitude" else mu_proj, None),
-        mu_magnitude=readonly(mu_mag, None),
-        mu_projection=readonly(mu_proj, None),
+        **polar_mu_fields(betas, mu_x, mu_y, settings.mu_definition),
         mu_apparent=None
         if settings.load == 0.0
         else readonly(np.array([r.mu_apparent for r in results]), None),

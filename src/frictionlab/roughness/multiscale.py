@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import readonly
+from frictionlab._arrays import FloatArray, readonly
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.full_contact import full_contact_sums
@@ -53,7 +53,6 @@ __all__ = [
     "multiscale_friction",
 ]
 
-FloatArray = NDArray[np.float64]
 MU_PASSED = ("magnitude", "projection")
 
 

@@ -24,15 +24,13 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
-from frictionlab._arrays import readonly
+from frictionlab._arrays import FloatArray, readonly
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.surface import SampledHeightMap, SampledProfile, Surface
 
 __all__ = ["SurfaceStatistics", "surface_statistics"]
-
-FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)

@@ -28,8 +28,9 @@ from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab._arrays import readonly as _readonly
 from frictionlab.errors import ParameterError
 from frictionlab.roughness import _kernels
@@ -44,7 +45,6 @@ __all__ = [
     "Surface",
 ]
 
-FloatArray = NDArray[np.float64]
 Evaluation = tuple[FloatArray, FloatArray, FloatArray]
 
 #: Gradient methods of sampled surfaces.

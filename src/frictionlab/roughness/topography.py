@@ -59,11 +59,12 @@ import os
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypedDict, Unpack
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.inputs import check_input_file
 from frictionlab.roughness.generators import from_array
@@ -72,14 +73,14 @@ from frictionlab.roughness.surface import SampledHeightMap, SampledProfile
 __all__ = [
     "DETREND_MODES",
     "PERIODICITY_MODES",
+    "FileOptions",
+    "Preparation",
     "PreparedSurface",
     "from_topography",
     "prepare_topography",
     "read_prepared",
     "read_surface",
 ]
-
-FloatArray = NDArray[np.float64]
 
 PERIODICITY_MODES = ("require", "assume", "mirror")
 DETREND_MODES = ("none", "center", "height", "curvature")
@@ -100,24 +101,39 @@ class PreparedSurface:
     warnings: tuple[str, ...] = ()
 
 
+class Preparation(TypedDict, total=False):
+    """The optional keywords of :func:`prepare_topography` (documented there; its
+    defaults apply to what is left out)."""
+
+    fill_missing: bool
+    gradient: str
+    crop: tuple[float, ...] | None
+    window: str | None
+    short_cutoff: float | None
+    long_cutoff: float | None
+    allow_flattening: bool
+    resample: str | int | None
+
+
+class FileOptions(Preparation, total=False):
+    """The optional keywords of :func:`read_prepared`: the file's reader and metadata, then
+    those of :class:`Preparation`."""
+
+    format: str | None
+    channel: int | None
+    unit: str | None
+    physical_sizes: float | tuple[float, ...] | None
+
+
 def from_topography(
-    topography: Any,
-    *,
-    periodicity: str,
-    detrend: str,
-    fill_missing: bool = False,
-    gradient: str = "fd",
+    topography: Any, *, periodicity: str, detrend: str, **options: Unpack[Preparation]
 ) -> SampledProfile | SampledHeightMap:
     """Convert a SurfaceTopography line scan or topography to a frictionlab surface (SI).
 
-    The surface of :func:`prepare_topography` without crop, window or filters.
+    The surface of :func:`prepare_topography` (same arguments).
     """
     return prepare_topography(
-        topography,
-        periodicity=periodicity,
-        detrend=detrend,
-        fill_missing=fill_missing,
-        gradient=gradient,
+        topography, periodicity=periodicity, detrend=detrend, **options
     ).surface
 
 
@@ -525,29 +541,14 @@ def read_surface(
     *,
     periodicity: str,
     detrend: str,
-    fill_missing: bool = False,
-    gradient: str = "fd",
-    format: str | None = None,
-    channel: int | None = None,
-    unit: str | None = None,
-    physical_sizes: float | tuple[float, ...] | None = None,
+    **options: Unpack[FileOptions],
 ) -> SampledProfile | SampledHeightMap:
-    """Read a measured surface file: the surface of :func:`read_prepared`.
+    """Read a measured surface file: the surface of :func:`read_prepared` (same arguments).
 
     Every problem, bad options included, raises :class:`~frictionlab.errors.InputError`.
     """
     try:
-        prepared = read_prepared(
-            path,
-            periodicity=periodicity,
-            detrend=detrend,
-            fill_missing=fill_missing,
-            gradient=gradient,
-            format=format,
-            channel=channel,
-            unit=unit,
-            physical_sizes=physical_sizes,
-        )
+        prepared = read_prepared(path, periodicity=periodicity, detrend=detrend, **options)
     except ParameterError as exc:
         raise InputError(f"surface file '{os.fspath(path)}': {exc}") from None
     return prepared.surface
@@ -568,18 +569,11 @@ def read_prepared(
     *,
     periodicity: str,
     detrend: str,
-    fill_missing: bool = False,
-    gradient: str = "fd",
     format: str | None = None,
     channel: int | None = None,
     unit: str | None = None,
     physical_sizes: float | tuple[float, ...] | None = None,
-    crop: tuple[float, ...] | None = None,
-    window: str | None = None,
-    short_cutoff: float | None = None,
-    long_cutoff: float | None = None,
-    allow_flattening: bool = False,
-    resample: str | int | None = None,
+    **options: Unpack[Preparation],
 ) -> PreparedSurface:
     """Read a measured surface file with SurfaceTopography and prepare it (file I/O here only).
 
@@ -647,19 +641,7 @@ def read_prepared(
         if key is not None:
             raise ParameterError(key, kwargs.get(key), f"accepted by '{name}' ({text})") from None
         raise InputError(f"cannot read surface file '{name}': {text}") from None
-    prepared = prepare_topography(
-        topography,
-        periodicity=periodicity,
-        detrend=detrend,
-        fill_missing=fill_missing,
-        gradient=gradient,
-        crop=crop,
-        window=window,
-        short_cutoff=short_cutoff,
-        long_cutoff=long_cutoff,
-        allow_flattening=allow_flattening,
-        resample=resample,
-    )
+    prepared = prepare_topography(topography, periodicity=periodicity, detrend=detrend, **options)
     source = {
         "file": os.path.basename(name),
         "sha256": digest,

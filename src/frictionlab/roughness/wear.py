@@ -30,12 +30,13 @@ Pure physics: no I/O.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from frictionlab._arrays import FloatArray
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
@@ -50,7 +51,7 @@ from frictionlab.roughness.generators import (
     WedgeProfile,
     scaled,
 )
-from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+from frictionlab.roughness.lattice import LatticeSettings, friction_polar, long_mu_columns
 from frictionlab.roughness.surface import (
     Profile,
     SampledHeightMap,
@@ -63,6 +64,7 @@ __all__ = [
     "WEAR_SURFACES",
     "WearHistory",
     "WearSettings",
+    "WearingFriction",
     "archard_volume",
     "mean_height_above_valley",
     "pair_volume",
@@ -70,13 +72,12 @@ __all__ = [
     "roughness_volume",
     "wear_history",
     "wear_time",
+    "wearing_fields",
     "wedge_height",
     "wedge_tan_phi",
     "wedge_tan_phi_rate",
     "worn_pair",
 ]
-
-FloatArray = NDArray[np.float64]
 
 #: Which surfaces wear; the first is the default.
 WEAR_SURFACES = ("both", "lower", "upper")
@@ -312,20 +313,52 @@ def _wedge_angles(surface: Surface) -> tuple[float, float]:
 
 
 @dataclass(frozen=True, repr=False)
-class WearHistory(TableResult):
-    """mu(t) of a wearing pair (arrays (times, directions) unless stated).
+class WearingFriction(TableResult):
+    """The leading fields of every wear history (read-only arrays).
 
     Attributes
     ----------
     time:
         Times (s), shape (n_t,).
     reduction:
-        B(t), shape (n_t,).
+        The roughness reductions B(t) (Eq 31), first axis the time.
     beta_deg:
         Directions (deg), shape (n_beta,).
     mu, mu_x, mu_y:
-        Friction coefficients of the worn pair (``mu`` follows the lattice settings'
-        ``mu_definition``).
+        Friction coefficients over time and direction (first axis the time, last the
+        direction).
+    """
+
+    time: FloatArray
+    reduction: FloatArray
+    beta_deg: FloatArray
+    mu: FloatArray
+    mu_x: FloatArray
+    mu_y: FloatArray
+
+
+def wearing_fields(
+    time: FloatArray,
+    reduction: FloatArray,
+    beta_deg: FloatArray,
+    mu: FloatArray,
+    mu_x: FloatArray,
+    mu_y: FloatArray,
+) -> dict[str, FloatArray]:
+    """The fields of :class:`WearingFriction` as read-only float64 copies."""
+    values = (time, reduction, beta_deg, mu, mu_x, mu_y)
+    return {f.name: _ro(v) for f, v in zip(fields(WearingFriction), values, strict=True)}
+
+
+@dataclass(frozen=True, repr=False)
+class WearHistory(WearingFriction):
+    """mu(t) of a wearing pair (the fields of :class:`WearingFriction`, then these).
+
+    ``reduction`` is B(t), shape (n_t,); ``mu``, ``mu_x``, ``mu_y`` (n_t, n_beta) are the
+    coefficients of the worn pair (``mu`` follows the lattice settings' ``mu_definition``).
+
+    Attributes
+    ----------
     wear_time:
         T_w (s).
     volume:
@@ -338,12 +371,6 @@ class WearHistory(TableResult):
         ``"closed_form"`` (Eqs 15-16) or ``"lattice"``.
     """
 
-    time: FloatArray
-    reduction: FloatArray
-    beta_deg: FloatArray
-    mu: FloatArray
-    mu_x: FloatArray
-    mu_y: FloatArray
     wear_time: float
     volume: float
     mu0: float
@@ -357,13 +384,8 @@ class WearHistory(TableResult):
             "time_s": np.repeat(self.time, n_b),
             "t_over_Tw": np.repeat(self.time / self.wear_time, n_b),
             "reduction_B": np.repeat(self.reduction, n_b),
-            "beta_deg": np.tile(self.beta_deg, n_t),
-            "mu": self.mu.ravel(),
-            "mu_x": self.mu_x.ravel(),
-            "mu_y": self.mu_y.ravel(),
+            **long_mu_columns(self, n_t),
         }
-        if self.mu0 > 0.0:
-            out["mu_over_mu0"] = self.mu.ravel() / self.mu0
         return out
 
     @staticmethod
@@ -444,12 +466,7 @@ def wear_history(
             polar = friction_polar(lo, up, mu0, betas, settings=lattice)
             mu_x[k], mu_y[k], mu[k] = polar.mu_x, polar.mu_y, polar.mu
     return WearHistory(
-        time=_ro(t),
-        reduction=_ro(b),
-        beta_deg=_ro(betas),
-        mu=_ro(mu),
-        mu_x=_ro(mu_x),
-        mu_y=_ro(mu_y),
+        **wearing_fields(t, b, betas, mu, mu_x, mu_y),
         wear_time=tw,
         volume=volume,
         mu0=float(mu0),
