@@ -176,7 +176,6 @@ def _rows_text(arrays: list[np.ndarray], names: list[str]) -> memoryview:
     by one vectorised call, its cells being the rows' parts with their separator (``,``
     or the line's end); Arrow joins the runs' cells of each row in one pass.
     """
-    import pyarrow as pa
     import pyarrow.compute as pc
 
     cells = []
@@ -192,7 +191,7 @@ def _rows_text(arrays: list[np.ndarray], names: list[str]) -> memoryview:
         else:
             cells.append(_cells(names[start], arrays[start], sep))
         start = stop
-    lines = pc.binary_join_element_wise(*cells, pa.scalar("", pa.large_string()))
+    lines = pc.binary_join_element_wise(*cells, _repeat(b"", len(arrays[0])))
     offsets = np.frombuffer(lines.buffers()[1], np.int64)[lines.offset :]
     return memoryview(lines.buffers()[2])[offsets[0] : offsets[len(lines)]]
 
@@ -234,29 +233,63 @@ def _number_cells(columns: list[np.ndarray], kind: str, sep: bytes) -> Any:
 
 def _cells(name: str, values: np.ndarray, sep: bytes) -> Any:
     """One column's cells, each followed by ``sep``, as an Arrow large-string array
-    (number columns by :func:`_number_cells`)."""
+    (number columns by :func:`_number_cells`).
+
+    Arrow arrays are built from buffers: ``pyarrow.array`` and ``pyarrow.scalar`` would
+    import pandas (~0.3 s), which a run writing its tables does not otherwise need.
+    """
     import pyarrow as pa
     import pyarrow.compute as pc
 
-    text = pa.large_string()
+    n = len(values)
     if np.ma.isMaskedArray(values):  # undefined entries: empty fields
         mask = np.ma.getmaskarray(values)
         data = np.ma.getdata(values)
         filled = _cells(name, np.where(mask, np.zeros((), data.dtype), data), sep)
-        return pc.if_else(pa.array(mask), pa.scalar(sep.decode(), text), filled)
+        bits = pa.Array.from_buffers(
+            pa.bool_(), n, [None, pa.py_buffer(np.packbits(mask, bitorder="little"))]
+        )
+        return pc.if_else(bits, _repeat(sep, n), filled)
     if values.dtype.kind == "b":
-        yes, no = ("true" + sep.decode(), "false" + sep.decode())
-        return pc.if_else(pa.array(values), pa.scalar(yes, text), pa.scalar(no, text))
+        return _levels([b"false" + sep, b"true" + sep], values)
     if values.dtype.kind in "iuf":
         return _number_cells([values], "f" if values.dtype.kind == "f" else "i", sep)
-    import pandas as pd  # text: few distinct values (kinds, statuses): codes + levels
-
-    codes, levels = pd.factorize(np.asarray(values, dtype=object))
-    texts = [str(t) for t in levels]
-    bad = [t for t in texts if any(ch in t for ch in ",\n\r")]
+    items = np.asarray(values, dtype=object)  # text: few distinct values (kinds, statuses)
+    texts = list(set(items.tolist()))
+    bad = [str(t) for t in texts if any(ch in str(t) for ch in ",\n\r")]
     if bad:
         raise ParameterError(f"column {name}", bad[0], "text without commas or line breaks")
-    return pa.array([t + sep.decode() for t in texts], text).take(pa.array(codes))
+    if len(texts) <= 16:
+        codes = np.zeros(n, np.int64)
+        for k, text in enumerate(texts[1:], start=1):
+            codes[items == text] = k
+    else:
+        lookup = {text: k for k, text in enumerate(texts)}
+        codes = np.fromiter(map(lookup.__getitem__, items.tolist()), np.int64, n)
+    return _levels([str(t).encode() + sep for t in texts], codes)
+
+
+def _levels(texts: list[bytes], codes: np.ndarray) -> Any:
+    """The Arrow large-string array ``texts[codes]`` (``codes``: integers or booleans)."""
+    import pyarrow as pa
+
+    offsets = np.zeros(len(texts) + 1, np.int64)
+    np.cumsum([len(t) for t in texts], out=offsets[1:])
+    levels = pa.LargeStringArray.from_buffers(
+        len(texts), pa.py_buffer(offsets), pa.py_buffer(b"".join(texts))
+    )
+    indices = np.ascontiguousarray(codes, np.int64)
+    return levels.take(
+        pa.Array.from_buffers(pa.int64(), len(indices), [None, pa.py_buffer(indices)])
+    )
+
+
+def _repeat(text: bytes, n: int) -> Any:
+    """The Arrow large-string array of ``n`` times ``text``."""
+    import pyarrow as pa
+
+    offsets = np.arange(n + 1, dtype=np.int64) * len(text)
+    return pa.LargeStringArray.from_buffers(n, pa.py_buffer(offsets), pa.py_buffer(text * n))
 
 
 def write_csv(
