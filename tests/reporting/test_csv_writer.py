@@ -85,7 +85,7 @@ def test_runs_of_number_columns_across_blocks_read_back_exactly(
     monkeypatch.setattr(tables, "BLOCK_ROWS", 7)
     rng = np.random.default_rng(3)
     n = 23
-    cols = {
+    cols: dict[str, np.ndarray] = {
         "i1": rng.integers(-(2**62), 2**62, n),
         "i2": np.arange(n, dtype=np.uint32),
         "f1": rng.standard_normal(n) * 10.0 ** rng.integers(-300, 300, n),
