@@ -6,6 +6,10 @@ reader), not by the project's own reader.
 
 from __future__ import annotations
 
+import subprocess
+import sys
+from pathlib import Path
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -69,3 +73,65 @@ def test_empty_table_is_its_header() -> None:
 def test_refusals_name_the_column(cols: dict[str, np.ndarray], key: str) -> None:
     with pytest.raises(ParameterError, match=key):
         format_csv(cols)
+
+
+def test_runs_of_number_columns_across_blocks_read_back_exactly(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Neighbouring float and integer columns share one formatting call; every cell of
+    every block (small blocks here) is still its own value, read by float/int/str."""
+    import frictionlab.io.tables as tables
+
+    monkeypatch.setattr(tables, "BLOCK_ROWS", 7)
+    rng = np.random.default_rng(3)
+    n = 23
+    cols: dict[str, np.ndarray] = {
+        "i1": rng.integers(-(2**62), 2**62, n),
+        "i2": np.arange(n, dtype=np.uint32),
+        "f1": rng.standard_normal(n) * 10.0 ** rng.integers(-300, 300, n),
+        "f2": np.full(n, -0.0),
+        "f3": rng.integers(-5, 5, n).astype(np.float64),
+        "kind": np.array(["slide", "hold", "x]"], dtype=object)[rng.integers(0, 3, n)],
+        "m": np.ma.MaskedArray(rng.standard_normal(n), mask=rng.random(n) < 0.5),
+        "f4": rng.standard_normal(n),
+        "ok": rng.random(n) < 0.5,
+        "i3": rng.integers(0, 9, n),
+        "i4": rng.integers(0, 9, n),
+    }
+    rows = _cells(format_csv(cols))
+    assert len(rows) == n and all(len(row) == len(cols) for row in rows)
+    for k, (name, values) in enumerate(cols.items()):
+        got = [row[k] for row in rows]
+        if np.ma.isMaskedArray(values):
+            mask = np.ma.getmaskarray(values)
+            assert [g == "" for g in got] == mask.tolist()
+            kept = [float(g) for g, m in zip(got, mask, strict=True) if not m]
+            assert kept == np.ma.getdata(values)[~mask].tolist()
+        elif values.dtype.kind == "f":
+            back = np.array([float(g) for g in got])
+            assert back.view(np.int64).tolist() == values.view(np.int64).tolist(), name
+            assert all("." in g or "e" in g for g in got), name  # floats stay floats
+        elif values.dtype.kind in "iu":
+            assert [int(g) for g in got] == values.tolist(), name
+        elif values.dtype.kind == "b":
+            assert got == ["true" if v else "false" for v in values], name
+        else:
+            assert got == values.tolist(), name
+
+
+def test_writing_a_table_does_not_import_pandas(tmp_path: Path) -> None:
+    """pyarrow.array/scalar import pandas (~0.3 s); a run writing its tables needs none."""
+    probe = (
+        "import sys, numpy as np\n"
+        "from frictionlab.io.tables import write_csv_atomic\n"
+        "write_csv_atomic(sys.argv[1], {'t': np.arange(3.0), 'n': np.arange(3),"
+        " 'k': np.array(['a', 'b', 'a'], dtype=object), 'ok': np.ones(3, bool),"
+        " 'm': np.ma.masked_all(3)})\n"
+        "print('pandas' in sys.modules)\n"
+    )
+    out = tmp_path / "t.csv"
+    done = subprocess.run(
+        [sys.executable, "-c", probe, str(out)], capture_output=True, text=True, check=True
+    )
+    assert done.stdout.strip() == "False"
+    assert out.read_text().splitlines()[1] == "0.0,0,a,true,"

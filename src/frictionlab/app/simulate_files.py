@@ -16,7 +16,6 @@ from __future__ import annotations
 import os
 from dataclasses import replace
 from pathlib import Path
-from types import TracebackType
 from typing import Any
 
 import numpy as np
@@ -36,6 +35,7 @@ from frictionlab.driver.table import (
     history_units,
 )
 from frictionlab.errors import FrictionlabError
+from frictionlab.io.closing import Closing
 from frictionlab.io.parquet import ParquetStream, write_parquet_atomic
 from frictionlab.io.tables import write_csv, write_csv_atomic
 from frictionlab.schema.scenario import OutputOptions, Scenario
@@ -100,7 +100,7 @@ def _sub_chunk(chunk: dict[str, np.ndarray], rows: slice, points: slice) -> dict
     return out
 
 
-class HistoryStream:
+class HistoryStream(Closing):
     """A recording sink that appends the recorded rows to the history file as they come.
 
     Use as a context manager around the run; ``rows`` counts the data rows written. The
@@ -145,17 +145,6 @@ class HistoryStream:
             assert self._file is not None
             self._file.close()
 
-    def __enter__(self) -> HistoryStream:
-        return self
-
-    def __exit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        self.close()
-
 
 def point_figures(history: History) -> dict[str, np.ndarray]:
     """(N,) per-point figures over every step: peaks, final values, path length.
@@ -174,12 +163,9 @@ def point_figures(history: History) -> dict[str, np.ndarray]:
             "peak_time": st.peak_time,
             "peak_slip_distance": st.peak_path_length,
             "final_time": st.time,
-            "final_slip_1": st.slip[:, 0],
-            "final_slip_2": st.slip[:, 1],
+            **_parts("final_slip", st.slip, "12"),
             "final_approach": st.approach,
-            "final_traction_1": fs.traction[:, 0],
-            "final_traction_2": fs.traction[:, 1],
-            "final_traction_n": fs.traction[:, 2],
+            **_parts("final_traction", fs.traction, "12n"),
             "final_friction_ratio": st.friction_ratio,
             "final_F": fs.F,
             "final_R": fs.R,
@@ -197,12 +183,9 @@ def point_figures(history: History) -> dict[str, np.ndarray]:
         "peak_time": history.time[k, cols],
         "peak_slip_distance": paths[k, cols],
         "final_time": history.time[-1],
-        "final_slip_1": history.slip[-1, :, 0],
-        "final_slip_2": history.slip[-1, :, 1],
+        **_parts("final_slip", history.slip[-1], "12"),
         "final_approach": history.approach[-1],
-        "final_traction_1": history.traction[-1, :, 0],
-        "final_traction_2": history.traction[-1, :, 1],
-        "final_traction_n": history.traction[-1, :, 2],
+        **_parts("final_traction", history.traction[-1], "12n"),
         "final_friction_ratio": ratios[-1],
         "final_F": history.F[-1],
         "final_R": history.R[-1],
@@ -210,6 +193,11 @@ def point_figures(history: History) -> dict[str, np.ndarray]:
         "final_plastic_work": history.plastic_work[-1],
         "path_length": paths[-1],
     }
+
+
+def _parts(name: str, values: np.ndarray, suffixes: str) -> dict[str, np.ndarray]:
+    """The columns ``name_<suffix>`` of the (N, k) ``values``, one per suffix."""
+    return {f"{name}_{s}": values[:, k] for k, s in enumerate(suffixes)}
 
 
 def _point_summary(fig: dict[str, np.ndarray], i: int, label: str) -> dict[str, Any]:

@@ -15,13 +15,13 @@ import json
 import os
 from collections.abc import Mapping
 from pathlib import Path
-from types import TracebackType
 from typing import Any
 
 import numpy as np
 
 from frictionlab.errors import ParameterError
 from frictionlab.io.atomic import atomic_path
+from frictionlab.io.closing import Closing
 from frictionlab.io.tables import CsvTable
 
 __all__ = ["ParquetStream", "read_parquet", "write_parquet_atomic"]
@@ -71,7 +71,7 @@ def _table(columns: Mapping[str, np.ndarray], units: Mapping[str, str] | None) -
     return pa.Table.from_arrays(arrays, schema=schema)
 
 
-class ParquetStream:
+class ParquetStream(Closing):
     """Append chunks of rows (same columns each time) to a Parquet file, one row group each.
 
     Use as a context manager; ``rows`` counts the rows written. The file is complete only
@@ -96,17 +96,6 @@ class ParquetStream:
     def close(self) -> None:
         if self._writer is not None:
             self._writer.close()
-
-    def __enter__(self) -> ParquetStream:
-        return self
-
-    def __exit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        self.close()
 
 
 def write_parquet_atomic(

@@ -10,8 +10,9 @@ Every file opens with ``pandas.read_csv(path)`` and no other argument. Each titl
 ``name [unit]`` (``-`` for dimensionless and text columns; the one spelling used
 everywhere). Floats are written in the shortest form that reads back to the same float64
 (orjson's shortest round-trip form, e.g. ``1e-6``), so a round trip is exact. Each column
-is formatted by one vectorised call and its cells are views of that text; Arrow joins
-the cells of each row in one pass (no Python object per cell, no per-cell string).
+(each run of neighbouring number columns of one kind) is formatted by one vectorised call
+and its cells are views of that text; Arrow joins the cells of each row in one pass (no
+Python object per cell, no per-cell string).
 Non-finite values are refused: a table never carries NaN or infinity. Booleans are written
 as ``true``/``false``; text cells may not contain commas or line breaks. An undefined value
 is given as a masked entry (``numpy.ma``) and written as an empty field.
@@ -169,60 +170,126 @@ def _check_finite(name: str, values: np.ndarray) -> None:
 
 
 def _rows_text(arrays: list[np.ndarray], names: list[str]) -> memoryview:
-    """The CSV lines of equal-length columns: each column's cells are made with their
-    separator (``,`` or the line's end) by one vectorised call, then Arrow joins the
-    cells of each row in one pass; the lines are one contiguous buffer."""
-    import pyarrow as pa
+    """The CSV lines of equal-length columns, as one contiguous buffer.
+
+    Each run of neighbouring number columns of one kind (floats, or integers) is formatted
+    by one vectorised call, its cells being the rows' parts with their separator (``,``
+    or the line's end); Arrow joins the runs' cells of each row in one pass.
+    """
     import pyarrow.compute as pc
 
-    seps = [b","] * (len(arrays) - 1) + [b"\n"]
-    cells = [_cells(n, a, sep) for n, a, sep in zip(names, arrays, seps, strict=True)]
-    lines = pc.binary_join_element_wise(*cells, pa.scalar("", pa.large_string()))
+    cells = []
+    start = 0
+    while start < len(arrays):
+        stop = start + 1
+        kind = _number_kind(arrays[start])
+        while kind and stop < len(arrays) and _number_kind(arrays[stop]) == kind:
+            stop += 1
+        sep = b"\n" if stop == len(arrays) else b","
+        if kind:
+            cells.append(_number_cells(arrays[start:stop], kind, sep))
+        else:
+            cells.append(_cells(names[start], arrays[start], sep))
+        start = stop
+    lines = pc.binary_join_element_wise(*cells, _repeat(b"", len(arrays[0])))
     offsets = np.frombuffer(lines.buffers()[1], np.int64)[lines.offset :]
     return memoryview(lines.buffers()[2])[offsets[0] : offsets[len(lines)]]
 
 
-def _cells(name: str, values: np.ndarray, sep: bytes) -> Any:
-    """One column's cells, each followed by ``sep``, as an Arrow large-string array.
+def _number_kind(values: np.ndarray) -> str:
+    """``"f"`` or ``"i"`` for a column :func:`_number_cells` formats, else ``""``."""
+    if np.ma.isMaskedArray(values):
+        return ""
+    return {"f": "f", "i": "i", "u": "i"}.get(values.dtype.kind, "")
 
-    Numbers are written by one ``orjson.dumps`` of the whole column: floats in their
-    shortest round-trip form (e.g. ``1e-6``, ``0.00001``, ``2.0``; every value reads back
-    as the same float64), integers in full. The cells are views of that text: the
-    array's offsets are the positions after its commas.
+
+def _number_cells(columns: list[np.ndarray], kind: str, sep: bytes) -> Any:
+    """The rows of neighbouring number columns (each part followed by ``sep``) as an
+    Arrow large-string array.
+
+    One ``orjson.dumps`` of the row-major block: floats in their shortest round-trip
+    form (e.g. ``1e-6``, ``0.00001``, ``2.0``; every value reads back as the same
+    float64), integers in full. The cells are views of that text: the array's offsets
+    are the positions after every k-th comma (k columns). The block has one spare row
+    of zeros so that every row used ends with a comma (the spare one with ``]``).
+    """
+    import orjson
+    import pyarrow as pa
+
+    n = len(columns[0])
+    block = np.zeros((n + 1, len(columns)), np.float64 if kind == "f" else np.int64)
+    for j, values in enumerate(columns):
+        block[:n, j] = values
+    raw: bytes | bytearray = orjson.dumps(block.ravel(), option=orjson.OPT_SERIALIZE_NUMPY)
+    k = len(columns)
+    ends = np.flatnonzero(np.frombuffer(raw, np.uint8) == ord(","))[k - 1 :: k]
+    if sep != b",":  # the line's end after each row
+        raw = bytearray(raw)
+        np.frombuffer(raw, np.uint8)[ends] = sep[0]
+    offsets = np.empty(n + 1, np.int64)  # cells "a,b,", "c,d,", ...
+    offsets[0], offsets[1:] = 1, ends + 1
+    return pa.LargeStringArray.from_buffers(n, pa.py_buffer(offsets), pa.py_buffer(raw))
+
+
+def _cells(name: str, values: np.ndarray, sep: bytes) -> Any:
+    """One column's cells, each followed by ``sep``, as an Arrow large-string array
+    (number columns by :func:`_number_cells`).
+
+    Arrow arrays are built from buffers: ``pyarrow.array`` and ``pyarrow.scalar`` would
+    import pandas (~0.3 s), which a run writing its tables does not otherwise need.
     """
     import pyarrow as pa
     import pyarrow.compute as pc
 
-    text = pa.large_string()
+    n = len(values)
     if np.ma.isMaskedArray(values):  # undefined entries: empty fields
         mask = np.ma.getmaskarray(values)
         data = np.ma.getdata(values)
         filled = _cells(name, np.where(mask, np.zeros((), data.dtype), data), sep)
-        return pc.if_else(pa.array(mask), pa.scalar(sep.decode(), text), filled)
+        bits = pa.Array.from_buffers(
+            pa.bool_(), n, [None, pa.py_buffer(np.packbits(mask, bitorder="little"))]
+        )
+        return pc.if_else(bits, _repeat(sep, n), filled)
     if values.dtype.kind == "b":
-        yes, no = ("true" + sep.decode(), "false" + sep.decode())
-        return pc.if_else(pa.array(values), pa.scalar(yes, text), pa.scalar(no, text))
+        return _levels([b"false" + sep, b"true" + sep], values)
     if values.dtype.kind in "iuf":
-        import orjson
-
-        data = np.ascontiguousarray(values, np.float64 if values.dtype.kind == "f" else np.int64)
-        raw = bytearray(orjson.dumps(data, option=orjson.OPT_SERIALIZE_NUMPY))
-        buf = np.frombuffer(raw, np.uint8)
-        buf[-1] = ord(",")  # "[a,b,c]" -> "[a,b,c,": every cell ends with a comma
-        ends = np.flatnonzero(buf == ord(","))
-        if sep != b",":
-            buf[ends] = sep[0]
-        offsets = np.empty(len(data) + 1, np.int64)
-        offsets[0], offsets[1:] = 1, ends + 1
-        return pa.LargeStringArray.from_buffers(len(data), pa.py_buffer(offsets), pa.py_buffer(raw))
-    import pandas as pd  # text: few distinct values (kinds, statuses): codes + levels
-
-    codes, levels = pd.factorize(np.asarray(values, dtype=object))
-    texts = [str(t) for t in levels]
-    bad = [t for t in texts if any(ch in t for ch in ",\n\r")]
+        return _number_cells([values], "f" if values.dtype.kind == "f" else "i", sep)
+    items = np.asarray(values, dtype=object)  # text: few distinct values (kinds, statuses)
+    texts = list(set(items.tolist()))
+    bad = [str(t) for t in texts if any(ch in str(t) for ch in ",\n\r")]
     if bad:
         raise ParameterError(f"column {name}", bad[0], "text without commas or line breaks")
-    return pa.array([t + sep.decode() for t in texts], text).take(pa.array(codes))
+    if len(texts) <= 16:
+        codes = np.zeros(n, np.int64)
+        for k, text in enumerate(texts[1:], start=1):
+            codes[items == text] = k
+    else:
+        lookup = {text: k for k, text in enumerate(texts)}
+        codes = np.fromiter(map(lookup.__getitem__, items.tolist()), np.int64, n)
+    return _levels([str(t).encode() + sep for t in texts], codes)
+
+
+def _levels(texts: list[bytes], codes: np.ndarray) -> Any:
+    """The Arrow large-string array ``texts[codes]`` (``codes``: integers or booleans)."""
+    import pyarrow as pa
+
+    offsets = np.zeros(len(texts) + 1, np.int64)
+    np.cumsum([len(t) for t in texts], out=offsets[1:])
+    levels = pa.LargeStringArray.from_buffers(
+        len(texts), pa.py_buffer(offsets), pa.py_buffer(b"".join(texts))
+    )
+    indices = np.ascontiguousarray(codes, np.int64)
+    return levels.take(
+        pa.Array.from_buffers(pa.int64(), len(indices), [None, pa.py_buffer(indices)])
+    )
+
+
+def _repeat(text: bytes, n: int) -> Any:
+    """The Arrow large-string array of ``n`` times ``text``."""
+    import pyarrow as pa
+
+    offsets = np.arange(n + 1, dtype=np.int64) * len(text)
+    return pa.LargeStringArray.from_buffers(n, pa.py_buffer(offsets), pa.py_buffer(text * n))
 
 
 def write_csv(
