@@ -129,9 +129,10 @@ LANE_CASES = {
 
 @pytest.mark.parametrize("name", list(LANE_CASES))
 def test_lanes_give_the_numbers_of_the_point_loop(name: str) -> None:
-    """step_points (groups of LANES points, shared parameters and time increment) equals
-    the per-point reference loop bit for bit, on states that slide, stick, unload, open
-    and re-close, and its serial loop agrees with the interpreted definition."""
+    """step_points (groups of LANES points, shared parameters and time increment) agrees
+    with the per-point reference loop to rounding (the lanes' inline elementary functions
+    against libm's), with the same statuses and iterations, on states that slide, stick,
+    unload, open and re-close; and the serial loop agrees with the interpreted definition."""
     params = SubloadingParams(**LANE_CASES[name])  # type: ignore[arg-type]
     state, du, _ = _random_inputs(params, np.random.default_rng(len(name)))
     state, du = state.take(slice(0, N - 3)), du[: N - 3]  # two groups of LANES and a rest
@@ -147,7 +148,13 @@ def test_lanes_give_the_numbers_of_the_point_loop(name: str) -> None:
             for key, ref in reference.items():
                 if key == "tangent" and not tangent:
                     continue
-                np.testing.assert_array_equal(got[key], ref, err_msg=f"{name}: {key}")
+                if key in ("status", "iterations"):
+                    np.testing.assert_array_equal(got[key], ref, err_msg=f"{name}: {key}")
+                    continue
+                scale = max(float(np.abs(ref).max()), 1e-300)
+                np.testing.assert_allclose(
+                    got[key], ref, rtol=1e-12, atol=1e-12 * scale, err_msg=f"{name}: {key}"
+                )
     for key, ref in interpreted_ref.items():
         scale = max(float(np.abs(ref).max()), 1e-300)
         np.testing.assert_allclose(reference[key], ref, rtol=1e-12, atol=1e-12 * scale)

@@ -45,6 +45,11 @@ from frictionlab.subloading.evolution import (
     size_after,
     softening_rate,
 )
+from frictionlab.subloading.lane_math import (
+    atan2_first_quadrant,
+    expm1_nonpositive,
+    sincos_half_pi,
+)
 from frictionlab.subloading.surfaces import (
     COULOMB,
     MODIFIED_CAM_CLAY,
@@ -962,7 +967,7 @@ def step_points(
 ):  # fmt: skip
     """Advance every point by one increment; results go to the ``out_*`` arrays (serial).
 
-    The same numbers as :func:`step_points_by_point` (same arguments), computed in
+    The numbers of :func:`step_points_by_point` (same arguments) to rounding, computed in
     groups of LANES points where the call is one the lanes cover (see "lanes" below).
     ``error_model="numpy"``: the lanes evaluate both sides of a guarded division and
     keep one; _point, compiled on its own, still raises on a division by zero.
@@ -1140,13 +1145,14 @@ def empty_outputs(n_points: int, tangent: bool = True) -> dict[str, np.ndarray]:
 # divisions and square roots for several points in packed (SIMD) instructions instead of
 # waiting on each point's chain of dependent scalar ones. Each lane performs the very
 # operations of _point in the same order (where the paths differ, both are computed and
-# one is selected; a finished lane's values are kept by selects), so the results are
-# bit-identical to _point's. What the lanes do not cover goes to _point itself: opening
-# and re-closing points, a non-monotone trial path (the scan of _path_minimum), a solve
-# that has not converged, squares outside the range of _norm's plain sqrt, and the
+# one is selected; a finished lane's values are kept by selects). What the lanes do not
+# cover goes to _point itself: opening and re-closing points, a non-monotone trial path
+# (the scan of _path_minimum), a solve that has not converged, squares outside the range
+# of _norm's plain sqrt, a lane outside the range of a lane_math function, and the
 # options other than the defaults (per-point parameters or time increments, the closed
 # surfaces, the ln law, backward Euler, exponents other than 1, the ratio recovery form).
-# The math-library calls stay scalar, in loops of their own.
+# The elementary functions are inline polynomials (lane_math, within 2 ulp), so the lanes
+# differ from _point by rounding only (tests/subloading/test_kernel_agreement.py).
 
 #: Points processed together: LLVM vectorises no loop of fewer than 16 iterations.
 LANES = 16
@@ -1330,12 +1336,10 @@ def _lane_model(law, q, fh1t, fh2t, fn, R0, dR, ddR, dddR, F0, dF, ddF):  # fmt:
 @njit(cache=True, error_model="numpy")
 def _lanes_start(v, law):  # fmt: skip
     """Steps 5's start (:func:`_start`, cone) for the plastic lanes: ``V_Q``."""
-    for j in range(LANES):
-        if v[V_KIND + j] == PLASTIC:
-            y0 = math.cos(_HALF_PI * v[V_R_START + j])  # ratio_start of the cot law
-            s0 = math.sin(_HALF_PI * v[V_R_START + j])
-            v[V_Y0 + j] = y0
-            v[V_S0 + j] = s0
+    for j in range(LANES):  # ratio_start of the cot law, inline (lane_math)
+        R_start = v[V_R_START + j]
+        v[V_Y0 + j], v[V_S0 + j] = sincos_half_pi(R_start if 0.0 <= R_start <= 1.0 else 0.0)
+        v[V_KIND + j] = BY_POINT if not (R_start <= 1.0) else v[V_KIND + j]
     for j in range(LANES):
         q, refine, dR, ddR, dddR, dF, ddF, plain = _lane_start(
             law, v[V_R0 + j], v[V_PHI_TR + j], v[V_FN_TR + j], v[V_W_TR + j], v[V_FH1T + j],
@@ -1469,24 +1473,24 @@ def _lanes_residual(v, law, dt):  # fmt: skip
         gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a, plain = _lane_return(
             law, v[V_Q + j], v[V_OMQ + j], v[V_FH1T + j], v[V_FH2T + j], dt)  # fmt: skip
         active = v[V_ACTIVE + j] == 1.0
+        # expm1_nonpositive's range: both arguments are <= 0 (dlam >= 0)
+        plain = plain and arg_r <= 0.0 and a >= 0.0
         v[V_KIND + j] = BY_POINT if active and not plain else v[V_KIND + j]
         v[V_ACTIVE + j] = 1.0 if active and plain else 0.0
         (v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j], v[V_T1 + j], v[V_T2 + j], v[V_W + j],
          v[V_DLAM + j], v[V_WN + j], v[V_ARG_R + j], v[V_A + j]) = (
             gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a)  # fmt: skip
-    for j in range(LANES):  # the math library, one lane at a time
-        if v[V_ACTIVE + j] == 1.0:
-            v[V_EM_R + j] = math.expm1(v[V_ARG_R + j])
-            v[V_EM_F + j] = math.expm1(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
+    for j in range(LANES):  # inline math (lane_math): every lane, packed
+        v[V_EM_R + j] = expm1_nonpositive(v[V_ARG_R + j])
+        v[V_EM_F + j] = expm1_nonpositive(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
     for j in range(LANES):
         y0 = v[V_Y0 + j]
         em = v[V_EM_R + j]
         s2 = v[V_S0 + j] * v[V_S0 + j] - y0 * y0 * (em * (2.0 + em))
         v[V_Y + j] = y0 * (1.0 + em)
         v[V_S + j] = math.sqrt(s2) if s2 > 0.0 else 0.0
-    for j in range(LANES):
-        if v[V_ACTIVE + j] == 1.0:
-            v[V_ATAN + j] = math.atan2(v[V_S + j], v[V_Y + j])
+    for j in range(LANES):  # s >= 0 and y = y0 (1 + em) >= 0
+        v[V_ATAN + j] = atan2_first_quadrant(v[V_S + j], v[V_Y + j])
     for j in range(LANES):
         out = _lane_residual(law, v[V_DLAM + j], v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j],
                              v[V_T1 + j], v[V_T2 + j], v[V_W + j], v[V_WN + j], v[V_Y + j],
