@@ -144,9 +144,9 @@ def test_cholmod_and_superlu_give_the_same_contact_block_and_run(
     """The two factorisations agree to round-off: G, and the recorded forces of a slide
     through the static peak (relative 1e-10)."""
     pytest.importorskip("cvxopt")
-    from tests.contact.support import NORMAL, SLIDE
+    from tests.contact.support import NORMAL
 
-    from frictionlab.contact import linear, run_contact
+    from frictionlab.contact import Slide, linear, run_contact
 
     disc = discretise(block)
     fixed = np.zeros(disc.n_dofs, dtype=bool)
@@ -160,7 +160,7 @@ def test_cholmod_and_superlu_give_the_same_contact_block_and_run(
     runs = {}
     for name in ("cholmod", "superlu"):
         monkeypatch.setattr(linear, "_backend", lambda _name, chosen=name: chosen)
-        runs[name] = run_contact(block, law(), NORMAL, SLIDE)
+        runs[name] = run_contact(block, law(), NORMAL, [Slide(1e-5, 30e-6, steps=5)])
     for key in ("tangential_force", "normal_force", "top_displacement"):
         a, b = getattr(runs["cholmod"], key), getattr(runs["superlu"], key)
         np.testing.assert_allclose(a, b, rtol=0, atol=1e-10 * np.abs(b).max())

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -34,8 +35,10 @@ from frictionlab.errors import ParameterError
 from frictionlab.subloading import SubloadingParams
 
 __all__ = [
+    "FACTOR_MODELS",
     "LINEAR_SOLVERS",
     "ORDERINGS",
+    "FactorModel",
     "IterativeSolver",
     "TangentSolver",
     "cost",
@@ -82,7 +85,21 @@ def reduction(fixed: np.ndarray, ties: Sequence[np.ndarray] = ()) -> sp.csc_matr
     return sp.csc_matrix((np.ones(rows.size), (rows, col[rows])), shape=(n, k))
 
 
-class TangentSolver:
+class _Reduced:
+    """Reduced coordinates ``q`` of a solver: ``u = u_prescribed + T q``."""
+
+    T: sp.csc_matrix
+
+    def reduce(self, r: np.ndarray) -> np.ndarray:
+        """A full-length vector of forces in reduced coordinates, ``T^T r``."""
+        return np.asarray(self.T.T @ r)
+
+    def expand(self, delta: np.ndarray) -> np.ndarray:
+        """A reduced increment as nodal displacements, ``T delta``."""
+        return np.asarray(self.T @ delta)
+
+
+class TangentSolver(_Reduced):
     """Solve ``T^T J T delta = b`` for given contact moduli (``b``, ``delta`` reduced).
 
     ``ordering``: ``"nested_dissection"`` (METIS through pymetis, default; reverse
@@ -186,17 +203,9 @@ class TangentSolver:
         estimated by :func:`cost`'s fill, as cvxopt does not report its factor's size)."""
         if self.backend == "cholmod":
             need = cost(self.n, self.contact.size, self.dim, "direct", "cholmod")["bytes"]
-            return int(need - self.n * (MESH_BYTES_2D if self.dim == 2 else MESH_BYTES_3D))
+            return int(need - self.n * MESH_BYTES[self.dim - 2])
         nnz = int(self.lu.L.nnz + self.lu.U.nnz)
         return 12 * nnz + 8 * self.G.size
-
-    def reduce(self, r: np.ndarray) -> np.ndarray:
-        """A full-length vector of forces in reduced coordinates, ``T^T r``."""
-        return np.asarray(self.T.T @ r)
-
-    def expand(self, delta: np.ndarray) -> np.ndarray:
-        """A reduced increment as nodal displacements, ``T delta``."""
-        return np.asarray(self.T @ delta)
 
     def correction(self, moduli: np.ndarray) -> sp.csr_matrix:
         """``A`` (m, m, sparse): the contact moduli minus the elastic ones, on the contact dofs."""
@@ -247,7 +256,7 @@ class TangentSolver:
         return y - self._lu_solve(scatter)
 
 
-class IterativeSolver:
+class IterativeSolver(_Reduced):
     """GMRES on ``T^T J T`` preconditioned by smoothed-aggregation AMG (pyamg).
 
     The hierarchy is built on the symmetric part of the tangent (with the rigid-body
@@ -260,7 +269,6 @@ class IterativeSolver:
         self,
         disc: Discretisation,
         fixed: np.ndarray,
-        params: SubloadingParams | Frictionless,
         ties: Sequence[np.ndarray] = (),
         *,
         rtol: float = 1e-10,
@@ -288,14 +296,6 @@ class IterativeSolver:
         """Bytes of the tangent and the multigrid hierarchy (an estimate)."""
         J = self._J if self._J is not None else self.K
         return int(3 * 12 * J.nnz)
-
-    def reduce(self, r: np.ndarray) -> np.ndarray:
-        """``T^T r``."""
-        return np.asarray(self.T.T @ r)
-
-    def expand(self, delta: np.ndarray) -> np.ndarray:
-        """``T delta``."""
-        return np.asarray(self.T @ delta)
 
     def solve(self, moduli: np.ndarray, b: np.ndarray) -> np.ndarray:
         """``delta`` with ``T^T (K + Kc(moduli)) T delta = b``; raises when GMRES fails."""
@@ -334,51 +334,52 @@ def make_solver(
     if kind == "direct":
         return TangentSolver(disc, fixed, params, ties)
     if kind == "iterative":
-        return IterativeSolver(disc, fixed, params, ties)
+        return IterativeSolver(disc, fixed, ties)
     raise ParameterError("linear_solver", kind, "one of " + ", ".join(LINEAR_SOLVERS))
 
 
-#: Entries of the nested-dissection LU factors (L and U) per unknown, measured on this
-#: model's structured meshes with the contact unknowns last: 2-D ``FILL_2D * log2(n)``
-#: (167 per unknown at 51k unknowns), 3-D ``FILL_3D * n**(1/3)`` (984 at 13.9k, 1,617 at
-#: 45k unknowns). CHOLMOD's Cholesky factor holds half of them (``L`` alone: 503 per
-#: unknown at 14.2k, 3-D).
-FILL_2D = 11.0
-FILL_3D = 46.0
-#: Bytes per factor entry at the peak: SuperLU's supernodal factors, the CSC copy of one
-#: of them while the trailing block is read, and the allocator's slack (fitted to the
-#: measured peaks: 3-D 32^3 hexahedra 5.9 GB above the interpreter).
-BYTES_PER_ENTRY = 19.0
-#: The same for CHOLMOD's one factor (entries ``FILL / 2``): 3-D the supernodal factor
-#: and CHOLMOD's workspace (9.4 measured at 45.6k unknowns); 2-D a second factor turned
-#: into a sparse copy while its trailing block is read (41 measured at 51.7k).
-CHOLMOD_BYTES_PER_ENTRY_3D = 11.0
-CHOLMOD_BYTES_PER_ENTRY_2D = 44.0
-#: Bytes per unknown of the mesh, its assembly and the solver's sparse matrices (the
-#: stiffness, its reduced and permuted copies, the interpolation): what the measured peaks
-#: of benchmarks/bench_contact_scaling.py leave above the interpreter, the factors and
-#: the dense blocks (2-D 52k unknowns: 2.8 kB; 3-D 14.7k: 12 kB; scikit-fem's hexahedron
-#: assembly alone peaks at 10 kB per unknown).
-MESH_BYTES_2D = 3000.0
-MESH_BYTES_3D = 12000.0
-#: Seconds per factor entry of one solve (two triangular sweeps; 3.3e-9 measured), of
-#: the factorisation per entry (2-D; 8e-8) and per entry and unknown (3-D, ~n^2 overall;
-#: 6-10e-12), and the dense rate [flop/s]: one core of the shared machine, upper ends.
-#: CHOLMOD: 2-D two factorisations (5e-8 each per entry), 3-D 1.6e-12 per entry and
-#: unknown, and the forward sweeps that form ``W`` at ``SWEEP_FLOPS`` (6.6e9 measured).
-SOLVE_S_PER_ENTRY = 4e-9
-FACTOR_S_PER_ENTRY_UNKNOWN_3D = 1e-11
-FACTOR_S_PER_ENTRY_2D = 1e-7
-CHOLMOD_FACTOR_S_PER_ENTRY_UNKNOWN_3D = 3e-12
-SWEEP_FLOPS = 4e9
-DENSE_FLOPS = 5e9
-#: GMRES basis vectors and the multigrid hierarchy's size relative to the tangent
-#: (iterative solver).
-GMRES_RESTART = 60
-AMG_COMPLEXITY = 3.0
-#: Seconds per unknown of one iterative solve (a hierarchy rebuilt and GMRES: 108 CPU s
-#: for ~70 solves at 14.7k unknowns, 3-D).
-ITERATIVE_S_PER_UNKNOWN = 1e-4
+@dataclass(frozen=True)
+class FactorModel:
+    """Fitted size and time of one nested-dissection factorisation (contact unknowns
+    last) on this model's meshes, one core of the shared machine, upper ends.
+
+    ``fill``: factor entries per unknown over ``log2(n)`` (2-D) or ``n**(1/3)`` (3-D);
+    ``bytes``: bytes per entry at the peak (2-D, 3-D); ``factor``: seconds per entry
+    (2-D) and per entry and unknown (3-D, ~n^2 overall); ``sweep_flops``: the rate of
+    the 3-D forward sweeps that form ``G`` (0: ``G`` read from the factors' trailing
+    block); ``inversions``: dense m x m inversions of ``G``'s set-up.
+    """
+
+    fill: tuple[float, float]
+    bytes: tuple[float, float]
+    factor: tuple[float, float]
+    sweep_flops: float
+    inversions: float
+
+
+#: SuperLU's ``L`` and ``U`` (167 entries per unknown at 51k, 2-D; 984 at 13.9k and 1,617
+#: at 45k, 3-D); at the peak the supernodal factors, the CSC copy of one of them while
+#: the trailing block is read and the allocator's slack (3-D 32^3 hexahedra 5.9 GB above
+#: the interpreter). CHOLMOD's ``L`` alone (503 entries per unknown at 14.2k, 3-D): in
+#: 3-D the supernodal factor and its workspace (9.4 bytes per entry measured at 45.6k,
+#: forward sweeps at 6.6e9 flop/s), in 2-D a second factor made a sparse copy while its
+#: trailing block is read (41 bytes per entry at 51.7k; two factorisations).
+FACTOR_MODELS: dict[str, FactorModel] = {
+    "superlu": FactorModel((11.0, 46.0), (19.0, 19.0), (1e-7, 1e-11), 0.0, 3.0),
+    "cholmod": FactorModel((5.5, 23.0), (44.0, 11.0), (1e-7, 3e-12), 4e9, 1.0),
+}
+#: Bytes per unknown of the mesh, its assembly and the solver's sparse matrices (2-D,
+#: 3-D): what the measured peaks leave above the interpreter, the factors and the dense
+#: blocks (2-D 52k unknowns: 2.8 kB; 3-D 14.7k: 12 kB; scikit-fem's hexahedron assembly
+#: alone peaks at 10 kB per unknown).
+MESH_BYTES = (3000.0, 12000.0)
+#: Seconds per factor entry of one solve (two triangular sweeps; 3.3e-9 measured) and
+#: the dense rate [flop/s].
+SOLVE_S_PER_ENTRY, DENSE_FLOPS = 4e-9, 5e9
+#: The iterative solver: GMRES basis vectors, the multigrid hierarchy's size relative to
+#: the tangent, and seconds per unknown of one solve (a hierarchy rebuilt and GMRES: 108
+#: CPU s for ~70 solves at 14.7k unknowns, 3-D).
+GMRES_RESTART, AMG_COMPLEXITY, ITERATIVE_S_PER_UNKNOWN = 60, 3.0, 1e-4
 
 
 def cost(
@@ -392,37 +393,25 @@ def cost(
     ``contact_unknowns`` on the contact face: ``bytes`` (the peak), ``setup`` [s] (the
     factorisation and the contact block) and ``per_solve`` [s] (one Newton solve).
 
-    Direct: the nested-dissection factors (``FILL_2D * log2(n)`` or
-    ``FILL_3D * n**(1/3)`` entries per unknown for SuperLU's ``L`` and ``U``, half of
-    them for CHOLMOD's ``L``; ``backend`` as in :class:`TangentSolver`, ``"auto"`` the
-    one installed), the dense contact blocks (three m x m arrays while ``G`` is formed)
-    and the mesh and its matrices; a solve is two sweeps of the factors and a dense
-    solve on at most m contact unknowns. Iterative: the tangent and its hierarchy, the
-    GMRES basis and the mesh.
+    Direct (:data:`FACTOR_MODELS`, ``backend`` as in :class:`TangentSolver`, ``"auto"``
+    the one installed): the nested-dissection factors (``fill * log2(n)`` or
+    ``fill * n**(1/3)`` entries per unknown), the dense contact blocks (three m x m
+    arrays while ``G`` is formed) and the mesh and its matrices; a solve is two sweeps of
+    the factors and a dense solve on at most m contact unknowns. Iterative: the tangent
+    and its hierarchy, the GMRES basis and the mesh.
     """
     n, m = float(unknowns), float(contact_unknowns)
-    mesh = n * (MESH_BYTES_2D if dim == 2 else MESH_BYTES_3D)
+    i = 0 if dim == 2 else 1
+    mesh = n * MESH_BYTES[i]
     if linear_solver == "direct":
-        per = FILL_2D * math.log2(max(n, 2.0)) if dim == 2 else FILL_3D * n ** (1.0 / 3.0)
-        entries = per * n
-        dense = 3 * 8.0 * m * m
-        if _backend(backend) == "cholmod":
-            entries *= 0.5
-            if dim == 2:
-                need = mesh + CHOLMOD_BYTES_PER_ENTRY_2D * entries + dense
-                setup = FACTOR_S_PER_ENTRY_2D * entries
-            else:
-                need = mesh + CHOLMOD_BYTES_PER_ENTRY_3D * entries + dense
-                setup = CHOLMOD_FACTOR_S_PER_ENTRY_UNKNOWN_3D * entries * n
-                setup += 2.0 * entries * m / SWEEP_FLOPS
-            setup += m**3 / DENSE_FLOPS
-        else:
-            need = mesh + BYTES_PER_ENTRY * entries + dense
-            if dim == 2:
-                setup = FACTOR_S_PER_ENTRY_2D * entries
-            else:
-                setup = FACTOR_S_PER_ENTRY_UNKNOWN_3D * entries * n
-            setup += 3.0 * m**3 / DENSE_FLOPS
+        model = FACTOR_MODELS[_backend(backend)]
+        scale = math.log2(max(n, 2.0)) if dim == 2 else n ** (1.0 / 3.0)
+        entries = model.fill[i] * scale * n
+        need = mesh + model.bytes[i] * entries + 3 * 8.0 * m * m
+        setup = model.factor[i] * entries * (1.0 if dim == 2 else n)
+        if dim == 3 and model.sweep_flops:
+            setup += 2.0 * entries * m / model.sweep_flops
+        setup += model.inversions * m**3 / DENSE_FLOPS
         per_solve = 2.0 * SOLVE_S_PER_ENTRY * entries + (2.0 / 3.0) * m**3 / DENSE_FLOPS
     elif linear_solver == "iterative":
         nnz = n * (9 if dim == 2 else 27) * dim
