@@ -519,6 +519,10 @@ def parse_contact(
         reraise("[law]", lambda: check_snap_back(params, nominal))
         if normal.control != "displacement":  # the mean pressure: some points carry more
             reraise("[law]", lambda: check_normal_capacity(params, nominal))
+            for region in law_field.regions:  # a region's own F_k, named with its key
+                if "F_k" in region.values:
+                    local = params.replace(F_k=region.values["F_k"])
+                    reraise(region.name, lambda p=local: check_normal_capacity(p, nominal))
     reraise("[block]", lambda: check_memory(block, options))
     inputs = {
         "title": top["title"], "description": top["description"], "block": block_echo,
