@@ -11,6 +11,7 @@ import dataclasses
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -522,7 +523,7 @@ def parse_contact(
             for region in law_field.regions:  # a region's own F_k, named with its key
                 if "F_k" in region.values:
                     local = params.replace(F_k=region.values["F_k"])
-                    reraise(region.name, lambda p=local: check_normal_capacity(p, nominal))
+                    reraise(region.name, partial(check_normal_capacity, local, nominal))
     reraise("[block]", lambda: check_memory(block, options))
     inputs = {
         "title": top["title"], "description": top["description"], "block": block_echo,
