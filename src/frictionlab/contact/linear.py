@@ -156,9 +156,7 @@ class TangentSolver(_Reduced):
             self.perm, _ = _contact_last_order(K0, cols)
             self.lu: Any = _Cholmod(K0, self.perm)
             del K0
-            # 2-D: the factor is small (fill ~ n log n), read its trailing block from a
-            # copy; 3-D: forward sweeps, no second factor in memory
-            self.G = self.lu.inverse_block(cols, copy=disc.dim == 2)
+            self.G = self.lu.inverse_block(cols)
             return
         if ordering == "nested_dissection":
             self.perm, last = _contact_last_order(K0, cols)
@@ -346,7 +344,7 @@ class FactorModel:
     ``fill``: factor entries per unknown over ``log2(n)`` (2-D) or ``n**(1/3)`` (3-D);
     ``bytes``: bytes per entry at the peak (2-D, 3-D); ``factor``: seconds per entry
     (2-D) and per entry and unknown (3-D, ~n^2 overall); ``sweep_flops``: the rate of
-    the 3-D forward sweeps that form ``G`` (0: ``G`` read from the factors' trailing
+    the forward sweeps that form ``G`` (0: ``G`` read from the factors' trailing
     block); ``inversions``: dense m x m inversions of ``G``'s set-up.
     """
 
@@ -360,13 +358,12 @@ class FactorModel:
 #: SuperLU's ``L`` and ``U`` (167 entries per unknown at 51k, 2-D; 984 at 13.9k and 1,617
 #: at 45k, 3-D); at the peak the supernodal factors, the CSC copy of one of them while
 #: the trailing block is read and the allocator's slack (3-D 32^3 hexahedra 5.9 GB above
-#: the interpreter). CHOLMOD's ``L`` alone (503 entries per unknown at 14.2k, 3-D): in
-#: 3-D the supernodal factor and its workspace (9.4 bytes per entry measured at 45.6k,
-#: forward sweeps at 6.6e9 flop/s), in 2-D a second factor made a sparse copy while its
-#: trailing block is read (41 bytes per entry at 51.7k; two factorisations).
+#: the interpreter). CHOLMOD's ``L`` alone (503 entries per unknown at 14.2k, 3-D): the
+#: supernodal factor and its workspace (9.4 bytes per entry measured at 45.6k, 3-D; 14
+#: at 51.7k, 2-D) and the forward sweeps that form ``G`` (6.6e9 flop/s measured).
 FACTOR_MODELS: dict[str, FactorModel] = {
     "superlu": FactorModel((11.0, 46.0), (19.0, 19.0), (1e-7, 1e-11), 0.0, 3.0),
-    "cholmod": FactorModel((5.5, 23.0), (44.0, 11.0), (1e-7, 3e-12), 4e9, 1.0),
+    "cholmod": FactorModel((5.5, 23.0), (14.0, 11.0), (1e-7, 3e-12), 4e9, 1.0),
 }
 #: Bytes per unknown of the mesh, its assembly and the solver's sparse matrices (2-D,
 #: 3-D): what the measured peaks leave above the interpreter, the factors and the dense
@@ -409,7 +406,7 @@ def cost(
         entries = model.fill[i] * scale * n
         need = mesh + model.bytes[i] * entries + 3 * 8.0 * m * m
         setup = model.factor[i] * entries * (1.0 if dim == 2 else n)
-        if dim == 3 and model.sweep_flops:
+        if model.sweep_flops:
             setup += 2.0 * entries * m / model.sweep_flops
         setup += model.inversions * m**3 / DENSE_FLOPS
         per_solve = 2.0 * SOLVE_S_PER_ENTRY * entries + (2.0 / 3.0) * m**3 / DENSE_FLOPS
@@ -570,6 +567,7 @@ class _Cholmod:
         self._perm = matrix(np.asarray(perm, dtype=np.int64))
         self.n = int(A.shape[0])
         self.F = self._factor()
+        del self._A
         # CHOLMOD's order: P x = x[order] (sys=7 solves P^T y = x)
         x = matrix(np.arange(self.n, dtype=np.float64))
         cholmod.solve(self.F, x, sys=7)
@@ -596,13 +594,11 @@ class _Cholmod:
         out = np.asarray(B)
         return out.ravel() if np.ndim(b) == 1 else out
 
-    def inverse_block(self, idx: np.ndarray, copy: bool = False) -> np.ndarray:
+    def inverse_block(self, idx: np.ndarray) -> np.ndarray:
         """``(A^{-1})[idx][:, idx] = W^T W`` with ``W = L^{-1} P E_idx``, zero above the
-        first of ``idx``'s places in the order: only the trailing block ``L_tt`` of the
-        factor matters, ``W = L_tt^{-1} E``. ``copy``: read ``L_tt`` from a second
-        factorisation turned into a sparse matrix (fast; the factor twice in memory),
-        else build ``W`` by forward sweeps on sparse right-hand sides in chunks of
-        columns (no copy)."""
+        first of ``idx``'s places in the order (only the factor's trailing block acts):
+        forward sweeps on sparse right-hand sides in chunks of columns, no copy of the
+        factor."""
         from cvxopt import spmatrix
 
         where = np.empty(self.n, dtype=np.int64)
@@ -610,25 +606,14 @@ class _Cholmod:
         pos = where[np.asarray(idx, dtype=np.int64)]
         first = int(pos.min(initial=self.n))
         m = pos.size
-        if copy:
-            factor = self._cholmod.getfactor(self._factor())  # consumes that factor
-            colptr, rows, values = (np.asarray(a).ravel() for a in factor.CCS)
-            del factor
-            L = sp.csc_matrix((values, rows, colptr), shape=(self.n, self.n))[first:, first:]
-            del colptr, rows, values
-            inv, info = sla.lapack.dtrtri(L.toarray(), lower=1, overwrite_c=1)
-            if info:
-                raise ValueError("the factor's trailing block is singular")
-            W = inv[:, pos - first]
-        else:
-            W = np.zeros((self.n - first, m))
-            for start in range(0, m, _CHUNK):
-                stop = min(start + _CHUNK, m)
-                k = stop - start
-                B = spmatrix(1.0, pos[start:stop].tolist(), list(range(k)), (self.n, k))
-                X = self._cholmod.spsolve(self.F, B, sys=4)
-                colptr, rows, values = (np.asarray(a).ravel() for a in X.CCS)
-                cols = np.repeat(np.arange(k), np.diff(colptr))
-                W[rows - first, start + cols] = values
-                del B, X
+        W = np.zeros((self.n - first, m))
+        for start in range(0, m, _CHUNK):
+            stop = min(start + _CHUNK, m)
+            k = stop - start
+            B = spmatrix(1.0, pos[start:stop].tolist(), list(range(k)), (self.n, k))
+            X = self._cholmod.spsolve(self.F, B, sys=4)
+            colptr, rows, values = (np.asarray(a).ravel() for a in X.CCS)
+            cols = np.repeat(np.arange(k), np.diff(colptr))
+            W[rows - first, start + cols] = values
+            del B, X
         return np.asarray(W.T @ W)
