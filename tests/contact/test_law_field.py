@@ -177,3 +177,31 @@ def test_normal_capacity_of_a_per_point_closed_surface_at_one_traction() -> None
     check_normal_capacity(law, 0.4e6)
     with pytest.raises(ParameterError, match=r"F_k = 500000"):
         check_normal_capacity(law, 1.0e6)
+
+
+def test_a_region_whose_F_k_is_below_the_pressure_is_refused_before_the_run(
+    tmp_path: Path,
+) -> None:
+    """A closed surface softened to F_k carries at most f_n = F_k: a region with its own
+    F_k below the nominal pressure P is refused when the scenario is read, naming the
+    region and the key (a region above P, and the [law]'s own F_k, pass)."""
+    closed = {
+        "surface": "modified_cam_clay",
+        "alpha_n": ALPHA,
+        "alpha_t": ALPHA,
+        "F_s": 3.0 * P,
+        "F_k": 2.0 * P,
+        "M": 0.5,
+        "u": 1.0e9,
+        "kappa": 0.0,
+        "xi": 0.0,
+    }
+    parse_contact(_scenario(tmp_path, law=closed, law_region=[
+        {"x": [0.0, 0.05], "F_k": 1.5 * P}]), base_dir=tmp_path)  # fmt: skip
+    data = _scenario(tmp_path, law=closed, law_region=[
+        {"x": [0.0, 0.05], "F_k": 1.5 * P}, {"x": [0.05, W], "F_k": 0.5 * P}])  # fmt: skip
+    with pytest.raises(
+        (InputError, ParameterError), match=r"\[\[law_region\]\] #2\.F_k = 500000"
+    ) as info:
+        parse_contact(data, base_dir=tmp_path)
+    assert "\n" not in str(info.value)

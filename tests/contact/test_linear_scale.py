@@ -104,3 +104,71 @@ def test_nested_dissection_gets_a_symmetric_graph_from_an_unsymmetric_pattern(
     assert len(seen) == 1 and abs(seen[0] - seen[0].T).nnz == 0
     assert np.array_equal(np.sort(order), np.arange(K0.shape[0]))
     assert k >= contact.size
+
+
+def test_cholmod_inverse_block_equals_the_dense_inverse() -> None:
+    """G = (A^-1)[idx][:, idx] from the Cholesky factor's trailing block, in any given
+    order (CHOLMOD may postorder it), against numpy's dense inverse."""
+    pytest.importorskip("cvxopt")
+    import scipy.sparse as sp
+
+    from frictionlab.contact.linear import _Cholmod
+
+    rng = np.random.default_rng(3)
+    n = 300
+    R = sp.random(n, n, density=0.02, random_state=4)
+    A = (R @ R.T + 3.0 * sp.eye(n)).tocsc()
+    idx = np.array([5, 17, 200, 3, 299])
+    last = np.setdiff1d(rng.permutation(n), idx)
+    for perm in (rng.permutation(n), np.concatenate([last, idx])):
+        factor = _Cholmod(A, perm)
+        inverse = np.linalg.inv(A.toarray())
+        G = factor.inverse_block(idx)
+        np.testing.assert_allclose(G, inverse[np.ix_(idx, idx)], rtol=0, atol=1e-13)
+        b = rng.normal(size=(n, 2))
+        np.testing.assert_allclose(factor.solve(b), inverse @ b, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize(
+    "block",
+    [
+        pmma_block(element_size=0.0125),
+        Block(3e9, 0.35, 0.01, 0.01, 0.0025, element="hex", depth=0.01),
+    ],
+    ids=["2d", "3d"],
+)
+def test_cholmod_and_superlu_give_the_same_contact_block_and_run(
+    block: Block, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The two factorisations agree to round-off: G, and the recorded forces of a slide
+    through the static peak (relative 1e-10)."""
+    pytest.importorskip("cvxopt")
+    from tests.contact.support import NORMAL
+
+    from frictionlab.contact import Slide, linear, run_contact
+
+    disc = discretise(block)
+    fixed = np.zeros(disc.n_dofs, dtype=bool)
+    for a in range(disc.dim - 1):
+        fixed[disc.dofs[a][disc.top_nodes]] = True
+    ties = [disc.dofs[-1][disc.top_nodes]]
+    chol = TangentSolver(disc, fixed, law(), ties, backend="cholmod")
+    slu = TangentSolver(disc, fixed, law(), ties, backend="superlu")
+    assert (chol.backend, slu.backend) == ("cholmod", "superlu")
+    np.testing.assert_allclose(chol.G, slu.G, rtol=0, atol=1e-10 * np.abs(slu.G).max())
+    runs = {}
+    for name in ("cholmod", "superlu"):
+        monkeypatch.setattr(linear, "_backend", lambda _name, chosen=name: chosen)
+        runs[name] = run_contact(block, law(), NORMAL, [Slide(1e-5, 30e-6, steps=5)])
+    for key in ("tangential_force", "normal_force", "top_displacement"):
+        a, b = getattr(runs["cholmod"], key), getattr(runs["superlu"], key)
+        np.testing.assert_allclose(a, b, rtol=0, atol=1e-10 * np.abs(b).max())
+    assert np.array_equal(runs["cholmod"].iterations, runs["superlu"].iterations)
+
+
+def test_unknown_backend_is_refused_naming_the_key() -> None:
+    disc = discretise(pmma_block(element_size=0.025))
+    fixed = np.zeros(disc.n_dofs, dtype=bool)
+    fixed[disc.dofs[0][disc.top_nodes]] = True
+    with pytest.raises(ParameterError, match="backend"):
+        TangentSolver(disc, fixed, law(), backend="mumps")

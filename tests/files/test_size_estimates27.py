@@ -27,7 +27,7 @@ def test_contact_estimate_is_the_solvers_own_and_grows_with_the_3d_fill() -> Non
     n, m = 10_000, 300
     c = cost(n, m, 2)
     assert budget.contact_solver_estimate(n, m, 2) == (c["bytes"], c["setup"], c["per_solve"])
-    a, b = cost(1e7, 0, 3)["bytes"], cost(2e7, 0, 3)["bytes"]
+    a, b = cost(1e10, 0, 3)["bytes"], cost(2e10, 0, 3)["bytes"]
     assert b / a == pytest.approx(2.0 ** (4.0 / 3.0), rel=0.02)
 
 

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -34,8 +35,10 @@ from frictionlab.errors import ParameterError
 from frictionlab.subloading import SubloadingParams
 
 __all__ = [
+    "FACTOR_MODELS",
     "LINEAR_SOLVERS",
     "ORDERINGS",
+    "FactorModel",
     "IterativeSolver",
     "TangentSolver",
     "cost",
@@ -51,6 +54,9 @@ LINEAR_SOLVERS: tuple[str, ...] = ("direct", "iterative")
 #: Orderings of the direct solver: METIS nested dissection with the contact unknowns
 #: last (default), or one of SuperLU's column orderings (scipy ``splu(permc_spec=...)``).
 ORDERINGS: tuple[str, ...] = ("nested_dissection", "MMD_AT_PLUS_A", "COLAMD", "MMD_ATA")
+#: Libraries of the nested-dissection factorisation: CHOLMOD's supernodal Cholesky
+#: (cvxopt, one factor stored) when installed under ``"auto"``, else SuperLU (scipy).
+BACKENDS: tuple[str, ...] = ("auto", "cholmod", "superlu")
 _CHUNK = 256  # columns per back-substitution block when G is built
 
 
@@ -79,7 +85,21 @@ def reduction(fixed: np.ndarray, ties: Sequence[np.ndarray] = ()) -> sp.csc_matr
     return sp.csc_matrix((np.ones(rows.size), (rows, col[rows])), shape=(n, k))
 
 
-class TangentSolver:
+class _Reduced:
+    """Reduced coordinates ``q`` of a solver: ``u = u_prescribed + T q``."""
+
+    T: sp.csc_matrix
+
+    def reduce(self, r: np.ndarray) -> np.ndarray:
+        """A full-length vector of forces in reduced coordinates, ``T^T r``."""
+        return np.asarray(self.T.T @ r)
+
+    def expand(self, delta: np.ndarray) -> np.ndarray:
+        """A reduced increment as nodal displacements, ``T delta``."""
+        return np.asarray(self.T @ delta)
+
+
+class TangentSolver(_Reduced):
     """Solve ``T^T J T delta = b`` for given contact moduli (``b``, ``delta`` reduced).
 
     ``ordering``: ``"nested_dissection"`` (METIS through pymetis, default; reverse
@@ -88,6 +108,12 @@ class TangentSolver:
     factors is the Schur complement ``S`` of ``K0`` on them and ``G = S^{-1}`` costs
     one dense inversion; the other names are SuperLU's own column orderings
     (:data:`ORDERINGS`), with ``G`` built by back-substitution in chunks of columns.
+    ``backend`` (nested dissection only, :data:`BACKENDS`): ``"cholmod"`` factorises
+    ``K0 = L L^T`` (CHOLMOD's supernodal Cholesky through cvxopt: one factor stored,
+    half of SuperLU's ``L`` and ``U``) and forms ``G = W^T W``, ``W = L_tt^{-1}`` the
+    inverse of the factor's trailing block; ``"superlu"`` (scipy) factorises
+    ``K0 = L U`` without pivoting; ``"auto"`` (default) takes CHOLMOD when cvxopt is
+    installed. Both give ``G`` and the solves to round-off.
     """
 
     def __init__(
@@ -98,6 +124,7 @@ class TangentSolver:
         ties: Sequence[np.ndarray] = (),
         *,
         ordering: str = "nested_dissection",
+        backend: str = "auto",
     ) -> None:
         if ordering not in ORDERINGS:
             raise ParameterError("ordering", ordering, "one of " + ", ".join(ORDERINGS))
@@ -119,8 +146,18 @@ class TangentSolver:
         ).tocsc()
         del K
         self.n = int(T.shape[1])
+        self.dim = disc.dim
         m = cols.size
         self.perm: np.ndarray | None = None
+        self.G: np.ndarray
+        chosen = _backend(backend)  # checked for every ordering
+        self.backend = chosen if ordering == "nested_dissection" else "superlu"
+        if self.backend == "cholmod":
+            self.perm, _ = _contact_last_order(K0, cols)
+            self.lu: Any = _Cholmod(K0, self.perm)
+            del K0
+            self.G = self.lu.inverse_block(cols)
+            return
         if ordering == "nested_dissection":
             self.perm, last = _contact_last_order(K0, cols)
             self.iperm = np.empty_like(self.perm)
@@ -135,7 +172,7 @@ class TangentSolver:
                 # the contact unknowns' places in the trailing block
                 tail = self.perm[self.n - last :]
                 if np.array_equal(tail, cols):
-                    self.G: np.ndarray = inverse
+                    self.G = inverse
                 else:
                     order = np.argsort(tail)
                     where = order[np.searchsorted(tail[order], cols)]
@@ -154,23 +191,19 @@ class TangentSolver:
 
     def _lu_solve(self, b: np.ndarray) -> np.ndarray:
         """``K0^{-1} b`` (``b`` a vector or columns, in reduced coordinates)."""
-        if self.perm is None:
+        if self.perm is None or self.backend == "cholmod":
             return np.asarray(self.lu.solve(b))
         return np.asarray(self.lu.solve(b[self.perm]))[self.iperm]
 
     @property
     def memory_bytes(self) -> int:
-        """Bytes held by the factors and the contact block (an estimate of the peak)."""
+        """Bytes held by the factors and the contact block (SuperLU's counted; CHOLMOD's
+        estimated by :func:`cost`'s fill, as cvxopt does not report its factor's size)."""
+        if self.backend == "cholmod":
+            need = cost(self.n, self.contact.size, self.dim, "direct", "cholmod")["bytes"]
+            return int(need - self.n * MESH_BYTES[self.dim - 2])
         nnz = int(self.lu.L.nnz + self.lu.U.nnz)
         return 12 * nnz + 8 * self.G.size
-
-    def reduce(self, r: np.ndarray) -> np.ndarray:
-        """A full-length vector of forces in reduced coordinates, ``T^T r``."""
-        return np.asarray(self.T.T @ r)
-
-    def expand(self, delta: np.ndarray) -> np.ndarray:
-        """A reduced increment as nodal displacements, ``T delta``."""
-        return np.asarray(self.T @ delta)
 
     def correction(self, moduli: np.ndarray) -> sp.csr_matrix:
         """``A`` (m, m, sparse): the contact moduli minus the elastic ones, on the contact dofs."""
@@ -221,7 +254,7 @@ class TangentSolver:
         return y - self._lu_solve(scatter)
 
 
-class IterativeSolver:
+class IterativeSolver(_Reduced):
     """GMRES on ``T^T J T`` preconditioned by smoothed-aggregation AMG (pyamg).
 
     The hierarchy is built on the symmetric part of the tangent (with the rigid-body
@@ -234,7 +267,6 @@ class IterativeSolver:
         self,
         disc: Discretisation,
         fixed: np.ndarray,
-        params: SubloadingParams | Frictionless,
         ties: Sequence[np.ndarray] = (),
         *,
         rtol: float = 1e-10,
@@ -262,14 +294,6 @@ class IterativeSolver:
         """Bytes of the tangent and the multigrid hierarchy (an estimate)."""
         J = self._J if self._J is not None else self.K
         return int(3 * 12 * J.nnz)
-
-    def reduce(self, r: np.ndarray) -> np.ndarray:
-        """``T^T r``."""
-        return np.asarray(self.T.T @ r)
-
-    def expand(self, delta: np.ndarray) -> np.ndarray:
-        """``T delta``."""
-        return np.asarray(self.T @ delta)
 
     def solve(self, moduli: np.ndarray, b: np.ndarray) -> np.ndarray:
         """``delta`` with ``T^T (K + Kc(moduli)) T delta = b``; raises when GMRES fails."""
@@ -308,68 +332,83 @@ def make_solver(
     if kind == "direct":
         return TangentSolver(disc, fixed, params, ties)
     if kind == "iterative":
-        return IterativeSolver(disc, fixed, params, ties)
+        return IterativeSolver(disc, fixed, ties)
     raise ParameterError("linear_solver", kind, "one of " + ", ".join(LINEAR_SOLVERS))
 
 
-#: Entries of the nested-dissection LU factors (L and U) per unknown, measured on this
-#: model's structured meshes with the contact unknowns last: 2-D ``FILL_2D * log2(n)``
-#: (167 per unknown at 51k unknowns), 3-D ``FILL_3D * n**(1/3)`` (984 at 13.9k, 1,617 at
-#: 45k unknowns).
-FILL_2D = 11.0
-FILL_3D = 46.0
-#: Bytes per factor entry at the peak: SuperLU's supernodal factors, the CSC copy of one
-#: of them while the trailing block is read, and the allocator's slack (fitted to the
-#: measured peaks: 3-D 32^3 hexahedra 5.9 GB above the interpreter).
-BYTES_PER_ENTRY = 19.0
-#: Bytes per unknown of the mesh, its assembly and the solver's sparse matrices (the
-#: stiffness, its reduced and permuted copies, the interpolation): what the measured peaks
-#: of benchmarks/bench_contact_scaling.py leave above the interpreter, the factors and
-#: the dense blocks (2-D 52k unknowns: 2.8 kB; 3-D 14.7k: 12 kB; scikit-fem's hexahedron
-#: assembly alone peaks at 10 kB per unknown).
-MESH_BYTES_2D = 3000.0
-MESH_BYTES_3D = 12000.0
-#: Seconds per factor entry of one solve (two triangular sweeps; 3.3e-9 measured), of
-#: the factorisation per entry (2-D; 8e-8) and per entry and unknown (3-D, ~n^2 overall;
-#: 6-10e-12), and the dense rate [flop/s]: one core of the shared machine, upper ends.
-SOLVE_S_PER_ENTRY = 4e-9
-FACTOR_S_PER_ENTRY_UNKNOWN_3D = 1e-11
-FACTOR_S_PER_ENTRY_2D = 1e-7
-DENSE_FLOPS = 5e9
-#: GMRES basis vectors and the multigrid hierarchy's size relative to the tangent
-#: (iterative solver).
-GMRES_RESTART = 60
-AMG_COMPLEXITY = 3.0
-#: Seconds per unknown of one iterative solve (a hierarchy rebuilt and GMRES: 108 CPU s
-#: for ~70 solves at 14.7k unknowns, 3-D).
-ITERATIVE_S_PER_UNKNOWN = 1e-4
+@dataclass(frozen=True)
+class FactorModel:
+    """Fitted size and time of one nested-dissection factorisation (contact unknowns
+    last) on this model's meshes, one core of the shared machine, upper ends.
+
+    ``fill``: factor entries per unknown over ``log2(n)`` (2-D) or ``n**(1/3)`` (3-D);
+    ``bytes``: bytes per entry at the peak (2-D, 3-D); ``factor``: seconds per entry
+    (2-D) and per entry and unknown (3-D, ~n^2 overall); ``sweep_flops``: the rate of
+    the forward sweeps that form ``G`` (0: ``G`` read from the factors' trailing
+    block); ``inversions``: dense m x m inversions of ``G``'s set-up.
+    """
+
+    fill: tuple[float, float]
+    bytes: tuple[float, float]
+    factor: tuple[float, float]
+    sweep_flops: float
+    inversions: float
+
+
+#: SuperLU's ``L`` and ``U`` (167 entries per unknown at 51k, 2-D; 984 at 13.9k and 1,617
+#: at 45k, 3-D); at the peak the supernodal factors, the CSC copy of one of them while
+#: the trailing block is read and the allocator's slack (3-D 32^3 hexahedra 5.9 GB above
+#: the interpreter). CHOLMOD's ``L`` alone (503 entries per unknown at 14.2k, 3-D): the
+#: supernodal factor and its workspace (9.4 bytes per entry measured at 45.6k, 3-D; 14
+#: at 51.7k, 2-D) and the forward sweeps that form ``G`` (6.6e9 flop/s measured).
+FACTOR_MODELS: dict[str, FactorModel] = {
+    "superlu": FactorModel((11.0, 46.0), (19.0, 19.0), (1e-7, 1e-11), 0.0, 3.0),
+    "cholmod": FactorModel((5.5, 23.0), (14.0, 11.0), (1e-7, 3e-12), 4e9, 1.0),
+}
+#: Bytes per unknown of the mesh, its assembly and the solver's sparse matrices (2-D,
+#: 3-D): what the measured peaks leave above the interpreter, the factors and the dense
+#: blocks (2-D 52k unknowns: 2.8 kB; 3-D 14.7k: 12 kB; scikit-fem's hexahedron assembly
+#: alone peaks at 10 kB per unknown).
+MESH_BYTES = (3000.0, 12000.0)
+#: Seconds per factor entry of one solve (two triangular sweeps; 3.3e-9 measured) and
+#: the dense rate [flop/s].
+SOLVE_S_PER_ENTRY, DENSE_FLOPS = 4e-9, 5e9
+#: The iterative solver: GMRES basis vectors, the multigrid hierarchy's size relative to
+#: the tangent, and seconds per unknown of one solve (a hierarchy rebuilt and GMRES: 108
+#: CPU s for ~70 solves at 14.7k unknowns, 3-D).
+GMRES_RESTART, AMG_COMPLEXITY, ITERATIVE_S_PER_UNKNOWN = 60, 3.0, 1e-4
 
 
 def cost(
-    unknowns: float, contact_unknowns: float, dim: int, linear_solver: str = "direct"
+    unknowns: float,
+    contact_unknowns: float,
+    dim: int,
+    linear_solver: str = "direct",
+    backend: str = "auto",
 ) -> dict[str, float]:
     """Memory and time of the linear solver for ``unknowns`` free unknowns of which
     ``contact_unknowns`` on the contact face: ``bytes`` (the peak), ``setup`` [s] (the
     factorisation and the contact block) and ``per_solve`` [s] (one Newton solve).
 
-    Direct: the nested-dissection factors (``FILL_2D * log2(n)`` or
-    ``FILL_3D * n**(1/3)`` entries per unknown), the dense contact blocks (three m x m
+    Direct (:data:`FACTOR_MODELS`, ``backend`` as in :class:`TangentSolver`, ``"auto"``
+    the one installed): the nested-dissection factors (``fill * log2(n)`` or
+    ``fill * n**(1/3)`` entries per unknown), the dense contact blocks (three m x m
     arrays while ``G`` is formed) and the mesh and its matrices; a solve is two sweeps of
-    the factors and
-    a dense solve on at most m contact unknowns. Iterative: the tangent and its
-    hierarchy, the GMRES basis and the mesh.
+    the factors and a dense solve on at most m contact unknowns. Iterative: the tangent
+    and its hierarchy, the GMRES basis and the mesh.
     """
     n, m = float(unknowns), float(contact_unknowns)
-    mesh = n * (MESH_BYTES_2D if dim == 2 else MESH_BYTES_3D)
+    i = 0 if dim == 2 else 1
+    mesh = n * MESH_BYTES[i]
     if linear_solver == "direct":
-        per = FILL_2D * math.log2(max(n, 2.0)) if dim == 2 else FILL_3D * n ** (1.0 / 3.0)
-        entries = per * n
-        need = mesh + BYTES_PER_ENTRY * entries + 3 * 8.0 * m * m
-        if dim == 2:
-            factor = FACTOR_S_PER_ENTRY_2D * entries
-        else:
-            factor = FACTOR_S_PER_ENTRY_UNKNOWN_3D * entries * n
-        setup = factor + 3.0 * m**3 / DENSE_FLOPS
+        model = FACTOR_MODELS[_backend(backend)]
+        scale = math.log2(max(n, 2.0)) if dim == 2 else n ** (1.0 / 3.0)
+        entries = model.fill[i] * scale * n
+        need = mesh + model.bytes[i] * entries + 3 * 8.0 * m * m
+        setup = model.factor[i] * entries * (1.0 if dim == 2 else n)
+        if model.sweep_flops:
+            setup += 2.0 * entries * m / model.sweep_flops
+        setup += model.inversions * m**3 / DENSE_FLOPS
         per_solve = 2.0 * SOLVE_S_PER_ENTRY * entries + (2.0 / 3.0) * m**3 / DENSE_FLOPS
     elif linear_solver == "iterative":
         nnz = n * (9 if dim == 2 else 27) * dim
@@ -494,3 +533,87 @@ def _rows(B: sp.csr_matrix) -> tuple[np.ndarray, np.ndarray]:
         idx[has, k] = B.indices[pos]
         val[has, k] = B.data[pos]
     return idx, val
+
+
+def _backend(name: str) -> str:
+    """The factorisation's library: ``"cholmod"`` (cvxopt's CHOLMOD) when importable under
+    ``"auto"``, else ``"superlu"`` (scipy)."""
+    if name not in BACKENDS:
+        raise ParameterError("backend", name, "one of " + ", ".join(BACKENDS))
+    if name != "auto":
+        return name
+    try:
+        import cvxopt.cholmod  # noqa: F401
+    except ImportError:
+        return "superlu"
+    return "cholmod"
+
+
+class _Cholmod:
+    """Supernodal Cholesky ``P A P^T = L L^T`` of a symmetric positive definite ``A``
+    (CHOLMOD through cvxopt; one factor stored), in the fill-reducing order ``perm``
+    (CHOLMOD may postorder it: :attr:`order` is the one used)."""
+
+    def __init__(self, A: sp.csc_matrix, perm: np.ndarray) -> None:
+        from cvxopt import cholmod, matrix, spmatrix
+
+        self._cholmod, self._matrix = cholmod, matrix
+        low = sp.tril(A, format="coo")
+        self._A = spmatrix(
+            matrix(low.data), matrix(low.row.astype(np.int64)), matrix(low.col.astype(np.int64)),
+            A.shape,
+        )  # fmt: skip
+        del low
+        self._perm = matrix(np.asarray(perm, dtype=np.int64))
+        self.n = int(A.shape[0])
+        self.F = self._factor()
+        del self._A
+        # CHOLMOD's order: P x = x[order] (sys=7 solves P^T y = x)
+        x = matrix(np.arange(self.n, dtype=np.float64))
+        cholmod.solve(self.F, x, sys=7)
+        self.order = np.asarray(x, dtype=np.int64).ravel()
+
+    def _factor(self) -> Any:
+        cholmod = self._cholmod
+        saved = dict(cholmod.options)
+        cholmod.options.update({"supernodal": 2, "nmethods": 1, "postorder": True})
+        try:
+            F = cholmod.symbolic(self._A, p=self._perm, uplo="L")
+            cholmod.numeric(self._A, F)
+        except ArithmeticError as exc:
+            raise ValueError(f"the elastic stiffness is not positive definite ({exc})") from None
+        finally:
+            cholmod.options.clear()
+            cholmod.options.update(saved)
+        return F
+
+    def solve(self, b: np.ndarray) -> np.ndarray:
+        """``A^{-1} b`` (a vector or columns)."""
+        B = self._matrix(np.asarray(b, dtype=np.float64))
+        self._cholmod.solve(self.F, B, sys=0)
+        out = np.asarray(B)
+        return out.ravel() if np.ndim(b) == 1 else out
+
+    def inverse_block(self, idx: np.ndarray) -> np.ndarray:
+        """``(A^{-1})[idx][:, idx] = W^T W`` with ``W = L^{-1} P E_idx``, zero above the
+        first of ``idx``'s places in the order (only the factor's trailing block acts):
+        forward sweeps on sparse right-hand sides in chunks of columns, no copy of the
+        factor."""
+        from cvxopt import spmatrix
+
+        where = np.empty(self.n, dtype=np.int64)
+        where[self.order] = np.arange(self.n)
+        pos = where[np.asarray(idx, dtype=np.int64)]
+        first = int(pos.min(initial=self.n))
+        m = pos.size
+        W = np.zeros((self.n - first, m))
+        for start in range(0, m, _CHUNK):
+            stop = min(start + _CHUNK, m)
+            k = stop - start
+            B = spmatrix(1.0, pos[start:stop].tolist(), list(range(k)), (self.n, k))
+            X = self._cholmod.spsolve(self.F, B, sys=4)
+            colptr, rows, values = (np.asarray(a).ravel() for a in X.CCS)
+            cols = np.repeat(np.arange(k), np.diff(colptr))
+            W[rows - first, start + cols] = values
+            del B, X
+        return np.asarray(W.T @ W)

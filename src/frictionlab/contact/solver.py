@@ -66,7 +66,8 @@ class SolverOptions:
         ``"consistent"`` (the law's algorithmic tangent, default) or ``"elastic"`` (its
         elastic moduli, a fixed secant-type stiffness; for comparison).
     linear_solver:
-        ``"direct"`` (SuperLU, default) or ``"iterative"`` (GMRES + AMG, pyamg): see
+        ``"direct"`` (CHOLMOD through cvxopt, or SuperLU without it; default) or
+        ``"iterative"`` (GMRES + AMG, pyamg): see
         :mod:`~frictionlab.contact.linear`.
     memory_limit:
         Bytes the run may use (the estimate of :func:`~frictionlab.contact.linear.estimate`
@@ -405,6 +406,7 @@ def _run(
             f_now = _external(disc, normal, pressure * to_pressure, shear, dim)
             r = disc.stiffness @ u - f_now - force
             pin_load[pins] = r[pins]
+            del solver  # its factors go before the next ones are made (the peak)
             solver = make_solver(opts.linear_solver, disc, fixed, params, ties)
         nominal = 1.0 / stage.steps
         h = nominal

@@ -45,6 +45,7 @@ DEPENDENCIES = (
     "meshio",
     "pyamg",
     "pymetis",
+    "cvxopt",
     "pint",
     "pyarrow",
     "orjson",

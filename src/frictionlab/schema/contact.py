@@ -11,6 +11,7 @@ import dataclasses
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -516,6 +517,10 @@ def parse_contact(
         reraise("[law]", lambda: check_snap_back(params, nominal))
         if normal.control != "displacement":  # the mean pressure: some points carry more
             reraise("[law]", lambda: check_normal_capacity(params, nominal))
+            for region in law_field.regions:  # a region's own F_k, named with its key
+                if "F_k" in region.values:
+                    local = params.replace(F_k=region.values["F_k"])
+                    reraise(region.name, partial(check_normal_capacity, local, nominal))
     reraise("[block]", lambda: check_memory(block, options))
     inputs = {
         "title": top["title"], "description": top["description"], "block": block_echo,
