@@ -21,7 +21,9 @@ import tomli_w
 from frictionlab.errors import InputError
 from frictionlab.io.inputs import read_input_text
 
-__all__ = ["REQUIRED", "Table", "apply_overrides", "format_toml", "load_toml", "unknown_key"]
+__all__ = [
+    "REQUIRED", "Table", "apply_overrides", "coerce", "format_toml", "load_toml", "unknown_key",
+]  # fmt: skip
 
 
 class _Required:
@@ -178,7 +180,7 @@ class Table:
         value = self.raw(key, default)
         if value is default and key not in self._data:
             return value
-        value = _coerce(value, kind, self._name(key))
+        value = coerce(value, kind, self._name(key))
         if choices is not None and value not in choices:
             options = ", ".join(repr(c) for c in choices)
             raise InputError(
@@ -207,7 +209,7 @@ class Table:
         if lengths is not None and len(value) not in lengths:
             want = " or ".join(str(n) for n in lengths)
             raise InputError(f"{name} must have {want} entries, got {len(value)}")
-        return [_coerce(v, kind, f"{name}[{i}]") for i, v in enumerate(value)]
+        return [coerce(v, kind, f"{name}[{i}]") for i, v in enumerate(value)]
 
     def table(self, key: str, required: bool = False) -> Table | None:
         """A sub-table, or ``None`` when absent and not required."""
@@ -244,7 +246,8 @@ def _describe(value: Any) -> str:
     return f"{type(value).__name__} {value!r}"
 
 
-def _coerce(value: Any, kind: type, name: str) -> Any:
+def coerce(value: Any, kind: type, name: str) -> Any:
+    """``value`` as ``kind`` (float accepts integers, bool is never a number); else one line."""
     if kind is float:
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise InputError(f"{name} must be {_TYPE_NAMES[float]}, got {_describe(value)}")

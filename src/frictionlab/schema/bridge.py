@@ -36,9 +36,8 @@ OPTIONS = Section("bridge", (
     Field("scale", STRING, "where the law's size comes from: the [law] values, or "
           "mu_k from the polar (roughness)", "", "law",
           choices=SCALES),
-    Field("fit", listed(str, "string"), "what is fitted; a group left out is held at its [law] "
-          "value", "", list(FIT_GROUPS),
-          json={"type": "array", "items": {"enum": list(FIT_GROUPS)}, "uniqueItems": True}),
+    Field("fit", listed(str, "string", unique=True), "what is fitted; a group left out is held "
+          "at its [law] value", "", list(FIT_GROUPS), choices=FIT_GROUPS),
     Field("step_deg", NUMBER, "full-circle grid of the polar ([sliding].beta_deg added)", "deg",
           10.0, low=0.5, high=45,
           allowed="a step from 0.5 to 45 deg that divides 360"),
@@ -183,17 +182,8 @@ def _refuse_not_used(keys: Any) -> None:
 
 def _options(data: Any) -> BridgeOptions:
     v = OPTIONS.read(data)
-    fit = v["fit"]
-    for i, group in enumerate(fit):
-        if group not in FIT_GROUPS:
-            raise InputError(
-                f"[bridge].fit[{i}] = {group!r} is not allowed; choose among "
-                + ", ".join(repr(g) for g in FIT_GROUPS)
-            )
-    if len(set(fit)) != len(fit):
-        raise InputError(f"[bridge].fit = {fit} names a group twice")
     count = 360.0 / v["step_deg"]
     if not math.isclose(count, round(count), rel_tol=0.0, abs_tol=1e-9):
         raise InputError(f"[bridge].step_deg = {v['step_deg']!r} is invalid: allowed "
                          f"{OPTIONS['step_deg'].allowed}")  # fmt: skip
-    return BridgeOptions(**{**v, "fit": tuple(fit)})
+    return BridgeOptions(**{**v, "fit": tuple(v["fit"])})

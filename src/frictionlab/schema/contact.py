@@ -32,7 +32,7 @@ from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
 from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, PAIRS, STRING, listed
-from frictionlab.schema.scenario import LAW, parse_law_table
+from frictionlab.schema.scenario import LAW, parse_law_table, radians
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
 __all__ = [
@@ -46,7 +46,7 @@ REFINEMENT = Section("refinement", (
     Field("center", listed(float, "number", (1, 2)), "in-plane centre of the fine zone: x "
           "(2-D) or [x, y] (3-D); default the middle of the bottom", "m", None, **_R),
     Field("growth", NUMBER, "size ratio of neighbouring elements outside it", "", 1.2, **_R),
-), "a graded mesh, fine near the contact", "[block.refinement]")  # fmt: skip
+), "a graded mesh, fine near the contact", "[block.refinement]", by=Refinement)  # fmt: skip
 _B: dict[str, Any] = {"by": Block}
 BLOCK = Section("block", (
     Field("E", NUMBER, "Young's modulus", "Pa", REQUIRED, **_B),
@@ -60,7 +60,7 @@ BLOCK = Section("block", (
     Field("integration", STRING, "full, or selective (one-point volumetric part: no locking as nu "
           "-> 1/2)", "", "full", choices=INTEGRATIONS, **_B),
     Field("refinement", table=REFINEMENT),
-), "the elastic block", "[block]")  # fmt: skip
+), "the elastic block", "[block]", by=Block)  # fmt: skip
 BASE = Section("base", (
     Field("shape", STRING, "the rigid base: flat, cylinder (2-D) or sphere (3-D)", "", "flat",
           choices=("flat", "cylinder", "sphere"), by=Base),
@@ -68,7 +68,7 @@ BASE = Section("base", (
     Field("center", listed(float, "number", (1, 2)), "in-plane apex position: x (2-D) or "
           "[x, y] (3-D); default the middle of the bottom", "m", None, by=Base),
 ), "the rigid base's shape (a profile base is Python only: contact.shapes.Base)",
-   "[base]")  # fmt: skip
+   "[base]", by=Base)  # fmt: skip
 _N: dict[str, Any] = {"by": NormalLoad}
 NORMAL = Section("normal", (
     Field("pressure", NUMBER, "normal pressure on the top (or displacement, force)", "Pa", None,
@@ -79,7 +79,7 @@ NORMAL = Section("normal", (
           "displacement); N/m in 2-D, N in 3-D", "N/m or N", None, **_N),
     Field("duration", NUMBER, "duration of the normal stage", "s", 1.0, **_N),
     Field("steps", INTEGER, "steps of the normal stage", "", 5, **_N),
-), "the normal stage", "[normal]")  # fmt: skip
+), "the normal stage", "[normal]", by=NormalLoad)  # fmt: skip
 _SEG_CLASSES = {"slide": Slide, "reverse": Reverse, "hold": Hold, "traction": Traction}
 SEGMENT = Section("contact_segment", (
     Field("kind", STRING, "segment kind", "", REQUIRED, choices=tuple(_SEG_CLASSES)),
@@ -98,7 +98,7 @@ SEGMENT = Section("contact_segment", (
     "hold": ("duration", Field("steps", INTEGER, "number of steps", "", 5, by=Hold)),
     "traction": ("target", "duration", "steps", "direction_deg", "cycles"),
 }, required_by={"slide": ("velocity",), "hold": ("duration",),
-                "traction": ("target", "duration")}, ref=True)  # fmt: skip
+                "traction": ("target", "duration")}, ref=True, by=_SEG_CLASSES)  # fmt: skip
 _S: dict[str, Any] = {"by": SolverOptions}
 SOLVER = Section("solver", (
     Field("tolerance", NUMBER, "relative residual norm for convergence", "", 1e-10, **_S),
@@ -114,7 +114,7 @@ SOLVER = Section("solver", (
     Field("memory_limit", NUMBER, "refuse a mesh whose estimated solver storage exceeds it",
           "bytes", None, **_S),
     Field("drive", STRING, "what the tangential programme moves", "", "top", choices=DRIVES),
-), "Newton and step control", "[solver]")  # fmt: skip
+), "Newton and step control", "[solver]", by=SolverOptions)  # fmt: skip
 OUTPUT = Section("output", (
     Field("front_ratio", NUMBER, "|f_t| / F ratio that counts as slipping (the front)", "",
           0.99, low=0, high=1, open="low"),
@@ -134,10 +134,10 @@ MESH = Section("mesh", (
 _PAIR = listed(float, "number", 2)
 LAW_TABLE = Section("law_table", tuple(
     Field(key, STRING, f"CSV file of {key} along the interface: columns x [m] (2-D) or x, y "
-          f"[m] (3-D) and {key}; linearly interpolated onto the contact points")
+          f"[m] (3-D) and {key}; linearly interpolated onto the contact points", LAW[key].unit)
     for key in (*FIELD_KEYS, "orthotropy_angle_deg")
 ), "law parameters varying along the interface, from tables (applied before the "
-   "regions)", "[law_table]")  # fmt: skip
+   "regions)", "[law_table]", exclusive=LAW.exclusive)  # fmt: skip
 LAW_REGION = Section("law_region", (
     Field("x", _PAIR, "x range [from, to] of the region (closed; default all)", "m", None),
     Field("y", _PAIR, "y range [from, to] of the region, 3-D (closed; default all)", "m",
@@ -150,7 +150,8 @@ LAW_REGION = Section("law_region", (
                           per_point=False, default=None)  # default: the [law]'s value
       for key in (*FIELD_KEYS, "orthotropy_angle_deg", *PAIR_KEYS)),
 ), "a part of the interface with its own law values (later regions override earlier "
-   "ones; keys given here override the bridge's)", "[[law_region]]", ref=True)  # fmt: skip
+   "ones; keys given here override the bridge's)", "[[law_region]]", ref=True,
+   exclusive=LAW.exclusive)  # fmt: skip
 CONTACT_FILE = run_file("contact", (
     Field("block", table=BLOCK, default=REQUIRED),
     Field("mesh", table=MESH),
@@ -192,11 +193,10 @@ class ContactScenario:
 
 
 def _segment(data: Any) -> tuple[Segment, dict[str, Any]]:
-    values = SEGMENT.read(data)
-    kind = values.pop("kind")
-    if kind == "slide" and (values["distance"] is None) == (values["duration"] is None):
+    v = SEGMENT.read(data)
+    if v["kind"] == "slide" and (v["distance"] is None) == (v["duration"] is None):
         raise InputError(f"{data.where}: a slide needs exactly one of distance [m] or duration [s]")
-    return reraise(data.where, lambda: _SEG_CLASSES[kind](**values)), {"kind": kind, **values}
+    return SEGMENT.build(data)
 
 
 _BOX_KEYS = ("width", "height", "element_size")
@@ -223,9 +223,7 @@ def _block(t: Any, mesh: MeshSource | None = None) -> tuple[Block, dict[str, Any
     values = dict(echo)
     ref_t = t.table("refinement")
     if ref_t is not None:
-        ref = REFINEMENT.read(ref_t)
-        values["refinement"] = reraise(ref_t.where, lambda: Refinement(**ref))
-        echo["refinement"] = ref
+        values["refinement"], echo["refinement"] = REFINEMENT.build(ref_t)
     return reraise("[block]", lambda: Block(**values)), echo
 
 
@@ -262,9 +260,6 @@ def _check_field(where: str, params: SubloadingParams, values: dict[str, Any]) -
 
 def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -> list[LawTable]:
     given = LAW_TABLE.read(data, "[law_table]", only_given=True)
-    if "orthotropy_angle" in given and "orthotropy_angle_deg" in given:
-        raise InputError("[law_table]: give orthotropy_angle (rad) or orthotropy_angle_deg "
-                         "(deg), not both")  # fmt: skip
     axes = ("x",) if dim == 2 else ("x", "y")
     out = []
     for key, name in given.items():
@@ -344,11 +339,7 @@ def _law_regions(
                 raise ParameterError(f"{where}.group", exc.value, exc.allowed) from None
         if "bridge" in echo:
             values = {**_bridge_anisotropy(where, echo["bridge"], params, base_dir), **values}
-        if "orthotropy_angle_deg" in values:
-            if "orthotropy_angle" in echo:
-                raise InputError(f"{where}: give orthotropy_angle (rad) or "
-                                 "orthotropy_angle_deg (deg), not both")  # fmt: skip
-            values["orthotropy_angle"] = float(np.radians(values.pop("orthotropy_angle_deg")))
+        values = radians(values)
         if multiply and "orthotropy" in echo:  # the [law]'s convention, stored as "divide"
             values["orthotropy"] = [c**-0.5 for c in echo["orthotropy"]]
         if not values:
@@ -427,7 +418,7 @@ def _normal(t: Any) -> tuple[NormalLoad, dict[str, Any]]:
             "[normal]: give exactly one of pressure [Pa], displacement [m] or force "
             f"[N/m in 2-D, N in 3-D], not {' and '.join(given)}"
         )
-    return reraise("[normal]", lambda: NormalLoad(**echo)), echo
+    return NORMAL.build(t)
 
 
 def _check_load(
@@ -482,17 +473,14 @@ def parse_contact(
     if root.raw("mesh", None) is not None:
         mesh, mesh_echo = _mesh(root.raw("mesh"), Path(base_dir))
     block, block_echo = _block(block_t, mesh)
-    base_echo = BASE.read(root.raw("base", {}), "[base]")
-    base = reraise("[base]", lambda: Base(**base_echo))
+    base, base_echo = BASE.build(root.raw("base", {}), "[base]")
     reraise("[base]", lambda: base.check_dim(block.dim))
     params, law_echo = _law(law_t.mapping())
     law_field, field_echo = _law_field(root, params, block.dim, Path(base_dir), law_t, mesh)
     normal, normal_echo = _normal(normal_t)
     parsed = [_segment(t) for t in program_ts]
     program = tuple(seg for seg, _ in parsed)
-    solver_echo = SOLVER.read(root.raw("solver", {}), "[solver]")
-    solver_values = {k: v for k, v in solver_echo.items() if k != "drive"}
-    options = reraise("[solver]", lambda: SolverOptions(**solver_values))
+    options, solver_echo = SOLVER.build(root.raw("solver", {}), "[solver]", drop=("drive",))
     drive = solver_echo["drive"]
     output_echo = OUTPUT.read(root.raw("output", {}), "[output]")
     # the checks that need several sections, with the key to blame

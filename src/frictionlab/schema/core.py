@@ -144,17 +144,20 @@ class Field:
         else:
             assert self.kind is not None, self.name
             out = dict(self.kind.json)
-            if self.choices is not None:
-                out["enum"] = list(self.choices)
-            if self.kind in (NUMBER, INTEGER):
+            each: dict[str, Any] = {} if self.choices is None else {"enum": list(self.choices)}
+            if self.kind in (NUMBER, INTEGER) or self.kind.entries:
+                lo, hi = self.open in ("low", "both"), self.open in ("high", "both")
                 if self.low is not None:
-                    out["exclusiveMinimum" if self.open in ("low", "both") else "minimum"] = (
-                        self.low
-                    )
+                    each["exclusiveMinimum" if lo else "minimum"] = self.low
                 if self.high is not None:
-                    out["exclusiveMaximum" if self.open in ("high", "both") else "maximum"] = (
-                        self.high
-                    )
+                    each["exclusiveMaximum" if hi else "maximum"] = self.high
+            if not self.kind.entries:
+                out.update(each)
+            elif "oneOf" in out:  # a value or a list of values
+                one, many = out["oneOf"]
+                out["oneOf"] = [{**one, **each}, {**many, "items": {**many["items"], **each}}]
+            else:
+                out["items"] = {**out["items"], **each}
         doc = self.doc + (f" [{self.unit}]" if self.unit else "")
         if doc and "$ref" not in out:
             out["description"] = doc
@@ -172,7 +175,9 @@ class Section:
 
     ``where`` is how messages name the table (``[law]``); ``variants`` maps the value of
     the ``kind`` field to the names of the fields that kind allows (tagged tables such as
-    programme segments); ``required_by`` maps a kind to its required field names.
+    programme segments); ``required_by`` maps a kind to its required field names;
+    ``exclusive`` lists pairs of keys given at most one at a time; ``by`` is the class
+    :meth:`build` makes (for a tagged table, a mapping kind -> class).
     """
 
     name: str
@@ -181,6 +186,8 @@ class Section:
     where: str = ""
     variants: Mapping[str, tuple[str | Field, ...]] | None = None
     required_by: Mapping[str, tuple[str, ...]] | None = None
+    exclusive: tuple[tuple[str, str], ...] = ()  # pairs of keys that exclude each other
+    by: Any = None  # the class built from the values (tagged tables: kind -> class)
     extra: Mapping[str, Any] | None = None  # more JSON Schema (oneOf, ...)
     ref: bool = False  # written once under $defs/<name> of the generated schema
 
@@ -239,7 +246,29 @@ class Section:
                 raise InputError(f"missing required key {t.where}.{f.name}")
             elif not only_given:
                 out[f.name] = None if f.default is OMIT else f.default
+        for a, b in self.exclusive:
+            if a in t and b in t:
+                raise InputError(f"{t.where}: give {self._unit(a)} or {self._unit(b)}, not both")
         return out
+
+    def _unit(self, key: str) -> str:
+        unit = self[key].unit
+        return f"{key} ({unit})" if unit else key
+
+    def build(
+        self, data: Any, where: str | None = None, *, only_given: bool = False,
+        drop: tuple[str, ...] = (), **defaults: Any,
+    ) -> tuple[Any, dict[str, Any]]:  # fmt: skip
+        """(the object of class ``by`` made from the table's values, the values read).
+
+        ``defaults`` are keyword arguments for keys not given; ``drop`` names keys not
+        passed on. A ParameterError of the class is re-raised naming the table.
+        """
+        t = self.table(data, where)
+        values = self.read(t, only_given=only_given)
+        kw = {k: v for k, v in {**defaults, **values}.items() if k not in drop}
+        cls = self.by[kw.pop("kind")] if self.variants is not None else self.by
+        return reraise(t.where, lambda: cls(**kw)), values
 
     def read_top(self, data: Any) -> tuple[Table, dict[str, Any]]:
         """The top table of an input file, checked (unknown keys refused), and its values."""

@@ -6,13 +6,12 @@ and how it is written in JSON Schema. :mod:`frictionlab.schema.core` declares th
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from frictionlab.errors import InputError
-from frictionlab.io.config import Table
+from frictionlab.io.config import Table, coerce
 
 if TYPE_CHECKING:
     from frictionlab.schema.core import Field
@@ -25,12 +24,14 @@ class Kind:
     """A value kind: how a value is read from TOML and how it is written in JSON Schema.
 
     ``read(table, field)`` returns the typed value of a present key; ``json`` is the
-    JSON Schema of a value (``$defs`` names are resolved by the generator).
+    JSON Schema of a value (``$defs`` names are resolved by the generator). ``entries``:
+    the field's choices and range apply to each entry of a list.
     """
 
     name: str
     read: Callable[[Table, Field], Any]
     json: Mapping[str, Any]
+    entries: bool = False
 
 
 def _scalar(kind: type) -> Callable[[Table, Field], Any]:
@@ -40,50 +41,68 @@ def _scalar(kind: type) -> Callable[[Table, Field], Any]:
     return read
 
 
-def _number(value: Any, name: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise InputError(f"{name} must be a number, got {type(value).__name__} {value!r}")
-    if not math.isfinite(value):
-        raise InputError(f"{name} = {value} must be finite")
-    return float(value)
-
-
 def _numbers(t: Table, f: Field) -> Any:
     """A number or a non-empty list of numbers (one per point)."""
     value, name = t.raw(f.name), f"{t.where}.{f.name}"
     if isinstance(value, list):
         if not value:
             raise InputError(f"{name} must be a number or a non-empty list of numbers, got []")
-        return [_number(v, f"{name}[{i}]") for i, v in enumerate(value)]
-    return _number(value, name)
+        return [coerce(v, float, f"{name}[{i}]") for i, v in enumerate(value)]
+    return coerce(value, float, name)
 
 
 def _pairs(t: Table, f: Field) -> Any:
     """A pair ``[a, b]`` or a list of pairs (one per point)."""
     value, name = t.raw(f.name), f"{t.where}.{f.name}"
     if isinstance(value, list) and len(value) == 2 and not any(isinstance(v, list) for v in value):
-        return [_number(v, f"{name}[{i}]") for i, v in enumerate(value)]
+        return [coerce(v, float, f"{name}[{i}]") for i, v in enumerate(value)]
     if isinstance(value, list) and value and all(isinstance(v, list) for v in value):
         out = []
         for i, pair in enumerate(value):
             if len(pair) != 2:
                 raise InputError(f"{name}[{i}] must have 2 entries, got {len(pair)}")
-            out.append([_number(v, f"{name}[{i}][{j}]") for j, v in enumerate(pair)])
+            out.append([coerce(v, float, f"{name}[{i}][{j}]") for j, v in enumerate(pair)])
         return out
     raise InputError(f"{name} must be a pair [a, b] or a list of pairs, got {value!r}")
 
 
-def listed(items: type, json_items: str, length: int | tuple[int, ...] | None = None) -> Kind:
-    """A list of ``items`` (float, int or str), optionally of a given length (or lengths)."""
+def listed(
+    items: type, json_items: str, length: int | tuple[int, ...] | None = None, *,
+    scalar: bool = False, unique: bool = False, count: tuple[int, int | None] | None = None,
+) -> Kind:  # fmt: skip
+    """A list of ``items`` (float, int or str), optionally of a given length (or lengths).
+
+    Each entry is checked against the field's choices and range. ``scalar``: one value
+    reads as a list of one; ``unique``: no value twice; ``count``: (least, most) entries.
+    """
     lengths = (length,) if isinstance(length, int) else length
     schema: dict[str, Any] = {"type": "array", "items": {"type": json_items}}
-    if lengths:
-        schema.update(minItems=min(lengths), maxItems=max(lengths))
+    low, high = (min(lengths), max(lengths)) if lengths else count or (None, None)
+    schema.update({k: v for k, v in (("minItems", low), ("maxItems", high)) if v is not None})
+    if unique:
+        schema["uniqueItems"] = True
 
     def read(t: Table, f: Field) -> Any:
-        return t.get_list(f.name, items, length=length)
+        raw, name = t.raw(f.name), f"{t.where}.{f.name}"
+        values = t.get_list(f.name, items, length=length) if not scalar or isinstance(
+            raw, list) else [t.get(f.name, items)]  # fmt: skip
+        if count is not None and not count[0] <= len(values) <= (count[1] or len(values)):
+            most = f"{count[0]} to {count[1]}" if count[1] else f"at least {count[0]}"
+            raise InputError(f"{name} = {raw!r} is invalid: allowed {most} entries")
+        ok = f.check()
+        for i, v in enumerate(values):
+            if f.choices is not None and v not in f.choices:
+                options = ", ".join(repr(c) for c in f.choices)
+                raise InputError(f"{name}[{i}] = {v!r} is not allowed; choose one of {options}")
+            if ok is not None and not ok(v):
+                raise InputError(f"{name}[{i}] = {v!r} is invalid: allowed {f.allowed_text()}")
+            if unique and v in values[:i]:
+                raise InputError(f"{name} has {v!r} twice: allowed distinct values")
+        return values
 
-    return Kind(f"list of {json_items}s", read, schema)
+    kind = Kind(f"list of {json_items}s", read, schema, entries=True)
+    return Kind(f"{json_items} or {kind.name}", read, {"oneOf": [{"type": json_items}, schema]},
+                entries=True) if scalar else kind  # fmt: skip
 
 
 NUMBER = Kind("number", _scalar(float), {"type": "number"})

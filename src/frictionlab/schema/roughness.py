@@ -166,62 +166,11 @@ _RESAMPLE = Kind(
 )
 CONTACT_MODELS = ("lattice", "elastic")
 
-
-def _models(t: Table, f: Field) -> tuple[str, ...]:
-    name = f"{t.where}.{f.name}"
-    raw = t.raw(f.name)
-    values = [raw] if isinstance(raw, str) else raw if isinstance(raw, list) else None
-    if (
-        not values
-        or not all(isinstance(v, str) and v in CONTACT_MODELS for v in values)
-        or len(set(values)) != len(values)
-    ):
-        raise InputError(
-            f"{name} = {raw!r} is invalid: allowed one of {CONTACT_MODELS} or a list of "
-            "distinct ones (a comparison)"
-        )
-    return tuple(values)
-
-
-def _pressures(t: Table, f: Field) -> tuple[float, ...]:
-    name = f"{t.where}.{f.name}"
-    raw = t.raw(f.name)
-    values = t.get_list(f.name, float) if isinstance(raw, list) else [t.get(f.name, float)]
-    if not values or len(values) > MAX_DIRECTIONS:
-        raise InputError(f"{name} must list 1 to {MAX_DIRECTIONS} pressures (Pa)")
-    bad = [v for v in values if not (math.isfinite(v) and v > 0.0)]
-    if bad:
-        raise InputError(f"{name} = {bad[0]!r} is invalid: allowed a positive value (Pa)")
-    if len(set(values)) != len(values):
-        raise InputError(f"{name} lists a pressure twice: allowed distinct pressures (Pa)")
-    return tuple(float(v) for v in values)
-
-
-_MODEL_JSON = {"type": "string", "enum": list(CONTACT_MODELS)}
-MODELS = Kind(
-    "model",
-    _models,
-    {
-        "oneOf": [
-            _MODEL_JSON,
-            {
-                "type": "array",
-                "items": _MODEL_JSON,
-                "minItems": 1,
-                "maxItems": 2,
-                "uniqueItems": True,
-            },
-        ]
-    },
-)
-PRESSURES = Kind("pressures", _pressures, {"oneOf": [
-    {"type": "number", "exclusiveMinimum": 0},
-    {"type": "array", "items": {"type": "number", "exclusiveMinimum": 0}, "minItems": 1},
-]})  # fmt: skip
 _SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
 SURFACE = Section("surface", (
     Field("kind", STRING, "surface kind", "", REQUIRED, choices=SURFACE_KINDS),
-    Field("angles_deg", listed(float, "number", (1, 2)), "rising, falling flank angles", "deg"),
+    Field("angles_deg", listed(float, "number", (1, 2)), "rising, falling flank angles", "deg",
+          low=0, high=90, open="both", allowed="0 < angle < 90 degrees"),
     Field("wavelength", NUMBER, "period of the wedges", "m", **_POS),
     Field("amplitude", NUMBER, "amplitude of the sinusoid", "m", **_POS),
     Field("wavelengths", listed(float, "number", (1, 2)), "one (1-D) or two (2-D) periods", "m"),
@@ -258,7 +207,8 @@ SURFACE = Section("surface", (
                     "rms_slope", "short_cutoff", "long_cutoff"),
     "file": ("path", "periodicity", "detrend", "fill_missing", "gradient", "format", "channel",
              "unit", Field("physical_sizes", _SIZES.kind, "scan size along x (and y), in "
-             "`unit` (files without sizes)", "unit", low=0, open="low"), "crop", "window",
+             "`unit` (files without sizes)", "unit", low=0, open="low",
+             allowed="sizes > 0 in `unit`"), "crop", "window",
              "short_cutoff", "long_cutoff", "allow_flattening", "resample"),
 }, required_by={
     "wedge": ("angles_deg", "wavelength"), "smooth_wedge": ("angles_deg", "wavelength"),
@@ -306,10 +256,11 @@ OUTPUT = Section("output", (
 ), "figures", "[output]")  # fmt: skip
 _E: dict[str, Any] = {"by": ElasticSettings}  # > 0 (hardness > pressure): ElasticSettings checks
 CONTACT = Section("contact", (
-    Field("model", MODELS, "load distribution: 'lattice' (the paper's springs), 'elastic' "
-          "(half-space, BEM) or both as a list (a comparison)", "", ("lattice",)),
-    Field("pressure", PRESSURES, "nominal mean pressure; a list gives a load sweep", "Pa",
-          None),
+    Field("model", listed(str, "string", scalar=True, unique=True, count=(1, 2)), "load "
+          "distribution: 'lattice' (the paper's springs), 'elastic' (half-space, BEM) or both "
+          "as a list (a comparison)", "", ("lattice",), choices=CONTACT_MODELS),
+    Field("pressure", listed(float, "number", scalar=True, unique=True, count=(1, MAX_DIRECTIONS)),
+          "nominal mean pressure; a list gives a load sweep", "Pa", None, **_POS),
     Field("modulus", NUMBER, "effective contact modulus E* (elastic)", "Pa", None, **_E),
     Field("hardness", NUMBER, "optional cap on the local pressure (elastic)", "Pa", None, **_E),
     Field("stiffness_per_area", NUMBER, "the lattice at a pressure: spring stiffness per "
@@ -358,7 +309,8 @@ HIERARCHY = Section("hierarchy", (
     _BETA,
 ), "hierarchical roughness: [lower]/[upper] are the outermost level", "[hierarchy]")  # fmt: skip
 MULTISCALE = Section("multiscale", (
-    Field("cutoffs", _NUMS, "band edges: wavelengths (any order, distinct)", "m", REQUIRED),
+    Field("cutoffs", listed(float, "number", unique=True, count=(1, None)), "band edges: "
+          "wavelengths (any order, distinct)", "m", REQUIRED, low=0, open="low"),
     Field("mu_passed", STRING, "mu passed between bands", "", "magnitude", choices=MU_PASSED),
     _BETA,
 ), "scale-resolved friction (sampled surfaces)", "[multiscale]")  # fmt: skip
@@ -535,8 +487,8 @@ def parse_roughness(
         plot_step_deg=output["plot_step_deg"], adhesion=adhesion, wear=wear,
         hierarchy=hierarchy, sources={k: v for k, v in notes.items() if k in ("lower", "upper")},
         warnings=tuple(notes.get("warnings", ())), multiscale=multiscale, contact=contact,
-        statistics=output["statistics"], models=given["model"],
-        pressures=given["pressure"] or (), stiffness_per_area=given["stiffness_per_area"],
+        statistics=output["statistics"], models=tuple(given["model"]),
+        pressures=tuple(given["pressure"] or ()), stiffness_per_area=given["stiffness_per_area"],
     )  # fmt: skip
 
 
@@ -629,13 +581,7 @@ def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:
 
 def _multiscale(data: Any, betas: np.ndarray) -> MultiscaleOptions:
     v = MULTISCALE.read(data)
-    cutoffs = v["cutoffs"]
-    if not cutoffs or any(not c > 0.0 for c in cutoffs):
-        raise InputError(f"[multiscale].cutoffs = {cutoffs} is invalid: allowed a non-empty list "
-                         "of wavelengths > 0 m")  # fmt: skip
-    ordered = tuple(sorted(cutoffs, reverse=True))
-    if len(set(ordered)) != len(ordered):
-        raise InputError(f"[multiscale].cutoffs = {cutoffs} is invalid: allowed distinct values")
+    ordered = tuple(sorted(v["cutoffs"], reverse=True))
     return MultiscaleOptions(ordered, _or(v["beta_deg"], betas), v["mu_passed"])
 
 
@@ -732,13 +678,8 @@ def _build(v: dict[str, Any], where: str, base_dir: Path, info: dict[str, Any]) 
     if kind == "flat":
         return generators.flat()
     if kind in ("wedge", "smooth_wedge"):
-        angles = v["angles_deg"]
-        if not all(0.0 < a < 90.0 for a in angles):
-            raise InputError(
-                f"{where}.angles_deg = {angles} is invalid: allowed 0 < angle < 90 degrees"
-            )
         make = generators.wedge if kind == "wedge" else generators.smooth_wedge
-        return make(angles, v["wavelength"])
+        return make(v["angles_deg"], v["wavelength"])
     if kind == "sinusoid":
         return generators.sinusoid(v["amplitude"], v["wavelengths"])
     if kind == "self_affine":
@@ -754,10 +695,6 @@ def _build(v: dict[str, Any], where: str, base_dir: Path, info: dict[str, Any]) 
         )  # fmt: skip
     path = Path(v["path"])
     sizes, crop = v["physical_sizes"], v["crop"]
-    if sizes is not None and any(not s > 0.0 for s in sizes):
-        raise InputError(
-            f"{where}.physical_sizes = {sizes} is invalid: allowed sizes > 0 in `unit`"
-        )
     prepared = read_prepared(
         path if path.is_absolute() else base_dir / path, periodicity=v["periodicity"],
         detrend=v["detrend"], fill_missing=v["fill_missing"], gradient=v["gradient"],

@@ -90,7 +90,8 @@ LAW = Section("law", (
     _law("recovery_form", "form of the recovery term", kind=STRING, choices=RECOVERY_FORMS),
     _law("open_recovery", "recovery while the contact is open", kind=STRING,
          choices=OPEN_RECOVERY),
-), "the subloading-friction law (SubloadingParams)", "[law]")  # fmt: skip
+), "the subloading-friction law (SubloadingParams)", "[law]",
+   exclusive=(("orthotropy_angle", "orthotropy_angle_deg"),))  # fmt: skip
 #: ``[law]`` keys (declaration order).
 LAW_KEYS = LAW.keys()
 _NEEDED = {"coulomb": ("mu_s", "mu_k")}
@@ -103,7 +104,19 @@ INITIAL = Section("initial", (
           [0.0, 0.0], by=InitialConditions, per_point=True),
     Field("F", NUMBERS, "initial size of the surface (default: the static value)", "",
           None, by=InitialConditions, per_point=True),
-), "the contact before the programme starts", "[initial]")  # fmt: skip
+), "the contact before the programme starts", "[initial]", by=InitialConditions)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class RunOptions:
+    """``[run]``: number of points, accuracy control, deepest substepping."""
+
+    n_points: int | None = None
+    accuracy: float | None = None
+    max_halvings: int = 10
+    peak_accuracy: float = 1e-4
+    allow_large: bool = False
+
 
 RUN = Section("run", (
     Field("n_points", INTEGER, "number of contact points (default: from the lists)", "", None,
@@ -115,7 +128,7 @@ RUN = Section("run", (
     Field("peak_accuracy", NUMBER, "relative accuracy of the reported peaks, refined between "
           "steps (0: the largest recorded step)", "", 1e-4, low=0, high=0.1),
     Field("allow_large", BOOL, "run past the memory/time estimate", "", False),
-), "how the run is made", "[run]")  # fmt: skip
+), "how the run is made", "[run]", by=RunOptions)  # fmt: skip
 
 #: The file formats of the history (``[output] format``).
 HISTORY_FORMATS = tuple(HISTORY_BYTES_PER_ROW)
@@ -124,8 +137,9 @@ OUTPUT = Section("output", (
     Field("every", INTEGER, "record every k-th step (default: every step while the history "
           "stays under 1 GB, else the smallest k that keeps it under, with a warning)", "",
           None, low=1),
-    Field("points", listed(int, "integer"), "the points recorded (1-based; default all)", "",
-          None),
+    Field("points", listed(int, "integer", unique=True, count=(1, None)), "the points recorded "
+          "(1-based; default all)", "", None, low=1, allowed="point numbers >= 1 (the first "
+          "point is 1)"),
     Field("format", STRING, "file format of the history: csv (history.csv, text) or parquet "
           "(history.parquet, binary columns with their units)", "", "csv",
           choices=HISTORY_FORMATS),
@@ -164,7 +178,7 @@ SEGMENT = Section("segment", (
 }, required_by={
     "slide": ("velocity",), "hold": ("duration",), "turn": ("angle_deg",),
     "cycle": ("amplitude", "velocity"), "table": ("file",),
-}, ref=True)  # fmt: skip
+}, ref=True, by=SEGMENT_KINDS)  # fmt: skip
 
 _M: dict[str, Any] = {"by": SpringSlider, "per_point": True}
 MACHINE = Section("machine", (
@@ -179,7 +193,8 @@ MACHINE = Section("machine", (
           open="low", per_point=True),
     Field("steps", INTEGER, "number of steps (default 1000)", "", None, low=1),
     Field("max_step", NUMBER, "largest step (instead of steps)", "s", None, low=0, open="low"),
-), "the stick-slip spring-slider (instead of [[program]])", "[machine]")  # fmt: skip
+), "the stick-slip spring-slider (instead of [[program]])", "[machine]",
+   exclusive=(("steps", "max_step"),), by=SpringSlider)  # fmt: skip
 
 SCENARIO_FILE = run_file("scenario", (
     Field("law", table=LAW, default=REQUIRED),
@@ -204,15 +219,17 @@ def parse_law_table(data: Any, where: str = "[law]") -> tuple[SubloadingParams, 
         if key not in given:
             raise InputError(f"missing required key {where}.{key} (surface '{surface}' needs "
                              f"{', '.join(needed)})")  # fmt: skip
-    values = dict(given)
-    if "orthotropy_angle_deg" in values:
-        if "orthotropy_angle" in values:
-            raise InputError(
-                f"{where}: give orthotropy_angle (rad) or orthotropy_angle_deg (deg), not both"
-            )
-        values["orthotropy_angle"] = np.radians(values.pop("orthotropy_angle_deg")).tolist()
+    values = radians(given)
     given.pop("surface", None)
     return reraise(where, lambda: SubloadingParams(**values)), given
+
+
+def radians(values: dict[str, Any]) -> dict[str, Any]:
+    """``values`` with ``orthotropy_angle_deg`` given as ``orthotropy_angle`` (rad)."""
+    if "orthotropy_angle_deg" not in values:
+        return dict(values)
+    deg = {k: v for k, v in values.items() if k != "orthotropy_angle_deg"}
+    return {**deg, "orthotropy_angle": np.radians(values["orthotropy_angle_deg"]).tolist()}
 
 
 def law_table(params: SubloadingParams) -> dict[str, Any]:
@@ -239,8 +256,7 @@ def parse_initial_table(
     data: Any, where: str = "[initial]"
 ) -> tuple[InitialConditions, dict[str, Any]]:
     """Validate an ``[initial]`` mapping -> (initial conditions, the values as given)."""
-    values = INITIAL.read(data, where)
-    return InitialConditions(**values), values
+    return INITIAL.build(data, where)
 
 
 def parse_program_tables(
@@ -255,17 +271,6 @@ def parse_program_tables(
         _parse_segment(TomlTable(t, f"{where} #{i + 1}"), Path(base_dir))
         for i, t in enumerate(tables)
     )
-
-
-@dataclass(frozen=True)
-class RunOptions:
-    """``[run]``: number of points, accuracy control, deepest substepping."""
-
-    n_points: int | None = None
-    accuracy: float | None = None
-    max_halvings: int = 10
-    peak_accuracy: float = 1e-4
-    allow_large: bool = False
 
 
 @dataclass(frozen=True)
@@ -303,18 +308,7 @@ class OutputOptions:
 
 def _parse_output(t: TomlTable | None) -> OutputOptions:
     values = OUTPUT.read({} if t is None else t, "[output]")
-    points = values["points"]
-    if points is not None:
-        if not points:
-            raise InputError("[output].points = [] is invalid: allowed at least one point number")
-        for i, v in enumerate(points):
-            if v < 1:
-                raise InputError(
-                    f"[output].points has {v}: allowed point numbers >= 1 (the first point is 1)"
-                )
-            if v in points[:i]:
-                raise InputError(f"[output].points has {v} twice: allowed each point once")
-        points = tuple(sorted(points))
+    points = values["points"] and tuple(sorted(values["points"]))
     every = values["every"]
     return OutputOptions(every or 1, points, values["format"], every is not None)
 
@@ -399,12 +393,8 @@ class MachineRun:
 
 
 def _parse_machine(t: TomlTable) -> tuple[MachineRun, dict[str, Any]]:
-    echo = MACHINE.read(t)
+    machine, echo = MACHINE.build(t, drop=("duration", "steps", "max_step"))
     duration, steps, max_step = echo["duration"], echo["steps"], echo["max_step"]
-    if steps is not None and max_step is not None:
-        raise InputError(f"{t.where}: give steps or max_step, not both")
-    kw = {k: v for k, v in echo.items() if k not in ("duration", "steps", "max_step")}
-    machine = reraise(t.where, lambda: SpringSlider(**kw))
     if np.any(np.asarray(duration, dtype=np.float64) <= 0):
         raise InputError(f"{t.where}.duration = {duration} is invalid: allowed a duration > 0 [s]")
     if steps is None and max_step is None:
@@ -516,7 +506,7 @@ def parse_scenario(
         raise InputError("[[program]] must hold at least one segment")
     params, law_given = parse_law_table(law, law.where)
     init, init_echo = parse_initial_table(initial, initial.where)
-    opts = RunOptions(**RUN.read({} if run is None else run, "[run]"))
+    opts, _ = RUN.build({} if run is None else run, "[run]")
     output = _parse_output(output_table)
     varying = _per_point("", law_given) + _per_point("", init_echo)
     program: Program | None = None
