@@ -21,7 +21,7 @@ from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.tribometer import ROLES, read_tribometer
-from frictionlab.schema.core import REQUIRED, Field, Section, load, run_file
+from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
 from frictionlab.schema.scenario import (
     INITIAL,
@@ -206,17 +206,14 @@ def _parse_data(t: Table, base: Path) -> tuple[Curve, dict[str, Any]]:
             f"{t.where}.program at {end:g} s (extend the programme or trim the data)"
         )
     weights = values["segment_weights"]
-    try:
-        curve = Curve(
-            name=Path(name).name,
-            time=measured.time if fitted else np.minimum(measured.time, end - offset),
-            friction_ratio=measured.friction_ratio, program=program, initial=init,
-            weight=values["weight"], slip=measured.slip, time_offset=offset,
-            segment_weights=None if weights is None else tuple(weights),
-            offset_bounds=None if bounds is None else (bounds[0], bounds[1]),
-        )  # fmt: skip
-    except ParameterError as exc:
-        raise ParameterError(f"{t.where}.{exc.field}", exc.value, exc.allowed) from None
+    curve = reraise(t.where, lambda: Curve(
+        name=Path(name).name,
+        time=measured.time if fitted else np.minimum(measured.time, end - offset),
+        friction_ratio=measured.friction_ratio, program=program, initial=init,
+        weight=values["weight"], slip=measured.slip, time_offset=offset,
+        segment_weights=None if weights is None else tuple(weights),
+        offset_bounds=None if bounds is None else (bounds[0], bounds[1]),
+    ))  # fmt: skip
     echo = {
         "file": name, "columns": measured.columns, "units": measured.units,
         "weight": values["weight"], "segment_weights": weights,

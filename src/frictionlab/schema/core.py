@@ -257,7 +257,7 @@ class Section:
 
     def build(
         self, data: Any, where: str | None = None, *, only_given: bool = False,
-        drop: tuple[str, ...] = (), **defaults: Any,
+        drop: tuple[str, ...] = (), error: type[Exception] = ParameterError, **defaults: Any,
     ) -> tuple[Any, dict[str, Any]]:  # fmt: skip
         """(the object of class ``by`` made from the table's values, the values read).
 
@@ -268,7 +268,7 @@ class Section:
         values = self.read(t, only_given=only_given)
         kw = {k: v for k, v in {**defaults, **values}.items() if k not in drop}
         cls = self.by[kw.pop("kind")] if self.variants is not None else self.by
-        return reraise(t.where, lambda: cls(**kw)), values
+        return reraise(t.where, lambda: cls(**kw), error), values
 
     def read_top(self, data: Any) -> tuple[Table, dict[str, Any]]:
         """The top table of an input file, checked (unknown keys refused), and its values."""
@@ -307,11 +307,14 @@ def run_file(name: str, fields: tuple[Field, ...], doc: str, where: str = "", **
     return Section(name, (TITLE, DESCRIPTION, *fields), doc, where, **kw)
 
 
-def reraise(where: str, call: Callable[[], Any]) -> Any:
-    """Run ``call``; re-raise a ParameterError with ``where`` in front of its field."""
+def reraise(where: str, call: Callable[[], Any], error: type[Exception] = ParameterError) -> Any:
+    """Run ``call``; re-raise a ParameterError with ``where`` in front of its field (as
+    an ``error``: ParameterError or InputError)."""
     try:
         return call()
     except ParameterError as exc:
+        if error is not ParameterError:
+            raise error(f"{where}.{exc}") from None
         raise ParameterError(f"{where}.{exc.field}", exc.value, exc.allowed) from None
 
 

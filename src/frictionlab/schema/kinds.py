@@ -16,7 +16,10 @@ from frictionlab.io.config import Table, coerce
 if TYPE_CHECKING:
     from frictionlab.schema.core import Field
 
-__all__ = ["BOOL", "DEFS", "INTEGER", "NUMBER", "NUMBERS", "PAIRS", "STRING", "Kind", "listed"]
+__all__ = [
+    "BOOL", "DEFS", "INTEGER", "NUMBER", "NUMBERS", "PAIRS", "STRING", "Kind", "choice", "either",
+    "listed",
+]  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -87,15 +90,17 @@ def listed(
         values = t.get_list(f.name, items, length=length) if not scalar or isinstance(
             raw, list) else [t.get(f.name, items)]  # fmt: skip
         if count is not None and not count[0] <= len(values) <= (count[1] or len(values)):
-            most = f"{count[0]} to {count[1]}" if count[1] else f"at least {count[0]}"
-            raise InputError(f"{name} = {raw!r} is invalid: allowed {most} entries")
+            most = f"{count[0]} to {count[1]}" if count[1] else f"{count[0]} or more"
+            what = "is empty" if not values else f"= {raw!r} is invalid"
+            raise InputError(f"{name} {what}: allowed {most} entries")
         ok = f.check()
         for i, v in enumerate(values):
+            at = f"{name}[{i}]" if isinstance(raw, list) else name
             if f.choices is not None and v not in f.choices:
                 options = ", ".join(repr(c) for c in f.choices)
-                raise InputError(f"{name}[{i}] = {v!r} is not allowed; choose one of {options}")
+                raise InputError(f"{at} = {v!r} is not allowed; choose one of {options}")
             if ok is not None and not ok(v):
-                raise InputError(f"{name}[{i}] = {v!r} is invalid: allowed {f.allowed_text()}")
+                raise InputError(f"{at} = {v!r} is invalid: allowed {f.allowed_text()}")
             if unique and v in values[:i]:
                 raise InputError(f"{name} has {v!r} twice: allowed distinct values")
         return values
@@ -103,6 +108,31 @@ def listed(
     kind = Kind(f"list of {json_items}s", read, schema, entries=True)
     return Kind(f"{json_items} or {kind.name}", read, {"oneOf": [{"type": json_items}, schema]},
                 entries=True) if scalar else kind  # fmt: skip
+
+
+def either(*kinds: Kind) -> Kind:
+    """A value of one of ``kinds``: the one whose JSON type is the value's (else the last)."""
+
+    def read(t: Table, f: Field) -> Any:
+        raw = t.raw(f.name)
+        kind = "string" if isinstance(raw, str) else "array" if isinstance(raw, list) else None
+        chosen = next((k for k in kinds if k.json.get("type") == kind), kinds[-1])
+        try:
+            return chosen.read(t, f)
+        except InputError:
+            if kind != "string" or chosen is kinds[-1]:  # a string not among the choices
+                raise
+        unit = f" ({f.unit})" if f.unit else ""
+        raise InputError(f"{t.where}.{f.name} = {raw!r} is invalid: allowed {name}{unit}")
+
+    name = " or ".join(k.name for k in kinds)
+    return Kind(name, read, {"oneOf": [dict(k.json) for k in kinds]})
+
+
+def choice(*values: str) -> Kind:
+    """One of the strings ``values``."""
+    read = lambda t, f: t.get(f.name, str, choices=values)  # noqa: E731
+    return Kind(" | ".join(map(repr, values)), read, {"type": "string", "enum": list(values)})
 
 
 NUMBER = Kind("number", _scalar(float), {"type": "number"})

@@ -47,8 +47,8 @@ from frictionlab.roughness.topography import (
     read_prepared,
 )
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
-from frictionlab.schema.core import REQUIRED, TITLE, Field, Section, load
-from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
+from frictionlab.schema.core import REQUIRED, TITLE, Field, Section, load, reraise
+from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, choice, either, listed
 
 __all__ = [
     "ROUGHNESS_FILE", "SURFACE", "SURFACE_KINDS", "AdhesionOptions", "HierarchyOptions",
@@ -78,92 +78,38 @@ def _on_invalid(section: str, value: str, notes: dict[str, Any]) -> str:
     return value
 
 
-def _range(t: Table, name: str, last: str) -> tuple[float, float, Any]:
-    rng = Table(t.raw(name), f"{t.where}.{name}")
-    start, stop = rng.get("start", float), rng.get("stop", float)
-    if last == "step":
-        end = rng.get("step", float, check=lambda v: v > 0.0, allowed="step > 0")
-    else:
-        end = rng.get("count", int, check=lambda v: v >= 1, allowed="count >= 1 load")
-    rng.finish()
-    return start, stop, end
+def _spread(end: Field, what: str) -> Kind:
+    """Values as a list (directions: or one number) or as a table {start, stop, ``last``}
+    (``step`` or ``count``), at most MAX_DIRECTIONS of them."""
+    last = end.name
+    many = listed(float, "number", scalar=last == "step", count=(1, MAX_DIRECTIONS))
+    ends = (Field("start", NUMBER, default=REQUIRED), Field("stop", NUMBER, default=REQUIRED))
+    rng = Section("range", (*ends, end))
 
-
-def _directions(t: Table, f: Field) -> np.ndarray:
-    raw, name = t.raw(f.name), f"{t.where}.{f.name}"
-    if isinstance(raw, dict):
-        start, stop, step = _range(t, f.name, "step")
+    def read(t: Table, f: Field) -> np.ndarray:
+        name = f"{t.where}.{f.name}"
+        if not isinstance(t.raw(f.name), dict):
+            return np.array(many.read(t, f), dtype=np.float64)
+        v = rng.read(t.raw(f.name), name)
+        start, stop, by = v["start"], v["stop"], v[last]
+        if last == "count" and by == 1 and start != stop:
+            raise InputError(f"{name}: count = 1 needs start == stop")
+        if last == "count":
+            return np.linspace(start, stop, by)
         if stop < start:
             raise InputError(f"{name}: stop = {stop:g} is below start = {start:g}")
-        count = math.floor((stop - start) / step * (1.0 + 1e-12) + 1e-9) + 1
+        count = math.floor((stop - start) / by * (1.0 + 1e-12) + 1e-9) + 1
         if count > MAX_DIRECTIONS:
-            raise InputError(f"{name} has {count} directions: allowed at most {MAX_DIRECTIONS}")
-        return start + step * np.arange(count)
-    if isinstance(raw, list):
-        values = t.get_list(f.name, float)
-        if not values or len(values) > MAX_DIRECTIONS:
-            raise InputError(f"{name} must list 1 to {MAX_DIRECTIONS} directions")
-        return np.array(values, dtype=np.float64)
-    return np.array([t.get(f.name, float)], dtype=np.float64)
+            raise InputError(f"{name} has {count} {what}: allowed at most {MAX_DIRECTIONS}")
+        return start + by * np.arange(count)
+
+    return Kind(what, read, {"oneOf": [*many.json.get("oneOf", [many.json]), rng.schema()]})
 
 
-def _loads(t: Table, f: Field) -> np.ndarray:
-    name = f"{t.where}.{f.name}"
-    if isinstance(t.raw(f.name), dict):
-        start, stop, count = _range(t, f.name, "count")
-        if count == 1 and start != stop:
-            raise InputError(f"{name}: count = 1 needs start == stop")
-        loads = np.linspace(start, stop, count)
-    else:
-        loads = np.array(t.get_list(f.name, float), dtype=np.float64)
-        if loads.size == 0:
-            raise InputError(
-                f"{name} is empty: allowed a sweep of at least one load (N per spring)"
-            )
-    if loads.size > MAX_DIRECTIONS:
-        raise InputError(f"{name} has {loads.size} loads: allowed at most {MAX_DIRECTIONS}")
-    return loads
-
-
-def _either(*kinds: Kind) -> Kind:
-    """A value of one of ``kinds``: the one whose JSON type is the value's (else the last)."""
-
-    def read(t: Table, f: Field) -> Any:
-        raw = t.raw(f.name)
-        kind = "string" if isinstance(raw, str) else "array" if isinstance(raw, list) else None
-        return next((k for k in kinds if k.json.get("type") == kind), kinds[-1]).read(t, f)
-
-    return Kind(" or ".join(k.name for k in kinds), read, {"oneOf": [dict(k.json) for k in kinds]})
-
-
-def _full(t: Table, f: Field) -> str:
-    if t.raw(f.name) != "full":
-        raise InputError(f"{t.where}.{f.name} = {t.raw(f.name)!r} is invalid: allowed 'full' or a "
-                         "number (N)")  # fmt: skip
-    return "full"
-
-
-def _range_json(last: str, kind: str) -> dict[str, Any]:
-    return {"type": "object", "additionalProperties": False, "required": ["start", "stop", last],
-            "properties": {"start": {"type": "number"}, "stop": {"type": "number"},
-                           last: {"type": kind}}}  # fmt: skip
-
-
-_NUMS = listed(float, "number")
-DIRECTIONS = Kind(
-    "directions",
-    _directions,
-    {"oneOf": [{"type": "number"}, _NUMS.json, _range_json("step", "number")]},
-)
-LOADS = Kind("loads", _loads, {"oneOf": [_NUMS.json, _range_json("count", "integer")]})
-_FULL = Kind("'full'", _full, {"type": "string", "enum": ["full"]})
+DIRECTIONS = _spread(Field("step", NUMBER, default=REQUIRED, low=0, open="low"), "directions")
+LOADS = _spread(Field("count", INTEGER, default=REQUIRED, low=1), "loads")
 _BETA = Field("beta_deg", DIRECTIONS, "directions (default: [sliding].beta_deg)", "deg")
 _POS: dict[str, Any] = {"low": 0.0, "open": "low", "allowed": "a positive value (SI units)"}
-_RESAMPLE = Kind(
-    "mode",
-    lambda t, f: t.get(f.name, str, choices=RESAMPLE_MODES),
-    {"type": "string", "enum": list(RESAMPLE_MODES)},
-)
 CONTACT_MODELS = ("lattice", "elastic")
 
 _SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
@@ -196,7 +142,7 @@ SURFACE = Section("surface", (
     Field("window", STRING, "window applied before filtering (e.g. hann)", "", None),
     Field("allow_flattening", BOOL, "accept a preparation keeping < 1 % of the rms height or "
           "slope", "", False),
-    Field("resample", _either(_RESAMPLE, INTEGER),
+    Field("resample", either(choice(*RESAMPLE_MODES), INTEGER),
           "non-uniform line scans: median | finest | a number of points", "", None),
 ), "one rough surface", variants={
     "flat": (),
@@ -220,8 +166,8 @@ _L: dict[str, Any] = {"by": LatticeSettings}
 SLIDING = Section("sliding", (
     Field("beta_deg", DIRECTIONS, "sliding directions: one value, a list or {start, stop, "
           "step}", "deg", REQUIRED),
-    Field("load", _either(_FULL, NUMBER), "'full' contact or the mean force per spring", "N",
-          "full", **_L),
+    Field("load", either(choice("full"), NUMBER), "'full' contact or the mean force per "
+          "spring", "N", "full", **_L),
     Field("control", STRING, "what is held: the load or the separation", "", "load",
           choices=CONTROLS, **_L),
     Field("separation", NUMBER, "separation c (control = separation)", "m", **_L),
@@ -231,14 +177,13 @@ SLIDING = Section("sliding", (
           choices=tuple(ON_INVALID_KEYS)),
 ), "how the upper surface slides", "[sliding]")  # fmt: skip
 LATTICE = Section("lattice", (
-    Field("stations", _either(listed(int, "integer", (1, 2)), INTEGER), "lattice stations "
+    Field("stations", either(listed(int, "integer", (1, 2)), INTEGER), "lattice stations "
           "(or [nx, ny])", **_L),
     Field("time_samples", INTEGER, "time samples of the travel", **_L),
     Field("max_return_periods", INTEGER, "most periods travelled before the return", **_L),
     Field("k_c", NUMBER, "spring stiffness in compression", "N/m", **_L),
     Field("k_t", NUMBER, "spring stiffness in tension", "N/m", **_L),
-    Field("travel", _either(Kind("mode", lambda t, f: t.get(f.name, str, choices=TRAVEL_MODES),
-                                 {"type": "string", "enum": list(TRAVEL_MODES)}), NUMBER),
+    Field("travel", either(choice(*TRAVEL_MODES), NUMBER),
           "auto | return | ergodic | a length", "m", **_L),
     Field("mu_definition", STRING, "mu as magnitude or projection", choices=MU_DEFINITIONS, **_L),
     Field("engine", STRING, "kernel engine", choices=ENGINES, **_L),
@@ -260,7 +205,8 @@ CONTACT = Section("contact", (
           "distribution: 'lattice' (the paper's springs), 'elastic' (half-space, BEM) or both "
           "as a list (a comparison)", "", ("lattice",), choices=CONTACT_MODELS),
     Field("pressure", listed(float, "number", scalar=True, unique=True, count=(1, MAX_DIRECTIONS)),
-          "nominal mean pressure; a list gives a load sweep", "Pa", None, **_POS),
+          "nominal mean pressure; a list gives a load sweep", "Pa", None,
+          **{**_POS, "allowed": "a positive value (Pa)"}),
     Field("modulus", NUMBER, "effective contact modulus E* (elastic)", "Pa", None, **_E),
     Field("hardness", NUMBER, "optional cap on the local pressure (elastic)", "Pa", None, **_E),
     Field("stiffness_per_area", NUMBER, "the lattice at a pressure: spring stiffness per "
@@ -287,7 +233,7 @@ WEAR = Section("wear", (
     Field("samples", INTEGER, "times from 0 to T_w", "", 21, low=2),
     Field("method", STRING, "how the worn polar is computed", "", "auto", choices=WEAR_METHODS),
     _BETA,
-), "Archard wear, mu(t) (Eqs 23-28w)", "[wear]")  # fmt: skip
+), "Archard wear, mu(t) (Eqs 23-28w)", "[wear]", by=WearSettings)  # fmt: skip
 LEVEL = Section(
     "level",
     (
@@ -507,14 +453,11 @@ def _contact(v: dict[str, Any], settings: LatticeSettings) -> ElasticSettings | 
     for key in ("pressure", "modulus"):
         if v[key] is None:
             raise InputError(f"[contact].{key} is missing: required with model = 'elastic'")
-    try:
-        return ElasticSettings(
-            pressure=v["pressure"][0], modulus=v["modulus"], hardness=v["hardness"],
-            stations=settings.stations, mu_definition=settings.mu_definition,
-            on_invalid=settings.on_invalid,
-        )  # fmt: skip
-    except ParameterError as exc:
-        raise InputError(f"[contact].{exc}") from None
+    return reraise("[contact]", lambda: ElasticSettings(
+        pressure=v["pressure"][0], modulus=v["modulus"], hardness=v["hardness"],
+        stations=settings.stations, mu_definition=settings.mu_definition,
+        on_invalid=settings.on_invalid,
+    ), InputError)  # fmt: skip
 
 
 def _lattice_pressure(
@@ -607,13 +550,7 @@ def _adhesion(data: Any, betas: np.ndarray, settings: LatticeSettings) -> Adhesi
 
 
 def _wear(data: Any, betas: np.ndarray) -> WearOptions:
-    v = WEAR.read(data)
-    values = {k: v[k] for k in ("wear_coefficient", "hardness", "normal_load", "velocity",
-                                "nominal_area", "surfaces")}  # fmt: skip
-    try:
-        settings = WearSettings(**values)
-    except ParameterError as exc:
-        raise InputError(f"[wear].{exc}") from None
+    settings, v = WEAR.build(data, drop=("samples", "method", "beta_deg"), error=InputError)
     return WearOptions(settings, v["samples"], v["method"], _or(v["beta_deg"], betas))
 
 
@@ -663,10 +600,7 @@ def _surface(data: Any, where: str, base_dir: Path, notes: dict[str, Any], side:
     ``notes["warnings"]``."""
     v = SURFACE.read(data, where)
     info: dict[str, Any] = {"kind": v["kind"]}
-    try:
-        surface = _build(v, where, base_dir, info)
-    except ParameterError as exc:
-        raise InputError(f"{where}.{exc}") from None
+    surface = reraise(where, lambda: _build(v, where, base_dir, info), InputError)
     for text in info.pop("warnings", ()):
         notes.setdefault("warnings", []).append(f"{where}: {text}")
     notes[side] = info
