@@ -103,10 +103,16 @@ def key_table(address: str) -> str:
     return "\n".join(rows) + "\n"
 
 
+_NESTED = re.compile(r'"(properties|allOf|then|\$defs)"')
+
+
 def _dump(obj: Any, indent: int = 0) -> str:
-    """JSON with one line per value that fits in 96 characters (diffs stay readable)."""
+    """JSON with one line per key's schema (a schema holding no sub-table) or per value
+    that fits in 96 characters: one line changes with one key."""
     flat = json.dumps(obj)
     if len(flat) + indent <= 96 or not isinstance(obj, dict | list) or not obj:
+        return flat
+    if isinstance(obj, dict) and "description" in obj and not _NESTED.search(flat):
         return flat
     pad = " " * (indent + 2)
     if isinstance(obj, dict):
