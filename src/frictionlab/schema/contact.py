@@ -79,7 +79,8 @@ NORMAL = Section("normal", (
           "displacement); N/m in 2-D, N in 3-D", "N/m or N", None, **_N),
     Field("duration", NUMBER, "duration of the normal stage", "s", 1.0, **_N),
     Field("steps", INTEGER, "steps of the normal stage", "", 5, **_N),
-), "the normal stage", "[normal]", by=NormalLoad)  # fmt: skip
+), "the normal stage", "[normal]", by=NormalLoad,
+   one_of=(("pressure", "displacement", "force"),))  # fmt: skip
 _SEG_CLASSES = {"slide": Slide, "reverse": Reverse, "hold": Hold, "traction": Traction}
 SEGMENT = Section("contact_segment", (
     Field("kind", STRING, "segment kind", "", REQUIRED, choices=tuple(_SEG_CLASSES)),
@@ -98,7 +99,8 @@ SEGMENT = Section("contact_segment", (
     "hold": ("duration", Field("steps", INTEGER, "number of steps", "", 5, by=Hold)),
     "traction": ("target", "duration", "steps", "direction_deg", "cycles"),
 }, required_by={"slide": ("velocity",), "hold": ("duration",),
-                "traction": ("target", "duration")}, ref=True, by=_SEG_CLASSES)  # fmt: skip
+                "traction": ("target", "duration")}, ref=True, by=_SEG_CLASSES,
+   one_of=(("distance", "duration"),))  # fmt: skip
 _S: dict[str, Any] = {"by": SolverOptions}
 SOLVER = Section("solver", (
     Field("tolerance", NUMBER, "relative residual norm for convergence", "", 1e-10, **_S),
@@ -190,13 +192,6 @@ class ContactScenario:
     fields: bool = False
     mesh: MeshSource | None = None
     law_field: LawField = field(default_factory=LawField)
-
-
-def _segment(data: Any) -> tuple[Segment, dict[str, Any]]:
-    v = SEGMENT.read(data)
-    if v["kind"] == "slide" and (v["distance"] is None) == (v["duration"] is None):
-        raise InputError(f"{data.where}: a slide needs exactly one of distance [m] or duration [s]")
-    return SEGMENT.build(data)
 
 
 _BOX_KEYS = ("width", "height", "element_size")
@@ -406,21 +401,6 @@ def _law_field(
     return LawField(tuple(tables), tuple(regions)), echo
 
 
-def _normal(t: Any) -> tuple[NormalLoad, dict[str, Any]]:
-    echo = NORMAL.read(t)
-    given = [k for k in ("pressure", "displacement", "force") if echo[k] is not None]
-    if not given:
-        raise InputError(
-            "missing required key [normal].pressure (or [normal].displacement, [normal].force)"
-        )
-    if len(given) > 1:
-        raise InputError(
-            "[normal]: give exactly one of pressure [Pa], displacement [m] or force "
-            f"[N/m in 2-D, N in 3-D], not {' and '.join(given)}"
-        )
-    return NORMAL.build(t)
-
-
 def _check_load(
     law: dict[str, Any], block: Block, params: SubloadingParams | Frictionless, normal: Any
 ) -> None:
@@ -477,8 +457,8 @@ def parse_contact(
     reraise("[base]", lambda: base.check_dim(block.dim))
     params, law_echo = _law(law_t.mapping())
     law_field, field_echo = _law_field(root, params, block.dim, Path(base_dir), law_t, mesh)
-    normal, normal_echo = _normal(normal_t)
-    parsed = [_segment(t) for t in program_ts]
+    normal, normal_echo = NORMAL.build(normal_t)
+    parsed = [SEGMENT.build(t) for t in program_ts]
     program = tuple(seg for seg, _ in parsed)
     options, solver_echo = SOLVER.build(root.raw("solver", {}), "[solver]", drop=("drive",))
     drive = solver_echo["drive"]

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
+import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -176,8 +177,9 @@ class Section:
     ``where`` is how messages name the table (``[law]``); ``variants`` maps the value of
     the ``kind`` field to the names of the fields that kind allows (tagged tables such as
     programme segments); ``required_by`` maps a kind to its required field names;
-    ``exclusive`` lists pairs of keys given at most one at a time; ``by`` is the class
-    :meth:`build` makes (for a tagged table, a mapping kind -> class).
+    ``exclusive`` lists pairs of keys given at most one at a time, ``one_of`` groups of
+    keys given exactly one at a time (for a tagged table, in the kinds that allow them
+    all); ``by`` is the class :meth:`build` makes (tagged tables: a mapping kind -> class).
     """
 
     name: str
@@ -187,6 +189,7 @@ class Section:
     variants: Mapping[str, tuple[str | Field, ...]] | None = None
     required_by: Mapping[str, tuple[str, ...]] | None = None
     exclusive: tuple[tuple[str, str], ...] = ()  # pairs of keys that exclude each other
+    one_of: tuple[tuple[str, ...], ...] = ()  # groups of keys, exactly one given
     by: Any = None  # the class built from the values (tagged tables: kind -> class)
     extra: Mapping[str, Any] | None = None  # more JSON Schema (oneOf, ...)
     ref: bool = False  # written once under $defs/<name> of the generated schema
@@ -246,14 +249,31 @@ class Section:
                 raise InputError(f"missing required key {t.where}.{f.name}")
             elif not only_given:
                 out[f.name] = None if f.default is OMIT else f.default
+        at = f"{t.where}: " if t.where else ""
         for a, b in self.exclusive:
             if a in t and b in t:
-                raise InputError(f"{t.where}: give {self._unit(a)} or {self._unit(b)}, not both")
+                raise InputError(f"{at}give {self._name(a, t)} or {self._name(b, t)}, not both")
+        for group in self._one_of(kind):
+            given = [k for k in group if k in t]
+            if len(given) != 1:
+                names = [self._name(k, t) for k in group]
+                both = ", not both" if len(group) == 2 else f", not {' and '.join(given)}"
+                extra = both if given else ""
+                listed = f"{', '.join(names[:-1])} or {names[-1]}"
+                raise InputError(f"{at}give exactly one of {listed}{extra}")
         return out
 
-    def _unit(self, key: str) -> str:
-        unit = self[key].unit
-        return f"{key} ({unit})" if unit else key
+    def _one_of(self, kind: str | None) -> tuple[tuple[str, ...], ...]:
+        keys = self.keys(kind)
+        return tuple(g for g in self.one_of if all(k in keys for k in g))
+
+    def _name(self, key: str, t: Table) -> str:
+        """How a message names a key: ``key (unit)``, or ``[table]``/``[[tables]]``."""
+        f, where = self[key], re.fullmatch(r"\[([\w.]+)\]", t.where)
+        if f.table is not None:
+            name = f"{where[1]}.{key}" if where else key
+            return f"[[{name}]]" if f.many else f"[{name}]"
+        return f"{key} ({f.unit})" if f.unit else key
 
     def build(
         self, data: Any, where: str | None = None, *, only_given: bool = False,
@@ -284,6 +304,8 @@ class Section:
         if required:
             out["required"] = required
         out["properties"] = {f.name: f.schema() for f in self.fields}
+        if self.variants is None and (rules := self._rules(self.keys())):
+            out["allOf"] = rules
         if self.variants is not None:
             out["allOf"] = [self._rule(k) for k in self.variants]
             for k in self.variants:  # a key declared again by a kind: either declaration
@@ -292,10 +314,18 @@ class Section:
         out.update(self.extra or {})
         return out
 
+    def _rules(self, keys: tuple[str, ...]) -> list[dict[str, Any]]:
+        """JSON Schema of the cross-key rules on ``keys``."""
+        out = [{"not": {"required": list(p)}} for p in self.exclusive if set(p) <= set(keys)]
+        groups = (g for g in self.one_of if set(g) <= set(keys))
+        return out + [{"oneOf": [{"required": [k]} for k in g]} for g in groups]
+
     def _rule(self, kind: str) -> dict[str, Any]:
         then: dict[str, Any] = {"propertyNames": {"enum": list(self.keys(kind))}}
         if self.required_by and kind in self.required_by:
             then["required"] = list(self.required_by[kind])
+        if self._one_of(kind):
+            then["allOf"] = self._rules(self.keys(kind))
         own = {f.name: f.schema() for f in self.variants[kind] if isinstance(f, Field)}  # type: ignore[index]
         if own:
             then["properties"] = own

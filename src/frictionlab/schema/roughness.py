@@ -253,7 +253,8 @@ HIERARCHY = Section("hierarchy", (
     Field("samples_per_level", INTEGER, "hierarchy with [wear]: times per level window", "",
           11, low=2),
     _BETA,
-), "hierarchical roughness: [lower]/[upper] are the outermost level", "[hierarchy]")  # fmt: skip
+), "hierarchical roughness: [lower]/[upper] are the outermost level", "[hierarchy]",
+   one_of=(("levels", "inner"), ("ratio", "inner")))  # fmt: skip
 MULTISCALE = Section("multiscale", (
     Field("cutoffs", listed(float, "number", unique=True, count=(1, None)), "band edges: "
           "wavelengths (any order, distinct)", "m", REQUIRED, low=0, open="low"),
@@ -564,17 +565,8 @@ def _hierarchy(
 ) -> HierarchyOptions:
     v = HIERARCHY.read(table)
     v["on_invalid"] = _on_invalid("hierarchy", v["on_invalid"], notes)
-    has_inner = "inner" in table
-    if has_inner == (v["levels"] is not None or v["ratio"] is not None):
-        raise InputError(
-            f"{table.where} needs either levels and ratio (self-similar, Eq 28) or "
-            "[[hierarchy.inner]] tables, not both"
-        )
     try:
-        if not has_inner:
-            if v["levels"] is None or v["ratio"] is None:
-                missing = "levels" if v["levels"] is None else "ratio"
-                raise InputError(f"missing required key {table.where}.{missing}")
+        if "inner" not in table:
             levels = self_similar_levels(lower, upper, v["levels"], v["ratio"])
         else:
             raw = table.raw("inner")

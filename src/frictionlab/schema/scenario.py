@@ -178,7 +178,7 @@ SEGMENT = Section("segment", (
 }, required_by={
     "slide": ("velocity",), "hold": ("duration",), "turn": ("angle_deg",),
     "cycle": ("amplitude", "velocity"), "table": ("file",),
-}, ref=True, by=SEGMENT_KINDS)  # fmt: skip
+}, ref=True, by=SEGMENT_KINDS, one_of=(("traction", "magnitude"),))  # fmt: skip
 
 _M: dict[str, Any] = {"by": SpringSlider, "per_point": True}
 MACHINE = Section("machine", (
@@ -205,8 +205,7 @@ SCENARIO_FILE = run_file("scenario", (
     Field("machine", table=MACHINE),
 ), "A scenario file of `frictionlab simulate`: [law], [initial], optional [run] and [output], "
    "then [[program]] segments or a [machine]. Numbers may be lists, one value per contact "
-   "point. SI units.", "",
-   extra={"oneOf": [{"required": ["program"]}, {"required": ["machine"]}]})  # fmt: skip
+   "point. SI units.", "", one_of=(("program", "machine"),))  # fmt: skip
 
 
 # --------------------------------------------------------------------------- sections
@@ -318,19 +317,13 @@ def _parse_segment(t: TomlTable, base_dir: Path) -> Any:
     kind = kwargs.pop("kind")
     if kind == "table":
         return _parse_table_segment(t, kwargs, base_dir)
-    if kind == "traction":
-        if ("traction" in kwargs) == ("magnitude" in kwargs):
-            raise InputError(
-                f"{t.where} (kind = 'traction') needs exactly one of traction = [f_t1, f_t2] "
-                "or magnitude (with direction_deg)"
-            )
-        if "magnitude" in kwargs:
-            magnitude = np.asarray(kwargs.pop("magnitude"))
-            angle = np.radians(np.asarray(kwargs.pop("direction_deg", 0.0)))
-            vec = np.stack(
-                np.broadcast_arrays(magnitude * np.cos(angle), magnitude * np.sin(angle)), axis=-1
-            )
-            kwargs["traction"] = vec.tolist()
+    if kind == "traction" and "magnitude" in kwargs:
+        magnitude = np.asarray(kwargs.pop("magnitude"))
+        angle = np.radians(np.asarray(kwargs.pop("direction_deg", 0.0)))
+        vec = np.stack(
+            np.broadcast_arrays(magnitude * np.cos(angle), magnitude * np.sin(angle)), axis=-1
+        )
+        kwargs["traction"] = vec.tolist()
     cls = SEGMENT_KINDS[kind]
     return reraise(t.where, lambda: cls(**{"steps": None, "max_step": None, **kwargs}))
 
@@ -498,10 +491,6 @@ def parse_scenario(
     has_program = "program" in root
     program_tables = root.tables("program") if has_program else []
     assert law is not None and initial is not None
-    if has_program == (machine_table is not None):
-        raise InputError(
-            "a scenario needs exactly one of [[program]] (segments) or [machine] (spring-slider)"
-        )
     if has_program and not program_tables:
         raise InputError("[[program]] must hold at least one segment")
     params, law_given = parse_law_table(law, law.where)

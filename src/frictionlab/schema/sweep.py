@@ -42,7 +42,7 @@ SWEEP_FILE = Section("sweep", (
           '("a.x+b.y" links keys as in [grid])',
           json={"type": "array", "minItems": 1, "items": {"type": "object", "minProperties": 1}}),
 ), "A sweep file of `frictionlab sweep`: a base scenario and a [grid] or [[case]] tables "
-   "of overrides.", extra={"oneOf": [{"required": ["grid"]}, {"required": ["case"]}]})  # fmt: skip
+   "of overrides.", one_of=(("grid", "case"),))  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -70,8 +70,6 @@ def parse_sweep(
         SWEEP_FILE.table(dict(data), "")  # an unknown key first
         raise InputError('base must name the base scenario file, e.g. base = "scenario.toml"')
     values = SWEEP_FILE.read(dict(data), "")
-    if ("grid" in data) == ("case" in data):
-        raise InputError("a sweep file needs exactly one of [grid] or [[case]] tables")
     if "grid" in data:
         grid = _grid(data["grid"])
         keys = tuple(grid)
