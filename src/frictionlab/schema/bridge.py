@@ -20,7 +20,7 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.schema.core import Field, Section, load
 from frictionlab.schema.kinds import INTEGER, NUMBER, STRING, listed
 from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, parse_roughness
-from frictionlab.schema.scenario import LAW, parse_law_table
+from frictionlab.schema.scenario import LAW, parse_law_table, per_point
 from frictionlab.subloading import SubloadingParams, initial_state
 
 __all__ = ["BRIDGE_FILE", "BridgeOptions", "BridgeScenario", "load_bridge", "parse_bridge"]
@@ -124,13 +124,10 @@ def parse_bridge(
                         "to hold it"
                     )
     law, given = parse_law_table(law_data)
-    for key, value in given.items():
-        pair = key in ("rotation", "orthotropy")
-        if isinstance(value, list) and (not pair or isinstance(value[0], list)):
-            raise InputError(
-                f"[law].{key} = {value} gives values per point: the bridge fits one law, "
-                "give one value"
-            )
+    if varying := per_point(given):
+        _, key, value = varying[0]
+        raise InputError(f"[law].{key} = {value} gives values per point: the bridge fits one "
+                         "law, give one value")  # fmt: skip
     try:
         steady_coefficient(law, None, options.normal_traction)
     except ParameterError as exc:

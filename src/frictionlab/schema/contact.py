@@ -32,7 +32,7 @@ from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
 from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, PAIRS, STRING, listed
-from frictionlab.schema.scenario import LAW, parse_law_table, radians
+from frictionlab.schema.scenario import LAW, parse_law_table, per_point, radians
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
 
 __all__ = [
@@ -406,12 +406,7 @@ def _check_load(
 ) -> None:
     """Refuse, naming the key, a per-point law and a normal load no linear block can take."""
     if isinstance(params, SubloadingParams) and params.per_point:
-        pairs = ("rotation", "orthotropy")  # one pair each, or per-point pairs
-        key = next(
-            (k for k, v in law.items()
-             if isinstance(v, list) and (k not in pairs or (v and isinstance(v[0], list)))),
-            "law",
-        )  # fmt: skip
+        key = next((k for _, k, _ in per_point(law)), "law")
         raise InputError(
             f"[law].{key} = {law.get(key)} is invalid: allowed one value (the contact model "
             "has one interface law; per-point lists are for simulate)"

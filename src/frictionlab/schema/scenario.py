@@ -457,13 +457,11 @@ def _labels(n: int, varying: list[tuple[str, str, list[Any]]]) -> tuple[str, ...
 _PAIR_KEYS = ("rotation", "orthotropy", "tangential_traction", "traction")
 
 
-def _per_point(prefix: str, values: dict[str, Any]) -> list[tuple[str, str, list[Any]]]:
-    """The inputs given per point: lists of numbers, or lists of pairs for vector keys."""
-    found = []
-    for key, v in values.items():
-        if isinstance(v, list) and v and (isinstance(v[0], list) or key not in _PAIR_KEYS):
-            found.append((prefix, key, v))
-    return found
+def per_point(values: dict[str, Any], prefix: str = "") -> list[tuple[str, str, list[Any]]]:
+    """The inputs given per point, (prefix, key, values): lists of numbers, or lists of
+    pairs for vector keys."""
+    listed = ((k, v) for k, v in values.items() if isinstance(v, list) and v)
+    return [(prefix, k, v) for k, v in listed if isinstance(v[0], list) or k not in _PAIR_KEYS]
 
 
 def _segment_echo(seg: Any) -> dict[str, Any]:
@@ -497,7 +495,7 @@ def parse_scenario(
     init, init_echo = parse_initial_table(initial, initial.where)
     opts, _ = RUN.build({} if run is None else run, "[run]")
     output = _parse_output(output_table)
-    varying = _per_point("", law_given) + _per_point("", init_echo)
+    varying = per_point(law_given) + per_point(init_echo)
     program: Program | None = None
     machine: MachineRun | None = None
     base = Path(base_dir)
@@ -507,12 +505,12 @@ def parse_scenario(
             raw = t.mapping()
             segments.append(seg := _parse_segment(t, base))
             raw.pop("kind", None)
-            varying += _per_point("hold " if seg.kind == "hold" else "", raw)
+            varying += per_point(raw, "hold " if seg.kind == "hold" else "")
         program = tuple(segments)
     else:
         assert machine_table is not None
         machine, machine_echo = _parse_machine(machine_table)
-        varying += _per_point("", machine_echo)
+        varying += per_point(machine_echo)
     sizes = machine.machine.sizes() if machine is not None else set()
     if machine is not None and np.ndim(machine.duration) == 1:
         sizes = sizes | {len(machine.duration)}

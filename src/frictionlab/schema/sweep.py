@@ -109,6 +109,19 @@ def _check_value(key: str, value: Any) -> None:
 LINK = "+"  # links keys that take the same value (frictionlab.sweep.cases.LINK)
 
 
+def _links(where: str, key: str, value: Any, owner: dict[str, str]) -> list[str]:
+    """The keys that ``key`` links ("a.x+b.y"), each set once across ``owner``."""
+    _check_value(f"{where}.{key}", value)
+    parts = key.split(LINK)
+    if not all(parts):
+        raise InputError(f"{where}.'{key}' has an empty key around '{LINK}'")
+    for part in parts:
+        if part in owner:
+            raise InputError(f"{where} sets '{part}' twice ('{owner[part]}' and '{key}')")
+        owner[part] = key
+    return parts
+
+
 def _grid(raw: Any) -> dict[str, list[Any]]:
     if not isinstance(raw, dict):
         raise InputError('grid must be a table of "section.key" = [values]')
@@ -117,19 +130,11 @@ def _grid(raw: Any) -> dict[str, list[Any]]:
         raise InputError('[grid] is empty: give at least one "section.key" = [values]')
     owner: dict[str, str] = {}
     for key, values in grid.items():
-        if not all(key.split(LINK)):
-            raise InputError(f"[grid].'{key}' has an empty key around '{LINK}'")
-        for part in key.split(LINK):
-            if part in owner:
-                raise InputError(
-                    f"[grid] sets '{part}' twice ('{owner[part]}' and '{key}'): give each "
-                    "key one axis"
-                )
-            owner[part] = key
         if not isinstance(values, list) or not values:
             raise InputError(f"[grid].'{key}' must be a non-empty list of values, got {values!r}")
         for v in values:
             _check_value(f"[grid].{key}", v)
+        _links("[grid]", key, None, owner)
     return grid
 
 
@@ -141,16 +146,9 @@ def _case_list(raw: Any) -> list[dict[str, Any]]:
     out = []
     for i, item in enumerate(raw, 1):
         flat = _flatten(item)
+        owner: dict[str, str] = {}
         if not flat:
             raise InputError(f'[[case]] #{i} is empty: give at least one "section.key" = value')
-        linked: dict[str, Any] = {}
-        for key, value in flat.items():
-            _check_value(f"[[case]] #{i}.{key}", value)
-            if not all(key.split(LINK)):
-                raise InputError(f"[[case]] #{i}.'{key}' has an empty key around '{LINK}'")
-            for part in key.split(LINK):  # "a.x+b.y" = v: the same value for each key
-                if part in linked:
-                    raise InputError(f"[[case]] #{i} sets '{part}' twice")
-                linked[part] = value
-        out.append(linked)
+        where = f"[[case]] #{i}"  # "a.x+b.y" = v: the same value for each key
+        out.append({p: v for k, v in flat.items() for p in _links(where, k, v, owner)})
     return out
