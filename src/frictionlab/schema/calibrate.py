@@ -227,16 +227,9 @@ def parse_calibrate(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> CalibrationConfig:
     """Validate a parsed calibration mapping (reads the data files; nothing is fitted)."""
-    root, top = CALIBRATE_FILE.read_top(data)
-    title = top["title"]
-    law = root.raw("law")
-    fit = root.table("fit", required=True)
-    data_tables = root.tables("data", required=True)
-    assert fit is not None
-    if not data_tables:
-        raise InputError("[[data]] must hold at least one measured curve")
-    params, given = parse_law_table(law)
-    fit_values, bounds = _parse_fit(fit)
+    top, tables = CALIBRATE_FILE.read_top(data)
+    params, given = parse_law_table(tables["law"])
+    fit_values, bounds = _parse_fit(tables["fit"])
     names = fit_values["parameters"]
     try:
         make_space(params, names, bounds)
@@ -245,7 +238,7 @@ def parse_calibrate(
         section, _, key = field.partition(".")
         raise ParameterError(f"[{section}].{key}", exc.value, exc.allowed) from None
     curves, echoes = [], []
-    for t in data_tables:
+    for t in tables["data"]:
         curve, echo = _parse_data(t, Path(base_dir))
         curves.append(curve)
         echoes.append(echo)
@@ -254,7 +247,7 @@ def parse_calibrate(
         raise InputError(f"[[data]]: {n_samples} samples in all, fewer than needed to fit "
                          f"{len(names)} parameters")  # fmt: skip
     return CalibrationConfig(
-        title=title, params=params, law_given=given, names=tuple(names), bounds=bounds,
+        title=top["title"], params=params, law_given=given, names=tuple(names), bounds=bounds,
         curves=tuple(curves), data_echo=tuple(echoes),
         max_evaluations=fit_values["max_evaluations"], profile=fit_values["profile"],
         profile_points=fit_values["profile_points"], profile_max=fit_values["profile_max"],

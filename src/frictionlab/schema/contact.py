@@ -372,7 +372,7 @@ def _law(data: Any) -> tuple[SubloadingParams | Frictionless, dict[str, Any]]:
 
 
 def _law_field(
-    root: Any,
+    tables: dict[str, Any],
     params: SubloadingParams | Frictionless,
     dim: int,
     base_dir: Path,
@@ -380,8 +380,7 @@ def _law_field(
     mesh: MeshSource | None = None,
 ) -> tuple[LawField, dict[str, Any]]:
     """[law_table] and [[law_region]]: the law's values along the interface."""
-    table_data = root.raw("law_table", None)
-    region_ts = root.tables("law_region")
+    table_data, region_ts = tables["law_table"], tables["law_region"] or []
     if table_data is None and not region_ts:
         return LawField(), {}
     if not isinstance(params, SubloadingParams):
@@ -391,14 +390,14 @@ def _law_field(
         raise InputError("[law] takes one value per key when [law_table] or [[law_region]] "
                          "vary it along the interface")  # fmt: skip
     multiply = law_t.mapping().get("orthotropy_convention") == "multiply"
-    tables = _law_tables(table_data or {}, params, dim, base_dir)
+    law_tables = _law_tables(table_data or {}, params, dim, base_dir)
     regions, region_echo = _law_regions(region_ts, params, dim, base_dir, multiply, mesh)
     echo: dict[str, Any] = {}
     if table_data is not None:
         echo["law_table"] = LAW_TABLE.read(table_data, "[law_table]", only_given=True)
     if regions:
         echo["law_region"] = region_echo
-    return LawField(tuple(tables), tuple(regions)), echo
+    return LawField(tuple(law_tables), tuple(regions)), echo
 
 
 def _check_load(
@@ -437,27 +436,22 @@ def parse_contact(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> ContactScenario:
     """Validate a parsed contact scenario mapping (nothing runs, nothing is meshed)."""
-    root, top = CONTACT_FILE.read_top(data)
-    block_t, law_t = root.table("block", required=True), root.table("law", required=True)
-    normal_t = root.table("normal", required=True)
-    program_ts = root.tables("program", required=True)
-    assert block_t is not None and law_t is not None and normal_t is not None
-    if not program_ts:
-        raise InputError("[[program]] must hold at least one segment")
+    top, tables = CONTACT_FILE.read_top(data)
+    law_t = tables["law"]
     mesh, mesh_echo = None, None
-    if root.raw("mesh", None) is not None:
-        mesh, mesh_echo = _mesh(root.raw("mesh"), Path(base_dir))
-    block, block_echo = _block(block_t, mesh)
-    base, base_echo = BASE.build(root.raw("base", {}), "[base]")
+    if tables["mesh"] is not None:
+        mesh, mesh_echo = _mesh(tables["mesh"], Path(base_dir))
+    block, block_echo = _block(tables["block"], mesh)
+    base, base_echo = BASE.build(tables["base"] or {})
     reraise("[base]", lambda: base.check_dim(block.dim))
     params, law_echo = _law(law_t.mapping())
-    law_field, field_echo = _law_field(root, params, block.dim, Path(base_dir), law_t, mesh)
-    normal, normal_echo = NORMAL.build(normal_t)
-    parsed = [SEGMENT.build(t) for t in program_ts]
+    law_field, field_echo = _law_field(tables, params, block.dim, Path(base_dir), law_t, mesh)
+    normal, normal_echo = NORMAL.build(tables["normal"])
+    parsed = [SEGMENT.build(t) for t in tables["program"]]
     program = tuple(seg for seg, _ in parsed)
-    options, solver_echo = SOLVER.build(root.raw("solver", {}), "[solver]", drop=("drive",))
+    options, solver_echo = SOLVER.build(tables["solver"] or {}, drop=("drive",))
     drive = solver_echo["drive"]
-    output_echo = OUTPUT.read(root.raw("output", {}), "[output]")
+    output_echo = OUTPUT.read(tables["output"] or {})
     # the checks that need several sections, with the key to blame
     from frictionlab.contact.loading import plan_stages
 

@@ -290,10 +290,23 @@ class Section:
         cls = self.by[kw.pop("kind")] if self.variants is not None else self.by
         return reraise(t.where, lambda: cls(**kw), error), values
 
-    def read_top(self, data: Any) -> tuple[Table, dict[str, Any]]:
-        """The top table of an input file, checked (unknown keys refused), and its values."""
+    def read_top(self, data: Any) -> tuple[dict[str, Any], dict[str, Any]]:
+        """The top table of an input file, checked (unknown keys refused): (its values, its
+        sub-tables: a Table, a non-empty list of them for [[arrays]], None when absent)."""
         root = self.table(data, "")
-        return root, self.read(root)
+        tables: dict[str, Any] = {}
+        for f in self.fields:
+            if f.table is None or f.json is not None:
+                continue
+            if not f.many:
+                tables[f.name] = root.table(f.name, f.required)
+            else:
+                given = f.name in root or f.required
+                tables[f.name] = root.tables(f.name, f.required) if given else None
+                if tables[f.name] == []:
+                    one = f.table.doc if f.table.doc.startswith("one ") else "one table"
+                    raise InputError(f"[[{f.name}]] must hold at least {one}")
+        return self.read(root), tables
 
     def schema(self) -> dict[str, Any]:
         """The JSON Schema of the table (tagged tables: one ``if/then`` rule per kind)."""

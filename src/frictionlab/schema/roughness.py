@@ -382,12 +382,12 @@ def parse_roughness(
 ) -> RoughnessScenario:
     """Build a :class:`RoughnessScenario`; any problem is one :class:`InputError` line."""
     base = Path(base_dir)
-    top, values = ROUGHNESS_FILE.read_top(data)
+    values, top = ROUGHNESS_FILE.read_top(data)
     notes: dict[str, Any] = {}
-    lower = _surface(top.raw("lower"), "[lower]", base, notes, "lower")
-    upper = _surface(top.raw("upper"), "[upper]", base, notes, "upper")
+    lower = _surface(top["lower"], "[lower]", base, notes, "lower")
+    upper = _surface(top["upper"], "[upper]", base, notes, "upper")
     _check_cell(lower, upper, notes)
-    sliding = SLIDING.read(top.raw("sliding"), only_given=True)
+    sliding = SLIDING.read(top["sliding"], only_given=True)
     load_given = "load" in sliding
     betas = sliding.pop("beta_deg")
     sliding["on_invalid"] = _on_invalid("sliding", sliding.get("on_invalid", "error"), notes)
@@ -395,7 +395,7 @@ def parse_roughness(
     sliding.setdefault("control", "load")
     if "phase" in sliding:
         sliding["phase"] = tuple(sliding["phase"])
-    options = {**sliding, **LATTICE.read(top.raw("lattice", {}), only_given=True)}
+    options = {**sliding, **LATTICE.read(top["lattice"] or {}, only_given=True)}
     if isinstance(options.get("stations"), list):
         options["stations"] = tuple(options["stations"])
     try:
@@ -403,21 +403,21 @@ def parse_roughness(
     except ParameterError as exc:
         section = "[sliding]" if exc.field in SLIDING.keys(None) else "[lattice]"
         raise InputError(f"{section}.{exc}") from None
-    output = OUTPUT.read(top.raw("output", {}))
+    output = OUTPUT.read(top["output"] or {})
     adhesion = wear = hierarchy = multiscale = None
-    if "adhesion" in top:
-        adhesion = _adhesion(top.raw("adhesion"), betas, settings)
-    if "wear" in top:
-        wear = _wear(top.raw("wear"), betas)
-    if "hierarchy" in top:
-        hierarchy = _hierarchy(top.table("hierarchy"), lower, upper, betas, base, notes)  # type: ignore[arg-type]
-    if "multiscale" in top:
-        multiscale = _multiscale(top.raw("multiscale"), betas)
-    given = CONTACT.read(top.raw("contact", {}))
+    if top["adhesion"] is not None:
+        adhesion = _adhesion(top["adhesion"], betas, settings)
+    if top["wear"] is not None:
+        wear = _wear(top["wear"], betas)
+    if top["hierarchy"] is not None:
+        hierarchy = _hierarchy(top["hierarchy"], lower, upper, betas, base, notes)
+    if top["multiscale"] is not None:
+        multiscale = _multiscale(top["multiscale"], betas)
+    given = CONTACT.read(top["contact"] or {})
     contact = _contact(given, settings)
     settings = _lattice_pressure(given, settings, load_given)
     if len(given["model"]) > 1 or len(given["pressure"] or ()) > 1:
-        extra = [n for n in ("adhesion", "wear", "hierarchy", "multiscale") if n in top]
+        extra = [n for n in ("adhesion", "wear", "hierarchy", "multiscale") if top[n] is not None]
         if extra:
             raise InputError(
                 f"[{extra[0]}] is invalid with a list in [contact].model or [contact].pressure:"

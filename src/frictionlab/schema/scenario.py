@@ -479,37 +479,25 @@ def parse_scenario(
     data: dict[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> Scenario:
     """Validate a parsed scenario mapping and build a :class:`Scenario` (nothing runs)."""
-    root, top = SCENARIO_FILE.read_top(data)
-    law, initial = root.table("law", required=True), root.table("initial", required=True)
-    run, output_table, machine_table = (
-        root.table("run"),
-        root.table("output"),
-        root.table("machine"),
-    )
-    has_program = "program" in root
-    program_tables = root.tables("program") if has_program else []
-    assert law is not None and initial is not None
-    if has_program and not program_tables:
-        raise InputError("[[program]] must hold at least one segment")
-    params, law_given = parse_law_table(law, law.where)
-    init, init_echo = parse_initial_table(initial, initial.where)
-    opts, _ = RUN.build({} if run is None else run, "[run]")
-    output = _parse_output(output_table)
+    top, tables = SCENARIO_FILE.read_top(data)
+    params, law_given = parse_law_table(tables["law"])
+    init, init_echo = parse_initial_table(tables["initial"])
+    opts, _ = RUN.build(tables["run"] or {})
+    output = _parse_output(tables["output"])
     varying = per_point(law_given) + per_point(init_echo)
     program: Program | None = None
     machine: MachineRun | None = None
     base = Path(base_dir)
-    if has_program:
+    if tables["program"] is not None:
         segments = []
-        for t in program_tables:
+        for t in tables["program"]:
             raw = t.mapping()
             segments.append(seg := _parse_segment(t, base))
             raw.pop("kind", None)
             varying += per_point(raw, "hold " if seg.kind == "hold" else "")
         program = tuple(segments)
     else:
-        assert machine_table is not None
-        machine, machine_echo = _parse_machine(machine_table)
+        machine, machine_echo = _parse_machine(tables["machine"])
         varying += per_point(machine_echo)
     sizes = machine.machine.sizes() if machine is not None else set()
     if machine is not None and np.ndim(machine.duration) == 1:
