@@ -36,25 +36,9 @@ from frictionlab.schema.kinds import (  # re-exported: the declarations' vocabul
 )
 
 __all__ = [
-    "BOOL",
-    "DEFS",
-    "DESCRIPTION",
-    "INTEGER",
-    "NUMBER",
-    "NUMBERS",
-    "OMIT",
-    "PAIRS",
-    "REQUIRED",
-    "STRING",
-    "TITLE",
-    "Field",
-    "Kind",
-    "Section",
-    "check_overrides",
-    "listed",
-    "load",
-    "reraise",
-]
+    "BOOL", "DEFS", "DESCRIPTION", "INTEGER", "NUMBER", "NUMBERS", "OMIT", "PAIRS", "REQUIRED",
+    "STRING", "TITLE", "Field", "Kind", "Section", "check_overrides", "listed", "load", "reraise",
+]  # fmt: skip
 
 
 class _Omit:

@@ -234,14 +234,10 @@ WEAR = Section("wear", (
     Field("method", STRING, "how the worn polar is computed", "", "auto", choices=WEAR_METHODS),
     _BETA,
 ), "Archard wear, mu(t) (Eqs 23-28w)", "[wear]", by=WearSettings)  # fmt: skip
-LEVEL = Section(
-    "level",
-    (
-        Field("lower", table=SURFACE, default=REQUIRED),
-        Field("upper", table=SURFACE, default=REQUIRED),
-    ),
-    "one inner level (innermost first)",
-)
+LEVEL = Section("level", (
+    Field("lower", table=SURFACE, default=REQUIRED),
+    Field("upper", table=SURFACE, default=REQUIRED),
+), "one inner level (innermost first)")  # fmt: skip
 HIERARCHY = Section("hierarchy", (
     Field("levels", INTEGER, "self-similar levels (Eq 28; with ratio)", "", None, low=1),
     Field("ratio", NUMBER, "scale factor between levels", "", None, low=1, open="low",
@@ -262,22 +258,14 @@ MULTISCALE = Section("multiscale", (
     _BETA,
 ), "scale-resolved friction (sampled surfaces)", "[multiscale]")  # fmt: skip
 _TOP = (
-    Field(
-        "mu0",
-        NUMBER,
-        "local Coulomb coefficient",
-        "-",
-        REQUIRED,
-        low=0,
-        open="low",
-        allowed="a local friction coefficient mu0 > 0",
-    ),
+    Field("mu0", NUMBER, "local Coulomb coefficient", "-", REQUIRED, low=0, open="low",
+          allowed="a local friction coefficient mu0 > 0"),
     TITLE,
     Field("lower", table=SURFACE, default=REQUIRED, doc="surface 1, fixed"),
     Field("upper", table=SURFACE, default=REQUIRED, doc="surface 2, sliding"),
     Field("sliding", table=SLIDING, default=REQUIRED),
     Field("lattice", table=LATTICE),
-)
+)  # fmt: skip
 ROUGHNESS_FILE = Section("roughness", (
     *_TOP,
     Field("output", table=OUTPUT),
