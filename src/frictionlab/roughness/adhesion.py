@@ -37,7 +37,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import FloatArray, readonly_masked
+from frictionlab._arrays import FloatArray, finite_vector, readonly_masked
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
@@ -148,15 +148,7 @@ def _number(value: Any) -> bool:
 
 
 def _loads(loads: ArrayLike) -> FloatArray:
-    try:
-        arr = np.array(loads, dtype=np.float64, ndmin=1)
-    except (TypeError, ValueError):
-        raise ParameterError("loads", loads, "normal loads per spring in N") from None
-    if arr.ndim != 1 or arr.size == 0:
-        raise ParameterError("loads", loads, "a non-empty 1-D sequence of loads per spring (N)")
-    if not np.all(np.isfinite(arr)):
-        raise ParameterError("loads", loads, "finite loads per spring (N)")
-    return arr
+    return finite_vector("loads", loads, "a non-empty 1-D sequence of finite loads per spring (N)")
 
 
 def adhesion_sweep(
