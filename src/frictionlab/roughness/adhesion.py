@@ -147,10 +147,6 @@ def _number(value: Any) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
 
-def _loads(loads: ArrayLike) -> FloatArray:
-    return finite_vector("loads", loads, "a non-empty 1-D sequence of finite loads per spring (N)")
-
-
 def adhesion_sweep(
     lower: Surface,
     upper: Surface,
@@ -189,7 +185,7 @@ def adhesion_sweep(
     settings = settings_from(LatticeSettings, settings, options, {"k_t": tensile})
     if settings.control != "load":
         raise ParameterError("control", settings.control, "'load' for a load sweep")
-    values = _loads(loads)
+    values = finite_vector("loads", loads, "a non-empty 1-D list of finite loads per spring (N)")
     kt = DEFAULT_TENSILE_RATIO * settings.k_c if k_t is None else k_t
     if not (isinstance(kt, int | float) and math.isfinite(kt) and 0.0 <= kt <= settings.k_c):
         raise ParameterError("k_t", k_t, f"0 <= k_t <= k_c = {settings.k_c} N/m")
