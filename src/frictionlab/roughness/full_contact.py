@@ -136,7 +136,8 @@ def _sums_nb(
 def _sums_np(
     mu0: np.ndarray, gx: Grads, gy: Grads, cb: np.ndarray, sb: np.ndarray, block: int
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """NumPy twin of :func:`_sums_nb` (one block), built on the lattice's multipliers."""
+    """NumPy twin of :func:`_sums_nb` (one block whatever ``block``), built on the
+    lattice's multipliers."""
     nd = cb.size
     sx = np.zeros((1, nd))
     sy = np.zeros((1, nd))
