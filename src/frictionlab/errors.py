@@ -76,8 +76,14 @@ def _short(value: Any) -> str:
     """Render a value compactly for an error message."""
     import numpy as np
 
-    arr = np.asarray(value) if not isinstance(value, str) else None
-    if arr is not None and arr.ndim > 0 and arr.size > 6:
+    if isinstance(value, str):
+        return repr(value)
+    try:
+        arr = np.asarray(value)
+    except ValueError:  # a ragged nested list: no array; its text, cut to one short line
+        text = str(value).replace("\n", "")
+        return text if len(text) <= 80 else text[:77] + "..."
+    if arr.ndim > 0 and arr.size > 6:
         return f"array(shape={arr.shape}, first={arr.ravel()[:3].tolist()}...)"
     # one line: a small 2-D array prints over several lines
-    return repr(value) if isinstance(value, str) else str(value).replace("\n", "")
+    return str(value).replace("\n", "")

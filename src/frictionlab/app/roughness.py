@@ -62,27 +62,28 @@ from frictionlab.errors import InputError, ParameterError, ValidityError
 from frictionlab.io.atomic import write_contents_atomic
 from frictionlab.io.config import load_toml
 from frictionlab.io.tables import format_csv
-from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
-from frictionlab.roughness.closed_forms import wedge_friction
-from frictionlab.roughness.full_contact import full_contact_sums
-from frictionlab.roughness.generators import FlatProfile, WedgeProfile
-from frictionlab.roughness.hierarchy import (
+from frictionlab.roughness import (
+    AdhesionSweep,
+    FlatProfile,
+    FrictionPolar,
     HierarchyResult,
     HierarchyWearHistory,
-    hierarchy_friction,
-    hierarchy_wear,
-)
-from frictionlab.roughness.lattice import (
-    FrictionPolar,
     LatticeGeometry,
     LatticeSettings,
+    Surface,
+    WearHistory,
+    WedgeProfile,
+    adhesion_sweep,
     friction_polar,
+    hierarchy_friction,
+    hierarchy_wear,
     lattice_geometry,
     merge_polars,
+    wear_history,
+    wedge_friction,
 )
+from frictionlab.roughness.full_contact import full_contact_sums
 from frictionlab.roughness.multiscale import MultiscaleResult, multiscale_friction
-from frictionlab.roughness.surface import Surface
-from frictionlab.roughness.wear import WearHistory, wear_history
 from frictionlab.schema.core import override
 from frictionlab.schema.roughness import ROUGHNESS_FILE, RoughnessScenario, parse_roughness
 

@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
-from frictionlab._arrays import FloatArray
+from frictionlab._arrays import FloatArray, finite_vector
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import SubloadingParams, friction_coefficient_on_yield, steady_size
 
@@ -51,10 +51,8 @@ __all__ = [
 
 
 def _angles(theta_deg: ArrayLike) -> FloatArray:
-    theta = np.atleast_1d(np.asarray(theta_deg, dtype=np.float64))
-    if theta.ndim != 1 or not np.all(np.isfinite(theta)):
-        raise ParameterError("theta_deg", theta_deg, "finite sliding directions (deg), shape (N,)")
-    return np.radians(theta)
+    allowed = "finite sliding directions (deg), shape (N,)"
+    return np.radians(finite_vector("theta_deg", theta_deg, allowed, empty=True))
 
 
 def steady_direction(

@@ -37,7 +37,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import FloatArray, readonly_masked
+from frictionlab._arrays import FloatArray, finite_vector, readonly_masked
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
@@ -147,18 +147,6 @@ def _number(value: Any) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
 
-def _loads(loads: ArrayLike) -> FloatArray:
-    try:
-        arr = np.array(loads, dtype=np.float64, ndmin=1)
-    except (TypeError, ValueError):
-        raise ParameterError("loads", loads, "normal loads per spring in N") from None
-    if arr.ndim != 1 or arr.size == 0:
-        raise ParameterError("loads", loads, "a non-empty 1-D sequence of loads per spring (N)")
-    if not np.all(np.isfinite(arr)):
-        raise ParameterError("loads", loads, "finite loads per spring (N)")
-    return arr
-
-
 def adhesion_sweep(
     lower: Surface,
     upper: Surface,
@@ -197,7 +185,7 @@ def adhesion_sweep(
     settings = settings_from(LatticeSettings, settings, options, {"k_t": tensile})
     if settings.control != "load":
         raise ParameterError("control", settings.control, "'load' for a load sweep")
-    values = _loads(loads)
+    values = finite_vector("loads", loads, "a non-empty 1-D list of finite loads per spring (N)")
     kt = DEFAULT_TENSILE_RATIO * settings.k_c if k_t is None else k_t
     if not (isinstance(kt, int | float) and math.isfinite(kt) and 0.0 <= kt <= settings.k_c):
         raise ParameterError("k_t", k_t, f"0 <= k_t <= k_c = {settings.k_c} N/m")

@@ -43,7 +43,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import FloatArray, readonly
+from frictionlab._arrays import FloatArray, finite_vector, readonly
 from frictionlab.errors import ConvergenceError, ParameterError, ValidityError
 from frictionlab.roughness import _kernels
 from frictionlab.roughness.lattice import (
@@ -528,9 +528,7 @@ def pressure_sweep(
     +5 % on a 512^2 map); the polars are returned in the order of ``pressures``.
     """
     base = settings_from(ElasticSettings, settings, options, {"pressure": 1.0})
-    values = np.array(pressures, dtype=np.float64, ndmin=1)
-    if values.ndim != 1 or values.size == 0:
-        raise ParameterError("pressure", pressures, "one pressure or a list of pressures in Pa")
+    values = finite_vector("pressure", pressures, "one pressure or a list of pressures in Pa")
     m0 = _check_mu0(mu0)
     betas = check_betas(beta_deg)
     out: dict[int, ElasticPolar] = {}

@@ -33,7 +33,7 @@ from types import MappingProxyType
 import numpy as np
 from numpy.typing import ArrayLike
 
-from frictionlab._arrays import FloatArray
+from frictionlab._arrays import FloatArray, finite_vector
 from frictionlab.errors import ParameterError
 from frictionlab.roughness.adhesion import AdhesionSweep, adhesion_sweep
 from frictionlab.roughness.closed_forms import wedge_friction
@@ -46,7 +46,7 @@ from frictionlab.roughness.hierarchy import (
     self_similar_levels,
     wedge_hierarchy,
 )
-from frictionlab.roughness.lattice import LatticeSettings, friction_polar
+from frictionlab.roughness.lattice import LatticeSettings, check_betas, friction_polar
 from frictionlab.roughness.surface import Profile, Surface
 from frictionlab.roughness.wear import WearHistory, WearSettings, wear_history
 
@@ -141,13 +141,6 @@ def _angle_pair(angles_deg: Sequence[float]) -> tuple[float, float]:
     return steep, shallow
 
 
-def _betas(beta_deg: ArrayLike) -> FloatArray:
-    b = np.array(beta_deg, dtype=np.float64, ndmin=1)
-    if b.ndim != 1 or b.size == 0 or not np.all(np.isfinite(b)):
-        raise ParameterError("beta_deg", beta_deg, "a non-empty 1-D array of finite degrees")
-    return b
-
-
 def _pair(case: str, angles: tuple[float, ...], smooth: bool) -> tuple[Profile, Profile]:
     make = smooth_wedge if smooth else wedge
     lower = make((angles[0], angles[1]), 1.0)
@@ -164,7 +157,7 @@ def _six_cases(
     compute: str,
     settings: LatticeSettings | None,
 ) -> FamilyTable:
-    betas = _betas(beta_deg)
+    betas = check_betas(beta_deg)
     columns: dict[str, FloatArray] = {"beta_deg": betas}
     units = {"beta_deg": "deg"}
     for case in WEDGE_CASES:
@@ -283,7 +276,7 @@ def surfaces_2d_vs_beta(
     ``mu_x_over_mu0_<label>``, ``mu_y_over_mu0_<label>`` with labels like ``l2pi_3pi``.
     """
     m = _check_mu0(mu0)
-    betas = _betas(beta_deg)
+    betas = check_betas(beta_deg)
     settings = settings or LatticeSettings(load="full", time_samples=64)
     columns: dict[str, FloatArray] = {"beta_deg": betas}
     for pair in wavelengths:
@@ -319,10 +312,10 @@ def wavelength_map(
     per period, 64 time samples.
     """
     m = _check_mu0(mu0)
-    betas = _betas(beta_deg)
-    facs = _betas(factors)
+    betas = check_betas(beta_deg)
+    facs = finite_vector("factors", factors, "a non-empty list of positive multiples of pi")
     if np.any(facs <= 0.0):
-        raise ParameterError("factors", factors, "positive multiples of pi")
+        raise ParameterError("factors", factors, "a non-empty list of positive multiples of pi")
     settings = settings or LatticeSettings(load="full", time_samples=64)
     rows: dict[str, list[float]] = {
         k: []

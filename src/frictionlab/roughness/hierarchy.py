@@ -44,7 +44,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import FloatArray, readonly_masked
+from frictionlab._arrays import FloatArray, finite_vector, readonly_masked
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError, ValidityError
@@ -457,9 +457,7 @@ def hierarchy_wear(
         parts = [np.linspace(s, e, samples_per_level)[:-1] for s, e in zip(start, end, strict=True)]
         t = np.concatenate([*parts, end[-1:]])
     else:
-        t = np.array(times, dtype=np.float64, ndmin=1)
-        if t.ndim != 1 or t.size == 0 or not np.all(np.isfinite(t) & (t >= 0.0)):
-            raise ParameterError("times", times, "a non-empty list of times >= 0 s")
+        t = finite_vector("times", times, "a non-empty list of times >= 0 s", minimum=0.0)
     lattice = settings or LatticeSettings()
     n = len(seq)
     reduction = np.clip(1.0 - (t[:, None] - start[None, :]) / tw[None, :], 0.0, 1.0)

@@ -45,7 +45,7 @@ from typing import Any, TypeVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from frictionlab._arrays import FloatArray, readonly
+from frictionlab._arrays import FloatArray, finite_vector, readonly
 from frictionlab._frames import TableResult
 from frictionlab._jit import numba
 from frictionlab.errors import ParameterError, ValidityError
@@ -730,13 +730,7 @@ def polar_mu_fields(
 
 def check_betas(beta_deg: ArrayLike) -> FloatArray:
     """Sliding directions [deg] as a non-empty 1-D float64 array (ParameterError otherwise)."""
-    try:
-        betas = np.array(beta_deg, dtype=np.float64, ndmin=1)
-    except (TypeError, ValueError):
-        raise ParameterError("beta_deg", beta_deg, "sliding directions in degrees") from None
-    if betas.ndim != 1 or betas.size == 0 or not np.all(np.isfinite(betas)):
-        raise ParameterError("beta_deg", beta_deg, "a non-empty 1-D array of finite degrees")
-    return betas
+    return finite_vector("beta_deg", beta_deg, "a non-empty 1-D array of finite degrees")
 
 
 def friction_polar(

@@ -36,7 +36,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from frictionlab._arrays import FloatArray
+from frictionlab._arrays import FloatArray, finite_vector
 from frictionlab._arrays import readonly as _ro
 from frictionlab._frames import TableResult
 from frictionlab.errors import ParameterError
@@ -51,7 +51,12 @@ from frictionlab.roughness.generators import (
     WedgeProfile,
     scaled,
 )
-from frictionlab.roughness.lattice import LatticeSettings, friction_polar, long_mu_columns
+from frictionlab.roughness.lattice import (
+    LatticeSettings,
+    check_betas,
+    friction_polar,
+    long_mu_columns,
+)
 from frictionlab.roughness.surface import (
     Profile,
     SampledHeightMap,
@@ -440,13 +445,9 @@ def wear_history(
             raise ParameterError("samples", samples, "an integer >= 2")
         t = np.linspace(0.0, tw, samples)
     else:
-        t = np.array(times, dtype=np.float64, ndmin=1)
-        if t.ndim != 1 or t.size == 0 or not np.all(np.isfinite(t) & (t >= 0.0)):
-            raise ParameterError("times", times, "a non-empty list of times >= 0 s")
+        t = finite_vector("times", times, "a non-empty list of times >= 0 s", minimum=0.0)
     b = reduction_coefficient(t, tw)
-    betas = np.array(beta_deg, dtype=np.float64, ndmin=1)
-    if betas.ndim != 1 or betas.size == 0 or not np.all(np.isfinite(betas)):
-        raise ParameterError("beta_deg", beta_deg, "a non-empty 1-D array of finite degrees")
+    betas = check_betas(beta_deg)
     lattice = settings or LatticeSettings()
     mu_x = np.empty((t.size, betas.size))
     mu_y = np.empty_like(mu_x)
