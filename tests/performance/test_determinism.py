@@ -22,15 +22,32 @@ from frictionlab.roughness import full_contact
 PROBE = """
 import sys
 import numpy as np
-from frictionlab.roughness import full_contact as fc
+from frictionlab.roughness import _kernels as K, full_contact as fc
 rng = np.random.default_rng(7)
 n = 3 * fc.BLOCK + 17
 g = [rng.normal(0.0, 0.3, n) for _ in range(4)]
 beta = np.radians(np.arange(0.0, 360.0, 15.0))
-if sys.argv[1] == "callee-first":
-    fc._block_sums(0.3, g[0], g[1], 0, 10, 1.0, 0.0)  # loaded standalone, as a cold compile does
+nx, ny = 96, 128  # the lattice kernel: 96 x 128 stations, several chunks
+z1, z2 = rng.normal(0.0, 1.0, (2, nx * ny))
+h1 = K.multipliers_nb(0.3, g[0][: nx * ny], g[1][: nx * ny], 0.6, 0.8)
+h2 = K.multipliers_nb(0.3, g[2][: nx * ny], g[3][: nx * ny], 0.6, 0.8)
+if sys.argv[1] == "callee-first":  # the reassociating callees loaded standalone first,
+    gap, part = z2 - z1, np.zeros(K.PART_COLUMNS)  # as a cold compile does
+    fc._block_sums(0.3, g[0], g[1], 0, 10, 1.0, 0.0)
+    K._gap_stats(gap)
+    K._force_sum(gap, 0.1, 1.0, 0.5)
+    K._difference(gap, z2, z1, 0, 0, 5)
+    K._accumulate_row(gap, *h1, *h2, 0, 0, 5, 0.1, 1.0, 0.5, False, np.inf, False)
+    K._accumulate_lean(gap, h1[0], h1[1], h2[0], h2[1], 0, 0, 5, 0.1, 1.0, 0.5, False, np.inf)
+    K._gap_chunk(gap, z1, z2, 0, 1, nx, ny, 3, 5, 0.1, 1.0, 0.5, part)
 s = fc.full_contact_sums(0.3, (g[0], g[1]), (g[2], g[3]), np.cos(beta), np.sin(beta))
-print((s.sum_x.tobytes() + s.sum_y.tobytes()).hex())
+out = [s.sum_x.tolist(), s.sum_y.tolist()]
+for mode in (K.MODE_FULL, K.MODE_LOAD, K.MODE_SEPARATION):
+    for check in (False, True):
+        work = K.workspace(nx, ny)
+        out.append(K.sample_into_nb(z1, *h1, z2, *h2, nx, ny, 3, 5, 1.0, 0.5, mode, 0.1, 0.2,
+                                    np.inf, False, check, *work))
+print(np.array([v for row in out for v in np.ravel(row)], dtype=np.float64).tobytes().hex())
 """
 
 
@@ -41,7 +58,7 @@ def _sums(order: str) -> str:
 
 
 @pytest.mark.slow  # two fresh interpreters (~1.5 s CPU each)
-def test_full_contact_sums_do_not_depend_on_the_kernels_loaded_before() -> None:
+def test_roughness_sums_do_not_depend_on_the_kernels_loaded_before() -> None:
     assert _sums("callee-first") == _sums("plain")
 
 
