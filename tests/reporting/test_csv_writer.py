@@ -57,6 +57,16 @@ def test_mixed_columns_masks_bools_ints_and_text() -> None:
     ]
 
 
+def test_none_in_a_text_column_is_an_empty_cell_as_pandas_writes_it() -> None:
+    kind = np.array(["slide", None, "hold", None], dtype=object)
+    text = format_csv({"x": np.arange(4.0), "kind": kind})
+    assert [row[1] for row in _cells(text)] == ["slide", "", "hold", ""]
+    expected = pd.DataFrame({"x [-]": np.arange(4.0), "kind [-]": kind}).to_csv(index=False)
+    assert text == expected  # pandas' own writer: a missing value is an empty field
+    back = pd.read_csv(pd.io.common.StringIO(text))["kind [-]"]
+    assert back.isna().tolist() == [False, True, False, True]
+
+
 def test_empty_table_is_its_header() -> None:
     assert format_csv({"x": np.array([]), "k": np.array([], dtype=object)}) == "x [-],k [-]\n"
 

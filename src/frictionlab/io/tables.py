@@ -15,7 +15,8 @@ and its cells are views of that text; Arrow joins the cells of each row in one p
 Python object per cell, no per-cell string).
 Non-finite values are refused: a table never carries NaN or infinity. Booleans are written
 as ``true``/``false``; text cells may not contain commas or line breaks. An undefined value
-is given as a masked entry (``numpy.ma``) and written as an empty field.
+is given as a masked entry (``numpy.ma``) or, in a text column, as ``None``, and written as
+an empty field (as pandas writes a missing value).
 
 :func:`read_csv` reads such files (a numeric column with empty fields comes back as a
 masked array), files of earlier versions (``#`` comment lines, a ``# units:`` line),
@@ -266,7 +267,7 @@ def _cells(name: str, values: np.ndarray, sep: bytes) -> Any:
     else:
         lookup = {text: k for k, text in enumerate(texts)}
         codes = np.fromiter(map(lookup.__getitem__, items.tolist()), np.int64, n)
-    return _levels([str(t).encode() + sep for t in texts], codes)
+    return _levels([(b"" if t is None else str(t).encode()) + sep for t in texts], codes)
 
 
 def _levels(texts: list[bytes], codes: np.ndarray) -> Any:

@@ -80,14 +80,19 @@ Grads = tuple[np.ndarray, ...]
 BLOCK = 4096
 
 
-@numba.njit(cache=True, fastmath=_FAST, error_model="numpy")
+@numba.njit(cache=True, fastmath=_FAST, error_model="numpy", inline="always")
 def _block_sums(
     m: float, gx: np.ndarray, gy: np.ndarray, lo: int, hi: int, cb: float, sb: float
 ) -> tuple[float, float, float]:
     """Sums of H over the valid contacts lo .. hi-1 and the count of invalid ones.
 
     The multiplier of ``_kernels._h_one`` written branch-free (an invalid contact gets
-    the weight 0) so that the compiler vectorises the loop.
+    the weight 0) so that the compiler vectorises the loop. Inlined into
+    :func:`_sums_nb` (same fastmath licences): a separately compiled reassociating callee
+    would be optimised differently standalone and inside its caller, and numba's JIT
+    runs whichever copy it loaded first (the standalone one after a cold compile, the
+    caller's own after a cache hit), so the sums would change in the last bits from run
+    to run.
     """
     sx = 0.0
     sy = 0.0
@@ -109,7 +114,7 @@ def _block_sums(
     return sx, sy, bad
 
 
-@numba.njit(cache=True, parallel=True)
+@numba.njit(cache=True, parallel=True, fastmath=_FAST, error_model="numpy")
 def _sums_nb(
     mu0: np.ndarray, gx: Grads, gy: Grads, cb: np.ndarray, sb: np.ndarray, block: int
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
