@@ -72,9 +72,6 @@ class FullContactSums:
         return np.asarray(self.invalid / (2.0 * self.n_stations), dtype=np.float64)
 
 
-#: The x (or y) gradients of one or two surfaces at the same stations.
-Grads = tuple[np.ndarray, ...]
-
 #: Points per block: the gradients of one block stay in cache while every direction
 #: sweeps it; blocks run in parallel.
 BLOCK = 4096
@@ -116,11 +113,21 @@ def _block_sums(
 
 @numba.njit(cache=True, parallel=True, fastmath=_FAST, error_model="numpy")
 def _sums_nb(
-    mu0: np.ndarray, gx: Grads, gy: Grads, cb: np.ndarray, sb: np.ndarray, block: int
+    mu0: np.ndarray,
+    g1x: np.ndarray,
+    g1y: np.ndarray,
+    g2x: np.ndarray,
+    g2y: np.ndarray,
+    cb: np.ndarray,
+    sb: np.ndarray,
+    two: bool,
+    block: int,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Per-block sums (blocks x directions) over the surfaces whose gradients are in the
-    tuples ``gx``, ``gy`` (equal sizes), blocks in parallel (prange)."""
-    n = gx[0].size
+    """Per-block sums (blocks x directions), blocks in parallel (prange).
+
+    ``two=False``: only surface 1 is summed (the caller adds a flat surface 2 itself).
+    """
+    n = g1x.size
     nd = cb.size
     nb = (n + block - 1) // block
     sx = np.zeros((nb, nd))
@@ -130,29 +137,39 @@ def _sums_nb(
         lo = c * block
         hi = min(n, lo + block)
         for d in range(nd):
-            for k in range(len(gx)):
-                a = _block_sums(mu0[d], gx[k], gy[k], lo, hi, cb[d], sb[d])
-                sx[c, d] += a[0]
-                sy[c, d] += a[1]
-                bad[c, d] += a[2]
+            a = _block_sums(mu0[d], g1x, g1y, lo, hi, cb[d], sb[d])
+            sx[c, d] = a[0]
+            sy[c, d] = a[1]
+            bad[c, d] = a[2]
+            if two:
+                b = _block_sums(mu0[d], g2x, g2y, lo, hi, cb[d], sb[d])
+                sx[c, d] += b[0]
+                sy[c, d] += b[1]
+                bad[c, d] += b[2]
     return sx, sy, bad
 
 
 def _sums_np(
-    mu0: np.ndarray, gx: Grads, gy: Grads, cb: np.ndarray, sb: np.ndarray, block: int
+    mu0: np.ndarray,
+    g1x: np.ndarray,
+    g1y: np.ndarray,
+    g2x: np.ndarray,
+    g2y: np.ndarray,
+    cb: np.ndarray,
+    sb: np.ndarray,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """NumPy twin of :func:`_sums_nb` (one block whatever ``block``), built on the
-    lattice's multipliers."""
+    """NumPy twin of :func:`_sums_nb` (one block), built on the lattice's multipliers."""
     nd = cb.size
     sx = np.zeros((1, nd))
     sy = np.zeros((1, nd))
     bad = np.zeros((1, nd))
     for d in range(nd):
-        for x, y in zip(gx, gy, strict=True):
-            hx, hy, den = multipliers_np(float(mu0[d]), x, y, float(cb[d]), float(sb[d]))
-            sx[0, d] += hx.sum()  # invalid contacts have H = 0 here
-            sy[0, d] += hy.sum()
-            bad[0, d] += np.count_nonzero(den <= 0.0)
+        m = float(mu0[d])
+        h1x, h1y, den1 = multipliers_np(m, g1x, g1y, float(cb[d]), float(sb[d]))
+        h2x, h2y, den2 = multipliers_np(m, g2x, g2y, float(cb[d]), float(sb[d]))
+        sx[0, d] = h1x.sum() + h2x.sum()  # invalid contacts have H = 0 here
+        sy[0, d] = h1y.sum() + h2y.sum()
+        bad[0, d] = np.count_nonzero(den1 <= 0.0) + np.count_nonzero(den2 <= 0.0)
     return sx, sy, bad
 
 
@@ -188,18 +205,20 @@ def full_contact_sums(
     sb = np.ascontiguousarray(sin_beta, dtype=np.float64).ravel()
     n = g1x.size
     m0 = np.ascontiguousarray(np.broadcast_to(np.asarray(mu0, dtype=np.float64), cb.shape))
-    sums = _sums_nb if engine == "numba" else _sums_np
-    flat1 = not (g1x.any() or g1y.any())
-    flat2 = not (g2x.any() or g2y.any())
-    if engine == "numba" and flat1 != flat2:
-        # A flat counter-face: H = mu0 (cos b, sin b) at each of its n contacts, which
-        # are all valid (Eq 1's denominator is 1); only the rough surface is summed.
-        rx, ry = (g2x, g2y) if flat1 else (g1x, g1y)
-        sx, sy, bad = sums(m0, (rx,), (ry,), cb, sb, BLOCK)
-        sx[0] += n * m0 * cb
-        sy[0] += n * m0 * sb
+    if engine == "numba":
+        flat1 = not (g1x.any() or g1y.any())
+        flat2 = not (g2x.any() or g2y.any())
+        if flat1 != flat2:
+            # A flat counter-face: H = mu0 (cos b, sin b) at each of its n contacts, which
+            # are all valid (Eq 1's denominator is 1); only the rough surface is summed.
+            rx, ry = (g2x, g2y) if flat1 else (g1x, g1y)
+            sx, sy, bad = _sums_nb(m0, rx, ry, rx, ry, cb, sb, False, BLOCK)
+            sx[0] += n * m0 * cb
+            sy[0] += n * m0 * sb
+        else:
+            sx, sy, bad = _sums_nb(m0, g1x, g1y, g2x, g2y, cb, sb, True, BLOCK)
     else:
-        sx, sy, bad = sums(m0, (g1x, g2x), (g1y, g2y), cb, sb, BLOCK)
+        sx, sy, bad = _sums_np(m0, g1x, g1y, g2x, g2y, cb, sb)
     invalid = np.rint(bad.sum(axis=0)).astype(np.int64)
     station = np.full(cb.size, -1, dtype=np.int64)
     family = np.zeros(cb.size, dtype=np.int64)

@@ -50,7 +50,7 @@ def test_full_contact_sums_equal_their_interpreted_source() -> None:
     g = rng.standard_normal((4, 300)) * 0.3
     mu0 = np.full(3, 0.4)
     beta = np.radians([0.0, 35.0, 90.0])
-    args = (mu0, (g[0], g[2]), (g[1], g[3]), np.cos(beta), np.sin(beta), 64)
+    args = (mu0, *g, np.cos(beta), np.sin(beta), True, 64)
     compiled = full_contact._sums_nb(*args)
     reference = interpreted.load()["_sums_nb"](*args)
     for a, b in zip(compiled, reference, strict=True):
