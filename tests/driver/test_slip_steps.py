@@ -12,6 +12,7 @@ import pytest
 
 from frictionlab.driver import (
     Cycle,
+    DriverSettings,
     Hold,
     InitialConditions,
     NormalStep,
@@ -65,8 +66,9 @@ CASES = {
 
 
 def _run(params: SubloadingParams, program: Any, n: int, recording: Any) -> Any:
+    # the Python steps (the compiled loop has its own test: test_compiled_steps.py)
     return simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
-                    recording=recording)  # fmt: skip
+                    recording=recording, settings=DriverSettings(compiled=False))  # fmt: skip
 
 
 @pytest.mark.parametrize("case", list(CASES))

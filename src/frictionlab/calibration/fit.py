@@ -217,6 +217,12 @@ class Objective:
         """Forward-difference steps in theta: away from an upper bound and invalid laws."""
         _, hi = self.space.theta_bounds()
         h = FD_STEP * np.maximum(1.0, np.abs(theta))
+        inside = theta + h < hi
+        trials = np.repeat(theta[:, None], theta.size, axis=1)
+        trials[np.arange(theta.size), np.arange(theta.size)] += h
+        values = self.space.from_theta(trials[:, inside].T).T
+        if values.shape[1] and valid_column(self.base, self.space.names, values):
+            return np.where(inside, h, -h)  # every step inside: one check as per-point laws
         for j in range(theta.size):
             trial = theta.copy()
             trial[j] += h[j]
