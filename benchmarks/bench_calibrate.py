@@ -186,7 +186,8 @@ def _command(example: Path, runs: int) -> None:
         if i:  # the first run may compile
             results.append((wall, cpu, report["phases"], os.getloadavg()[0]))
     for wall, cpu, phases, load in results:
-        print(f"command            wall {wall:6.2f} s  CPU {cpu:6.2f} s (user+sys)  (load {load:.1f})")
+        print(f"command            wall {wall:6.2f} s  CPU {cpu:6.2f} s (user+sys)"
+              f"  (load {load:.1f})")  # fmt: skip
         for name, (w, c) in phases.items():
             print(f"    {name:28s} wall {w:6.2f} s  CPU {c:6.2f} s")
 
