@@ -491,7 +491,8 @@ def simulate(
     accuracy, max_halvings:
         Deprecated (one release): use ``settings=DriverSettings(...)``.
     progress:
-        ``progress(done, total)`` after every step.
+        ``progress(done, total)`` after every step (after every block of at most
+        :data:`~frictionlab.driver.compiled_steps.PROGRESS_STEPS` steps of the compiled loop).
     recording:
         Which steps and points to record and where the rows go (a streaming ``sink``);
         default: every step of every point, kept in memory. See
