@@ -4,7 +4,8 @@ Three measures, the load average printed beside each (a shared machine: CPU time
 measure, wall times are shown):
 
 1. ``steps``: one point and seven points (a fit's Jacobian run) through slide / hold /
-   slide / hold / reverse, every step recorded, with the driver's compiled loop off
+   slide / hold / reverse (3202 steps), every step recorded, no peak refinement (as a
+   fit runs the driver), with the driver's compiled loop off
    (``DriverSettings(compiled=False)``: the Python steps) and on, alternated in this
    process, median of ``--repeats``: process CPU per step [us]. The histories must agree
    to 1e-12 relative.
@@ -115,7 +116,9 @@ def _steps(n: int) -> tuple[float, dict[str, np.ndarray]]:
                Slide(velocity=1e-4, distance=3e-4, max_step=5e-7), Hold(duration=100.0),
                Reverse(distance=3e-4, max_step=5e-7))  # fmt: skip
     c0 = time.process_time()
-    h = simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n)
+    h = simulate(
+        params, program, InitialConditions(normal_traction=1e6), n_points=n, peak_accuracy=None
+    )  # as a fit runs it: no peak refinement
     per_step = (time.process_time() - c0) / h.work["steps"]
     arrays = {k: v for k, v in vars(h).items() if isinstance(v, np.ndarray)}
     return per_step * 1e6, arrays | {"work": np.array(list(h.work.values()))}
