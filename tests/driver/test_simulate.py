@@ -271,13 +271,15 @@ def test_a_failure_that_substepping_cannot_cure_stops_the_run(
 
 
 def test_progress_callback_and_input_validation() -> None:
-    calls: list[tuple[int, int]] = []
-    simulate(
-        set_a(),
-        (Slide(velocity=0.1, distance=0.01, steps=5),),
-        progress=lambda d, t: calls.append((d, t)),
-    )
-    assert calls == [(k, 5) for k in range(1, 6)]
+    for compiled, expected in ((False, [(k, 5) for k in range(1, 6)]), (True, [(5, 5)])):
+        calls: list[tuple[int, int]] = []  # every step; the compiled loop's blocks of steps
+        simulate(
+            set_a(),
+            (Slide(velocity=0.1, distance=0.01, steps=5),),
+            progress=lambda d, t: calls.append((d, t)),  # noqa: B023
+            settings=DriverSettings(compiled=compiled),
+        )
+        assert calls == expected
     with pytest.raises(ParameterError, match="accuracy"):
         simulate(set_a(), (Hold(duration=1.0),), settings=DriverSettings(accuracy=-1.0))
     with pytest.raises(ParameterError, match="number of points"):

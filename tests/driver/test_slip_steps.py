@@ -4,14 +4,13 @@ each run is repeated with the direct path switched off and compared bit for bit.
 
 from __future__ import annotations
 
-import dataclasses
 from typing import Any
 
-import numpy as np
 import pytest
 
 from frictionlab.driver import (
     Cycle,
+    DriverSettings,
     Hold,
     InitialConditions,
     NormalStep,
@@ -23,29 +22,7 @@ from frictionlab.driver import (
 )
 from frictionlab.subloading import SubloadingParams
 
-from .support import set_a
-
-
-def _same(a: Any, b: Any, where: str = "history") -> None:
-    """Deep, exact equality of arrays, dataclasses, dicts and sequences."""
-    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
-        assert np.asarray(a).dtype == np.asarray(b).dtype, where
-        assert np.array_equal(a, b, equal_nan=True), where
-    elif dataclasses.is_dataclass(a) and not isinstance(a, type):
-        assert type(a) is type(b), where
-        for f in dataclasses.fields(a):
-            _same(getattr(a, f.name), getattr(b, f.name), f"{where}.{f.name}")
-    elif isinstance(a, dict):
-        assert a.keys() == b.keys(), where
-        for key in a:
-            _same(a[key], b[key], f"{where}[{key!r}]")
-    elif isinstance(a, list | tuple):
-        assert len(a) == len(b), where
-        for i, (x, y) in enumerate(zip(a, b, strict=True)):
-            _same(x, y, f"{where}[{i}]")
-    else:
-        assert a == b or (a != a and b != b), where
-
+from .support import assert_same, set_a
 
 CASES = {
     "one point, slide-hold-slide-reverse": (
@@ -65,8 +42,9 @@ CASES = {
 
 
 def _run(params: SubloadingParams, program: Any, n: int, recording: Any) -> Any:
+    # the Python steps (the compiled loop has its own test: test_compiled_steps.py)
     return simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
-                    recording=recording)  # fmt: skip
+                    recording=recording, settings=DriverSettings(compiled=False))  # fmt: skip
 
 
 @pytest.mark.parametrize("case", list(CASES))
@@ -84,7 +62,7 @@ def test_direct_slip_steps_match_the_general_path(case: str, monkeypatch) -> Non
     assert fast.success and calls["direct"] >= 0.9 * fast.work["steps"]  # the path was taken
     monkeypatch.setattr(stepping.SlipSteps, "step", lambda self, state, control: None)
     general = _run(params, program, n, recording)
-    _same(fast, general)
+    assert_same(fast, general)
 
 
 def test_a_failed_direct_step_falls_back_to_the_general_path(monkeypatch) -> None:
@@ -103,5 +81,5 @@ def test_a_failed_direct_step_falls_back_to_the_general_path(monkeypatch) -> Non
         return None if count[0] % 4 == 0 else out
 
     monkeypatch.setattr(stepping.SlipSteps, "step", flaky)
-    _same(_run(params, program, n, recording), general)
+    assert_same(_run(params, program, n, recording), general)
     assert count[0] > 100

@@ -37,6 +37,7 @@ from frictionlab.calibration.model import (
     LOG_BOUNDS,
     Curve,
     FitSpace,
+    checked_law,
     evaluate_columns,
     valid_column,
     with_values,
@@ -154,7 +155,11 @@ class Objective:
             self.progress(self.runs, self.total)
 
     def _run(
-        self, columns: np.ndarray, curve: Curve, offsets: list[float] | None = None
+        self,
+        columns: np.ndarray,
+        curve: Curve,
+        offsets: list[float] | None = None,
+        law: SubloadingParams | None = None,
     ) -> np.ndarray:
         self._tick()
         return evaluate_columns(
@@ -165,15 +170,17 @@ class Objective:
             accuracy=self.accuracy,
             max_halvings=self.max_halvings,
             offsets=offsets,
+            law=law,
         )
 
-    def model(self, x: np.ndarray) -> list[np.ndarray]:
-        """Model friction ratio of every curve at physical values ``x`` (p,); the offsets
-        of the curves that fit theirs are left in :attr:`offsets` (None for the others)."""
+    def model(self, x: np.ndarray, law: SubloadingParams | None = None) -> list[np.ndarray]:
+        """Model friction ratio of every curve at physical values ``x`` (p,) (``law``: their
+        law, when built already); the offsets of the curves that fit theirs are left in
+        :attr:`offsets` (None for the others)."""
         models, self.offsets = [], []
         for c in self.curves:
             found: list[float] = []
-            models.append(self._run(x[:, None], c, found)[0])
+            models.append(self._run(x[:, None], c, found, law)[0])
             self.offsets.append(found[0] if found else None)
         return models
 
@@ -197,10 +204,11 @@ class Objective:
 
     def residuals(self, theta: np.ndarray) -> np.ndarray:
         x = self.space.from_theta(theta)
-        if not valid_column(self.base, self.space.names, x):
+        law = checked_law(self.base, self.space.names, x)
+        if law is None:
             return np.full(self.n_residuals, PENALTY)
         try:
-            models = self.model(x)
+            models = self.model(x, law)
         except FrictionlabError:
             return np.full(self.n_residuals, PENALTY)
         return self._stack(models)
@@ -217,6 +225,12 @@ class Objective:
         """Forward-difference steps in theta: away from an upper bound and invalid laws."""
         _, hi = self.space.theta_bounds()
         h = FD_STEP * np.maximum(1.0, np.abs(theta))
+        inside = theta + h < hi
+        trials = np.repeat(theta[:, None], theta.size, axis=1)
+        trials[np.arange(theta.size), np.arange(theta.size)] += h
+        values = self.space.from_theta(trials[:, inside].T).T
+        if values.shape[1] and valid_column(self.base, self.space.names, values):
+            return np.where(inside, h, -h)  # every step inside: one check as per-point laws
         for j in range(theta.size):
             trial = theta.copy()
             trial[j] += h[j]

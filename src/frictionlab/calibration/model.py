@@ -212,8 +212,11 @@ def evaluate_columns(
     accuracy: float | None = None,
     max_halvings: int = 10,
     offsets: list[float] | None = None,
+    law: SubloadingParams | None = None,
 ) -> np.ndarray:
     """(K, n) model friction ratio at the curve's samples for K parameter sets.
+
+    ``law``: the law of ``columns`` when the caller has built it already (:func:`checked_law`).
 
     A curve with ``offset_bounds`` is compared at the offset that fits the first column
     best (:func:`best_offset`); that offset is appended to ``offsets`` when given.
@@ -225,7 +228,9 @@ def evaluate_columns(
     """
     columns = np.asarray(columns, dtype=np.float64)
     k = columns.shape[1]
-    params = with_values(base, names, columns) if k > 1 else with_values(base, names, columns[:, 0])
+    params = law
+    if params is None:
+        params = with_values(base, names, columns if k > 1 else columns[:, 0])
     history = simulate(
         params,
         curve.program,
@@ -282,13 +287,20 @@ def best_offset(model_time: np.ndarray, model_ratio: np.ndarray, curve: Curve) -
     return best if misfit(best) <= values[k] else float(grid[k])
 
 
+def checked_law(
+    base: SubloadingParams, names: Sequence[str], values: np.ndarray
+) -> SubloadingParams | None:
+    """The law of ``values`` ((p,) or (p, K) per point), or None when it is not valid
+    (physical bounds of SubloadingParams)."""
+    try:
+        return with_values(base, names, values)
+    except ParameterError:
+        return None
+
+
 def valid_column(base: SubloadingParams, names: Sequence[str], values: np.ndarray) -> bool:
     """True when ``values`` (p,) make a valid law (physical bounds of SubloadingParams)."""
-    try:
-        with_values(base, names, values)
-    except ParameterError:
-        return False
-    return True
+    return checked_law(base, names, values) is not None
 
 
 def segment_durations(program: Program) -> list[float]:

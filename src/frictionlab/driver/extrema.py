@@ -126,8 +126,8 @@ class PeakTracker:
         self.start_ratio = _ratio(state.traction)
         self.best = np.full(n, -np.inf)
         self.k = np.full(n, -1, dtype=np.int64)
-        self.before = {name: np.array(getattr(state, name)) for name in _STATE}
-        self.after = {name: np.array(getattr(state, name)) for name in _STATE}
+        self.before = {name: np.array(getattr(state, name), order="C") for name in _STATE}
+        self.after = {name: np.array(getattr(state, name), order="C") for name in _STATE}
         self.ctl = _control_arrays(Control(np.zeros(n), np.zeros((n, 2)), np.zeros(n)), n)
         self.time = np.array(time)  # after step k
         self.slip = np.array(slip)

@@ -68,6 +68,7 @@ __all__ = [
     "Segment",
     "SegmentPlan",
     "Slide",
+    "SlipRuns",
     "Table",
     "Traction",
     "Turn",
@@ -155,6 +156,22 @@ class Control:
         return cached
 
 
+@dataclass(frozen=True)
+class SlipRuns:
+    """A segment that prescribes no traction, as runs of steps with one control each:
+    steps ``bounds[r] <= k < bounds[r + 1]`` apply ``controls[which[r]]`` (the driver's
+    compiled loop, :mod:`~frictionlab.driver.compiled_steps`, runs them)."""
+
+    controls: tuple[Control, ...]
+    bounds: np.ndarray  #: (R + 1,) int64, first step of each run, then the step count
+    which: np.ndarray  #: (R,) int64, index into ``controls`` of each run
+
+    @classmethod
+    def constant(cls, control: Control, steps: int) -> SlipRuns:
+        """Every step the same ``control``."""
+        return cls((control,), np.array([0, steps], dtype=np.int64), np.zeros(1, np.int64))
+
+
 # --------------------------------------------------------------------------- plans
 @dataclass
 class PlanContext:
@@ -195,6 +212,12 @@ class SegmentPlan:
     def control(self, k: int) -> Control:
         raise NotImplementedError
 
+    def slip_runs(self) -> SlipRuns | None:
+        """After :meth:`begin`: the controls of every step as :class:`SlipRuns` (the very
+        objects or values :meth:`control` gives) when no step prescribes a traction; None
+        otherwise."""
+        return None
+
     @property
     def is_hold(self) -> bool:
         """True when nothing slides during the segment (for marking holds in plots)."""
@@ -226,6 +249,9 @@ class _ConstantPlan(SegmentPlan):
 
     def control(self, k: int) -> Control:
         return self._control
+
+    def slip_runs(self) -> SlipRuns:
+        return SlipRuns.constant(self._control, self.steps)
 
     @property
     def is_hold(self) -> bool:
@@ -414,6 +440,12 @@ class _CyclePlan(SegmentPlan):
         q = (k // self.quarter) % 4  # quarters of a cycle: +, -, -, +
         return self._forward if q in (0, 3) else self._backward
 
+    def slip_runs(self) -> SlipRuns:
+        quarters = 4 * self.cycles
+        bounds = np.arange(quarters + 1, dtype=np.int64) * self.quarter
+        which = np.isin(np.arange(quarters) % 4, (1, 2)).astype(np.int64)
+        return SlipRuns((self._forward, self._backward), bounds, which)
+
 
 @dataclass(frozen=True)
 class NormalStep:
@@ -513,6 +545,9 @@ class _NormalPlan(SegmentPlan):
             return Control(dt, zeros, self.resolved["approach"] / self.steps)
         target = _lerp(self.start[:, 2], self.target, (k + 1) / self.steps)
         return Control(dt, zeros, np.zeros(n), fn_target=target)
+
+    def slip_runs(self) -> SlipRuns | None:
+        return None if self.target is not None else SlipRuns.constant(self.control(0), self.steps)
 
 
 @dataclass(frozen=True)
@@ -691,6 +726,14 @@ class _TablePlan(SegmentPlan):
             b = np.full(n, self.seg.normal_traction[i + 1])
             return Control(dt, du_t, np.zeros(n), fn_target=_lerp(a, b, (j + 1) / c))
         return Control(dt, du_t, np.zeros(n))
+
+    def slip_runs(self) -> SlipRuns | None:
+        if self.seg.normal_traction is not None:
+            return None
+        controls = tuple(self.control(int(k)) for k in self.first[:-1])
+        return SlipRuns(
+            controls, self.first.astype(np.int64), np.arange(len(controls), dtype=np.int64)
+        )
 
 
 # --------------------------------------------------------------------------- shared helpers

@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from frictionlab.driver import stepping
+from frictionlab.driver.compiled_steps import compiled_steps
 from frictionlab.driver.extrema import (
     DEFAULT_PEAK_ACCURACY,
     PeakTracker,
@@ -414,14 +415,20 @@ class DriverSettings:
     ``accuracy``: when given, a step is accepted only when one full step and two half
     steps agree to within it (friction-ratio units for tractions, and for R and F/F_s;
     :func:`~frictionlab.driver.stepping.step_error`); ``max_halvings``: the deepest
-    substepping, at most ``2**max_halvings`` substeps per step.
+    substepping, at most ``2**max_halvings`` substeps per step. ``compiled``: run the
+    steps of segments that prescribe no traction in one compiled loop where the run
+    allows it (:mod:`~frictionlab.driver.compiled_steps`: the same numbers as the Python
+    steps); False runs every step in Python (the reference).
     """
 
     accuracy: float | None = None
     max_halvings: int = 10
+    compiled: bool = True
 
     def __post_init__(self) -> None:
         _check_accuracy(self.accuracy, self.max_halvings)
+        if not isinstance(self.compiled, bool):
+            raise ParameterError("compiled", self.compiled, "true or false")
 
 
 #: Marks a deprecated keyword that was not passed.
@@ -484,7 +491,8 @@ def simulate(
     accuracy, max_halvings:
         Deprecated (one release): use ``settings=DriverSettings(...)``.
     progress:
-        ``progress(done, total)`` after every step.
+        ``progress(done, total)`` after every step (after every block of at most
+        :data:`~frictionlab.driver.compiled_steps.PROGRESS_STEPS` steps of the compiled loop).
     recording:
         Which steps and points to record and where the rows go (a streaming ``sink``);
         default: every step of every point, kept in memory. See
@@ -521,8 +529,10 @@ def simulate(
     success, message = True, f"completed {len(plans)} segments"
     pool = OutputPool(n)
     direct = stepping.slip_steps(params, pool, accuracy)
+    compiled = compiled_steps(direct, rec, n) if chosen.compiled else None
     tracker = None if peak_accuracy is None else PeakTracker(n)
     refined: list[RefinedPeaks] = []
+    checked: dict[bytes, dict[int, str]] = {}  # the snap-back check of reached tractions
     for index, plan in enumerate(plans, start=1):
         estimated = plan.estimated_steps
         steps = plan.begin(state.traction)
@@ -535,7 +545,15 @@ def simulate(
             tracker.begin_segment(state, rec.stats.time, rec.stats.slip, rec.stats.path_length)
         failed = False
         last = steps - 1
-        for k in range(steps):
+        runs = None if compiled is None else plan.slip_runs()
+        k = -1
+        while k + 1 < steps:
+            k += 1
+            if runs is not None:  # every step it can, in the compiled loop
+                assert compiled is not None
+                state, k = compiled.run(runs, k, steps, state, rec, tracker, work, progress, total)
+                if k == steps:
+                    break
             control = plan.control(k)
             quick = None
             if direct is not None and control.ft_target is None and control.fn_target is None:
@@ -583,7 +601,10 @@ def simulate(
             refined.append(found)
         if seg is not None:
             reached = seg.max_normal_traction
-            reasons = _snap_back_failures(params, reached)
+            key = reached.tobytes()  # segments often reach the same tractions: checked once
+            reasons = checked.get(key)
+            if reasons is None:
+                reasons = checked[key] = _snap_back_failures(params, reached)
             bad = list(reasons)  # points with a reason, in order
             if bad:
                 warnings.append(

@@ -231,14 +231,19 @@ class SlipSteps:
         if worst >= _FAILED:
             return None
         np.add(state.plastic_slip, out["dlam"], out=out["plastic_slip"])
+        return self.view(j, state.frame), du
+
+    def view(self, j: int, frame: np.ndarray) -> ContactState:
+        """The state held in the pool's set ``j`` (one fixed view per set and frame)."""
         view = self.views[j]
-        if view is None or view.frame is not state.frame:
+        if view is None or view.frame is not frame:
+            out = self.pool.sets[j]
             view = ContactState._views(
                 traction=out["traction"], F=out["F"], R=out["R"],
-                plastic_slip=out["plastic_slip"], gap=out["gap"], frame=state.frame,
+                plastic_slip=out["plastic_slip"], gap=out["gap"], frame=frame,
             )  # fmt: skip
             self.views[j] = view
-        return view, du
+        return view
 
 
 def slip_steps(
