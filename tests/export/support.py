@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import importlib
 import subprocess
 from collections.abc import Iterator
 from pathlib import Path
@@ -13,15 +14,23 @@ import numpy as np
 from frictionlab.export import abaqus, c_core
 from frictionlab.subloading import SubloadingParams, kernels
 
+# the module (the package exports the function of the same name)
+simulate_module = importlib.import_module("frictionlab.driver.simulate")
+
 HERE = Path(__file__).resolve().parent
 N_IN, N_OUT = 41, 23  # values per call record in and out (harness_uinter.f90)
 
 
 @contextlib.contextmanager
 def recorded_calls() -> Iterator[list[dict[str, Any]]]:
-    """Every call of the law's compiled kernel inside the block: inputs and outputs."""
+    """Every call of the law's compiled kernel inside the block: inputs and outputs.
+
+    The driver's compiled step loop calls the kernel from compiled code, out of reach of
+    the wrapper: it is switched off inside the block (every step then runs in Python).
+    """
     calls: list[dict[str, Any]] = []
     originals = kernels.step_points, kernels.step_points_parallel
+    loop = simulate_module.compiled_steps
 
     def wrap(kernel):  # type: ignore[no-untyped-def]
         def recorder(*args):  # type: ignore[no-untyped-def]
@@ -39,10 +48,12 @@ def recorded_calls() -> Iterator[list[dict[str, Any]]]:
 
     kernels.step_points = wrap(originals[0])
     kernels.step_points_parallel = wrap(originals[1])
+    simulate_module.compiled_steps = lambda *args: None  # type: ignore[assignment]
     try:
         yield calls
     finally:
         kernels.step_points, kernels.step_points_parallel = originals
+        simulate_module.compiled_steps = loop
 
 
 def records(calls: list[dict[str, Any]], params: SubloadingParams) -> np.ndarray:
