@@ -48,6 +48,7 @@ from frictionlab.subloading.evolution import (
 from frictionlab.subloading.lane_math import (
     atan2_first_quadrant,
     expm1_nonpositive,
+    expm1_small,
     sincos_half_pi,
 )
 from frictionlab.subloading.surfaces import (
@@ -1167,8 +1168,9 @@ ELASTIC, PLASTIC, BY_POINT = 0, 1, 2
  V_I1, V_I2, V_T1, V_T2, V_W, V_DLAM, V_WN, V_ARG_R, V_A, V_EM_R, V_EM_F, V_Y, V_S,
  V_ATAN, V_R, V_F, V_RES, V_R_GAMMA, V_PHI_1, V_PHI_2, V_HARD, V_COND, V_PHI_FN, V_DR,
  V_DDR, V_DDDR, V_DF, V_DDF, V_KIND, V_ACTIVE, V_ITER, V_T1_OLD, V_T2_OLD, V_FN,
- V_R_OLD, V_GAP_OLD, V_SLIP1, V_SLIP2, V_DUN) = range(0, 61 * LANES, LANES)  # fmt: skip
-N_ROWS = 61
+ V_R_OLD, V_GAP_OLD, V_SLIP1, V_SLIP2, V_DUN, V_DARG_R, V_DA, V_STEP_OK) = range(
+    0, 64 * LANES, LANES)  # fmt: skip
+N_ROWS = 64
 
 
 @njit(cache=True, inline="always")
@@ -1466,9 +1468,41 @@ def _lane_residual(law, dlam, gamma, i1, i2, t1, t2, W, w, y, s, atan, a, em_f, 
     return r, r_gamma, phi_1, phi_2, R, F, -phi * phi_w, hard, phi_w * w
 
 
+#: The step from the previous iterate that the transcendental functions may follow by
+#: their series (:func:`_lanes_follow`): at most STEP_RTOL of the exponent (and 1; the
+#: range of lane_math.expm1_small) ...
+STEP_RTOL = 2.0**-17
+#: ... and at most ANGLE_STEP_RTOL sin^2(pi R/2) in the ratio's angle variable.
+ANGLE_STEP_RTOL = 2.0**-20
+
+
+@njit(cache=True, inline="always")
+def _angle_step(y, s, X):  # fmt: skip
+    """Change of the ratio's angle theta = acos(y) when y becomes y e^-X (cot law,
+    ``X = pi/2 u d(dlam)``), by its series ``cot X - csc^2 cot X^2/2`` from
+    ``(y, s) = (cos theta, sin theta)``.
+
+    d theta/dX = cot theta, d^2/dX^2 = -csc^2 cot, d^3/dX^3 = csc^2 (2 cot^2 + csc^2) cot,
+    whose size is at most 3/s^5: for ``|X| <= ANGLE_STEP_RTOL s^2`` the truncation is below
+    ``ANGLE_STEP_RTOL^3 s/2 <= 2^-61 theta`` (theta >= s), i.e. rounding.
+    """
+    cot = y / s
+    step = cot * X * (1.0 - (1.0 + cot * cot) * (0.5 * X))
+    return step if X != 0.0 else 0.0
+
+
 @njit(cache=True, error_model="numpy")
-def _lanes_residual(v, law, dt):  # fmt: skip
-    """:func:`_state_at` at ``V_Q`` for the active lanes (the others keep their values)."""
+def _lanes_residual(v, law, dt, follow):  # fmt: skip
+    """:func:`_state_at` at ``V_Q`` for the active lanes (the others keep their values).
+
+    ``follow``: the lanes hold the residual at a previous iterate. When every active lane
+    has moved by a small step from it (the last Newton step of a converging solve, ~1e-6
+    relative), the ratio's and the size's exponentials follow by the exact product rule
+    ``expm1(x + d) = expm1(x) + (1 + expm1(x)) expm1(d)`` with the cubic
+    :func:`expm1_small`, and the ratio's angle by :func:`_angle_step`, instead of
+    evaluating expm1 twice and atan2 afresh: the same numbers to rounding, and the
+    residual itself (and so the convergence test) is still evaluated in full at the new q.
+    """
     for j in range(LANES):
         gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a, plain = _lane_return(
             law, v[V_Q + j], v[V_OMQ + j], v[V_FH1T + j], v[V_FH2T + j], dt)  # fmt: skip
@@ -1477,20 +1511,21 @@ def _lanes_residual(v, law, dt):  # fmt: skip
         plain = plain and arg_r <= 0.0 and a >= 0.0
         v[V_KIND + j] = BY_POINT if active and not plain else v[V_KIND + j]
         v[V_ACTIVE + j] = 1.0 if active and plain else 0.0
+        # the steps since the previous iterate (differences of nearby values: exact)
+        darg = arg_r - v[V_ARG_R + j]
+        da = a - v[V_A + j]
+        s_old = v[V_S + j]
+        small = (abs(darg) <= STEP_RTOL * min(-arg_r, 1.0)
+                 and abs(da) <= STEP_RTOL * min(a, 1.0)
+                 and abs(darg) <= ANGLE_STEP_RTOL * (s_old * s_old))  # fmt: skip
+        v[V_STEP_OK + j] = 0.0 if active and plain and not small else 1.0
         (v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j], v[V_T1 + j], v[V_T2 + j], v[V_W + j],
-         v[V_DLAM + j], v[V_WN + j], v[V_ARG_R + j], v[V_A + j]) = (
-            gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a)  # fmt: skip
-    for j in range(LANES):  # inline math (lane_math): every lane, packed
-        v[V_EM_R + j] = expm1_nonpositive(v[V_ARG_R + j])
-        v[V_EM_F + j] = expm1_nonpositive(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
-    for j in range(LANES):
-        y0 = v[V_Y0 + j]
-        em = v[V_EM_R + j]
-        s2 = v[V_S0 + j] * v[V_S0 + j] - y0 * y0 * (em * (2.0 + em))
-        v[V_Y + j] = y0 * (1.0 + em)
-        v[V_S + j] = math.sqrt(s2) if s2 > 0.0 else 0.0
-    for j in range(LANES):  # s >= 0 and y = y0 (1 + em) >= 0
-        v[V_ATAN + j] = atan2_first_quadrant(v[V_S + j], v[V_Y + j])
+         v[V_DLAM + j], v[V_WN + j], v[V_ARG_R + j], v[V_A + j], v[V_DARG_R + j],
+         v[V_DA + j]) = (gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a, darg, da)  # fmt: skip
+    if follow and _all_rows(v, V_STEP_OK):
+        _lanes_follow(v)
+    else:
+        _lanes_transcendental(v)
     for j in range(LANES):
         out = _lane_residual(law, v[V_DLAM + j], v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j],
                              v[V_T1 + j], v[V_T2 + j], v[V_W + j], v[V_WN + j], v[V_Y + j],
@@ -1507,6 +1542,51 @@ def _lanes_residual(v, law, dt):  # fmt: skip
         v[V_PHI_FN + j] = phi_fn if active else v[V_PHI_FN + j]
         v[V_HARD + j] = hard if active else v[V_HARD + j]
         v[V_COND + j] = cond if active else v[V_COND + j]
+
+
+@njit(cache=True, inline="always")
+def _lanes_transcendental(v):  # fmt: skip
+    """The ratio's (y, s, angle) and the size's expm1 at ``V_ARG_R``, ``V_A`` afresh."""
+    for j in range(LANES):  # inline math (lane_math): every lane, packed
+        v[V_EM_R + j] = expm1_nonpositive(v[V_ARG_R + j])
+        v[V_EM_F + j] = expm1_nonpositive(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
+    _lanes_sine(v)
+    for j in range(LANES):  # s >= 0 and y = y0 (1 + em) >= 0
+        v[V_ATAN + j] = atan2_first_quadrant(v[V_S + j], v[V_Y + j])
+
+
+@njit(cache=True, inline="always")
+def _lanes_follow(v):  # fmt: skip
+    """:func:`_lanes_transcendental` from the previous iterate's values, by the steps
+    ``V_DARG_R``, ``V_DA`` (all within the bounds of :func:`_lanes_residual`)."""
+    for j in range(LANES):
+        em_r = v[V_EM_R + j]
+        em_f = v[V_EM_F + j]
+        darg = v[V_DARG_R + j]
+        v[V_EM_R + j] = em_r + (1.0 + em_r) * expm1_small(darg)
+        v[V_EM_F + j] = em_f + (1.0 + em_f) * expm1_small(-v[V_DA + j])
+        v[V_ATAN + j] += _angle_step(v[V_Y + j], v[V_S + j], -darg)
+    _lanes_sine(v)
+
+
+@njit(cache=True, inline="always")
+def _lanes_sine(v):  # fmt: skip
+    """y = cos(pi R/2) = y0 (1 + em) and s = sin(pi R/2) from ``V_EM_R`` (packed sqrt)."""
+    for j in range(LANES):
+        y0 = v[V_Y0 + j]
+        em = v[V_EM_R + j]
+        s2 = v[V_S0 + j] * v[V_S0 + j] - y0 * y0 * (em * (2.0 + em))
+        v[V_Y + j] = y0 * (1.0 + em)
+        v[V_S + j] = math.sqrt(s2 if s2 > 0.0 else 0.0)
+
+
+@njit(cache=True, inline="always")
+def _all_rows(v, row):  # fmt: skip
+    """Every lane's value in ``row`` is 1."""
+    count = 0.0
+    for j in range(LANES):
+        count += v[row + j]
+    return count == LANES
 
 
 @njit(cache=True, error_model="numpy")
@@ -1527,7 +1607,7 @@ def _lanes_solve(v, law, dt):  # fmt: skip
         v[V_OMQ + j] = t if flip else 1.0 - t
         v[V_ACTIVE + j] = 1.0 if v[V_KIND + j] == PLASTIC else 0.0
         v[V_ITER + j] = 0.0
-    _lanes_residual(v, law, dt)
+    _lanes_residual(v, law, dt, False)
     Aref = law.Aref
     for _ in range(MAX_ITERATIONS):
         if _none_active(v):
@@ -1549,7 +1629,7 @@ def _lanes_solve(v, law, dt):  # fmt: skip
             v[V_Q + j] = q if going else v[V_Q + j]
             v[V_OMQ + j] = omq if going else v[V_OMQ + j]
             v[V_FLIP + j] = 1.0 if flip else 0.0
-        _lanes_residual(v, law, dt)
+        _lanes_residual(v, law, dt, True)
     for j in range(LANES):  # still iterating after MAX_ITERATIONS: not converged
         v[V_KIND + j] = BY_POINT if v[V_ACTIVE + j] == 1.0 else v[V_KIND + j]
 
