@@ -18,6 +18,7 @@ import importlib.util
 import os
 import statistics
 import subprocess
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -38,13 +39,14 @@ def _kernels_at(ref: str) -> ModuleType:
     ).stdout  # fmt: skip
     # one fixed file per revision, rewritten only when it changes: numba's cache keys on it
     tag = "".join(c if c.isalnum() else "_" for c in ref)
-    path = Path(tempfile.gettempdir()) / f"bench_lanes_{tag}" / "kernels_before.py"
+    path = Path(tempfile.gettempdir()) / f"bench_lanes_before_{tag}" / "kernels_before.py"
     path.parent.mkdir(exist_ok=True)
     if not path.exists() or path.read_text() != source:
         path.write_text(source)
     spec = importlib.util.spec_from_file_location("kernels_before", path)
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # numba's cache re-imports the module by its name
     spec.loader.exec_module(module)
     return module
 
