@@ -4,17 +4,25 @@ Both at N points of the ``frictionlab bench`` state (the full cone law, all slid
 fresh outputs with the 3x3 tangent, alternated in one process, median of the runs: wall
 and process CPU time per point, and the ratio law / Coulomb (target <= 3, issue 26).
 The serial lanes kernel is timed beside the per-point reference loop (the gain of the
-lanes, bit-identical results).
+lanes; the same numbers to rounding), and with ``--before REF`` beside the serial lanes
+kernel of the git revision REF (its kernels.py loaded as a module of its own, so that
+before and after alternate in one process).
 
-Run: ``python benchmarks/bench_lanes.py [--points N] [--repeats R]``.
+Run: ``python benchmarks/bench_lanes.py [--points N] [--repeats R] [--before main]``.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import os
 import statistics
+import subprocess
+import sys
+import tempfile
 import time
+from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 
@@ -23,10 +31,31 @@ from frictionlab.benchmark import _sliding, coulomb_update
 from frictionlab.subloading import SubloadingParams, kernels, update
 
 
+def _kernels_at(ref: str) -> ModuleType:
+    """subloading/kernels.py of the git revision ``ref``, imported as a module of its own."""
+    source = subprocess.run(
+        ["git", "show", f"{ref}:src/frictionlab/subloading/kernels.py"],
+        capture_output=True, text=True, check=True, cwd=Path(__file__).parent,
+    ).stdout  # fmt: skip
+    # one fixed file per revision, rewritten only when it changes: numba's cache keys on it
+    tag = "".join(c if c.isalnum() else "_" for c in ref)
+    path = Path(tempfile.gettempdir()) / f"bench_lanes_before_{tag}" / "kernels_before.py"
+    path.parent.mkdir(exist_ok=True)
+    if not path.exists() or path.read_text() != source:
+        path.write_text(source)
+    spec = importlib.util.spec_from_file_location("kernels_before", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # numba's cache re-imports the module by its name
+    spec.loader.exec_module(module)
+    return module
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--points", type=int, default=1_000_000)
     parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--before", help="a git revision whose serial lanes to time beside")
     args = parser.parse_args()
     n = args.points
     params = SubloadingParams(
@@ -41,9 +70,11 @@ def main() -> None:
             outs["F"], outs["R"], outs["gap"], outs["dlam"], outs["vp"], outs["diss"],
             outs["tangent"], outs["status"], outs["iterations"])  # fmt: skip
     threads = numba.get_num_threads()
+    before = _kernels_at(args.before) if args.before else None
     runs = {
         "by_point serial": (1, lambda: kernels.step_points_by_point(*call)),
         "lanes serial": (1, lambda: kernels.step_points(*call)),
+        **({f"lanes {args.before}": (1, lambda: before.step_points(*call))} if args.before else {}),
         "coulomb, 1 thread": (1, lambda: coulomb_update(state, du, 0.01, table)),
         "update(), 1 thread": (1, lambda: update(params, state, du, 0.01)),
         f"coulomb, {threads} threads": (threads, lambda: coulomb_update(state, du, 0.01, table)),
@@ -78,6 +109,9 @@ def main() -> None:
         print(f"{count} thread(s): law / like-for-like Coulomb, wall {ratio_wall:.2f}, "
               f"CPU {ratio_cpu:.2f}")  # fmt: skip
     print(f"lanes gain (serial CPU) {ns(cpu['by_point serial']) / ns(cpu['lanes serial']):.2f}")
+    if args.before:
+        gain = ns(cpu[f"lanes {args.before}"]) / ns(cpu["lanes serial"])
+        print(f"serial lanes, {args.before} / this tree (CPU) {gain:.2f}")
 
 
 if __name__ == "__main__":

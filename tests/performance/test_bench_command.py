@@ -31,6 +31,8 @@ def test_bench_writes_every_figure(tmp_path: Path) -> None:
         "parallel_gain",
     ):
         assert np.isfinite(law[key]) and law[key] > 0.0
+    met = law["law_over_coulomb_like_for_like"] <= law["target_law_over_coulomb_like_for_like"]
+    assert law["law_over_coulomb_like_for_like_target_met"] is met
     assert "speedup_over_python" not in law  # the interpreted-loop figure is retired
     assert data["lattice_partial"]["springs_per_second"] > 0.0
     driver = data["driver_overhead"]

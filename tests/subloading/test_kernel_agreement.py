@@ -11,6 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from frictionlab._jit import njit
+from frictionlab.benchmark import _sliding
 from frictionlab.subloading import SubloadingParams, initial_state, interpreted, kernels, update
 from frictionlab.subloading.return_map import (
     _FORM_CODES,
@@ -158,3 +160,82 @@ def test_lanes_give_the_numbers_of_the_point_loop(name: str) -> None:
     for key, ref in interpreted_ref.items():
         scale = max(float(np.abs(ref).max()), 1e-300)
         np.testing.assert_allclose(reference[key], ref, rtol=1e-12, atol=1e-12 * scale)
+
+
+#: The law of ``frictionlab bench``, whose state (benchmark._sliding: f_n = 1, 20 steps)
+#: slides at every point.
+BENCH_LAW = dict(CONE, u=100.0, kappa=1.0, xi=1e-3, rotation=(0.05, 0.02),
+                 orthotropy=(1.0, 0.6), orthotropy_angle=0.3)  # fmt: skip
+
+
+def test_lanes_agree_when_every_point_slides() -> None:
+    """Every lane plastic (no lane handed to the per-point loop for being elastic): the
+    lanes' solve, its series follow-up of the last step and the packed result and tangent
+    stage agree with the per-point loop to 1e-12, same statuses and iterations."""
+    params = SubloadingParams(**BENCH_LAW)  # type: ignore[arg-type]
+    state, du = _sliding(params, 4 * kernels.LANES, 1.0)
+    dt = np.array([0.01])
+    reference = _run(kernels.step_points_by_point, params, state, du, dt, True, shared_dt=True)
+    assert (reference["status"] == kernels.SLIP).all()
+    assert (reference["iterations"] >= 2).all()  # a Newton step after the first residual
+    for tangent in (True, False):
+        got = _run(kernels.step_points, params, state, du, dt, tangent, shared_dt=True)
+        for key, ref in reference.items():
+            if key == "tangent" and not tangent:
+                continue
+            if key in ("status", "iterations"):
+                np.testing.assert_array_equal(got[key], ref, err_msg=key)
+                continue
+            scale = max(float(np.abs(ref).max()), 1e-300)
+            np.testing.assert_allclose(got[key], ref, rtol=1e-12, atol=1e-12 * scale,
+                                       err_msg=key)  # fmt: skip
+
+
+@njit(cache=True, error_model="numpy")
+def _follow_and_fresh(traction, F_old, R_old, gap_old, slip_inc, P, dt, step):  # fmt: skip
+    """One group solved by the lanes, then its q moved by the relative ``step``: the
+    residual there by the series follow-up and afresh (two scratch arrays)."""
+    law, _, ca, sa, e_rec, _, _ = kernels._call_constants(P, dt, 0, 1.0, 0, 0, 0)
+    v = np.zeros(kernels.N_ROWS * kernels.LANES)
+    kernels._lanes_trial(v, 0, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_old,
+                         slip_inc)  # fmt: skip
+    kernels._lanes_start(v, law)
+    kernels._lanes_solve(v, law, dt)
+    for j in range(kernels.LANES):
+        q = v[kernels.V_Q + j] * (1.0 + step)
+        v[kernels.V_Q + j] = q
+        v[kernels.V_OMQ + j] = 1.0 - q
+        v[kernels.V_ACTIVE + j] = 1.0
+    fresh = v.copy()
+    kernels._lanes_residual(v, law, dt, True)
+    kernels._lanes_residual(fresh, law, dt, False)
+    return v, fresh
+
+
+def test_the_series_follow_up_is_the_fresh_residual_to_rounding() -> None:
+    """_lanes_residual after a small step (the last Newton step, ~1e-6 relative): the
+    series of expm1 and of the ratio's angle give the fresh evaluation's residual, R, F
+    and slope to a few ulp; a step beyond the bounds falls back to the fresh one."""
+    params = SubloadingParams(**BENCH_LAW)  # type: ignore[arg-type]
+    state, du = _sliding(params, kernels.LANES, 1.0)
+    args = (np.ascontiguousarray(state.traction), state.F, state.R, state.gap, du,
+            params._kernel_table, 0.01)  # fmt: skip
+    K = kernels
+    rows = {"R": K.V_R, "F": K.V_F, "angle": K.V_ATAN, "y": K.V_Y, "s": K.V_S}
+    # sums that cancel (dR F + R dF, Phi - R F): a few ulp of the group's largest
+    cancelling = {"r_gamma": K.V_R_GAMMA, "hard": K.V_HARD, "residual": K.V_RES}
+    lanes = slice(0, K.LANES)
+    for step in (1e-6, -1e-6):
+        follow, fresh = _follow_and_fresh(*args, step)
+        assert (follow[K.V_STEP_OK :][lanes] == 1.0).all()  # every lane within the bounds
+        for name, row in rows.items():
+            got, ref = follow[row:][lanes], fresh[row:][lanes]
+            np.testing.assert_allclose(got, ref, rtol=8 * 2.0**-52, atol=0.0, err_msg=name)
+        for name, row in cancelling.items():
+            got, ref = follow[row:][lanes], fresh[row:][lanes]
+            scale = max(float(np.abs(ref).max()), float(fresh[K.V_F :][lanes].max()))
+            np.testing.assert_allclose(got, ref, rtol=0.0, atol=8 * 2.0**-52 * scale,
+                                       err_msg=name)  # fmt: skip
+    follow, fresh = _follow_and_fresh(*args, 1e-3)  # beyond ANGLE_STEP_RTOL: afresh
+    assert (follow[K.V_STEP_OK :][lanes] == 0.0).all()
+    np.testing.assert_array_equal(follow[K.V_R :][lanes], fresh[K.V_R :][lanes])

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from frictionlab._jit import njit
-from frictionlab.subloading import lane_math
+from frictionlab.subloading import kernels, lane_math
 
 LONG = np.longdouble
 pytestmark = pytest.mark.skipif(
@@ -24,6 +24,18 @@ pytestmark = pytest.mark.skipif(
 def _expm1(x, out):  # fmt: skip
     for i in range(x.size):
         out[i] = lane_math.expm1_nonpositive(x[i])
+
+
+@njit(cache=True)
+def _expm1_small(x, out):  # fmt: skip
+    for i in range(x.size):
+        out[i] = lane_math.expm1_small(x[i])
+
+
+@njit(cache=True, error_model="numpy")  # as in the lanes: 1/0 is inf, not an exception
+def _angle_step(y, s, X, out):  # fmt: skip
+    for i in range(y.size):
+        out[i] = kernels._angle_step(y[i], s[i], X[i])
 
 
 @njit(cache=True)
@@ -125,3 +137,36 @@ def test_sincos_half_pi_within_two_ulp_and_the_reflection() -> None:
     np.testing.assert_array_equal(c[[0, 2]], [1.0, 0.0])
     np.testing.assert_array_equal(s[[0, 2]], [0.0, 1.0])
     assert c[1] == pytest.approx(math.sqrt(0.5), rel=2.3e-16) and s[1] == c[1]
+
+
+def test_expm1_small_within_one_ulp_over_its_range() -> None:
+    """The cubic of the lanes' follow-up step, either sign, up to 2^-17."""
+    top = lane_math.EXPM1_SMALL_MAX
+    magnitude = np.exp(RNG.uniform(np.log(1e-300), np.log(top), 50_000))
+    x = np.concatenate([magnitude, -magnitude, [top, -top]])
+    got = np.empty_like(x)
+    _expm1_small(x, got)
+    assert _ulps(got, np.expm1(x.astype(LONG))) <= 1.0
+    assert top >= kernels.STEP_RTOL  # the lanes call it only within its range
+
+
+def test_angle_step_is_the_exact_change_of_acos_to_rounding() -> None:
+    """theta + step(X) against acos(cos(theta) e^-X) for every step the lanes allow,
+    |X| <= ANGLE_STEP_RTOL sin^2(theta), over the whole quadrant (2 ulp of theta)."""
+    theta = np.concatenate([RNG.uniform(0.0, np.pi / 2, 50_000),
+                            np.exp(RNG.uniform(-12.0, 0.0, 10_000))])  # fmt: skip
+    y = np.cos(theta)
+    s = np.sin(theta)
+    X = kernels.ANGLE_STEP_RTOL * s * s * RNG.uniform(-1.0, 1.0, theta.size)
+    step = np.empty_like(theta)
+    _angle_step(y, s, X, step)
+    # the exact angle of the pair (y, s) as rounded, and of (y e^-X, s') on its circle:
+    # s'^2 = s^2 - y^2 expm1(-2X) (well conditioned, where acos near 1 is not)
+    yl, sl, Xl = y.astype(LONG), s.astype(LONG), X.astype(LONG)
+    start = np.arctan2(sl, yl)
+    exact = np.arctan2(np.sqrt(sl * sl - yl * yl * np.expm1(-2 * Xl)), yl * np.exp(-Xl))
+    got = start + step.astype(LONG)
+    assert _ulps(got, exact) <= 2.0
+    zero = np.empty(1)
+    _angle_step(np.array([1.0]), np.array([0.0]), np.array([0.0]), zero)
+    assert zero[0] == 0.0  # no step, no 0 * inf at theta = 0

@@ -48,6 +48,7 @@ from frictionlab.subloading.evolution import (
 from frictionlab.subloading.lane_math import (
     atan2_first_quadrant,
     expm1_nonpositive,
+    expm1_small,
     sincos_half_pi,
 )
 from frictionlab.subloading.surfaces import (
@@ -1167,8 +1168,10 @@ ELASTIC, PLASTIC, BY_POINT = 0, 1, 2
  V_I1, V_I2, V_T1, V_T2, V_W, V_DLAM, V_WN, V_ARG_R, V_A, V_EM_R, V_EM_F, V_Y, V_S,
  V_ATAN, V_R, V_F, V_RES, V_R_GAMMA, V_PHI_1, V_PHI_2, V_HARD, V_COND, V_PHI_FN, V_DR,
  V_DDR, V_DDDR, V_DF, V_DDF, V_KIND, V_ACTIVE, V_ITER, V_T1_OLD, V_T2_OLD, V_FN,
- V_R_OLD, V_GAP_OLD, V_SLIP1, V_SLIP2, V_DUN) = range(0, 61 * LANES, LANES)  # fmt: skip
-N_ROWS = 61
+ V_R_OLD, V_GAP_OLD, V_SLIP1, V_SLIP2, V_DUN, V_DARG_R, V_DA, V_STEP_OK, V_OUT_T1,
+ V_OUT_T2, V_OUT_F, V_OUT_R, V_OUT_DLAM, V_OUT_VP1, V_OUT_VP2, V_OUT_DISS, V_OUT_K00,
+ V_OUT_K01, V_OUT_K10, V_OUT_K11, V_OUT_K02, V_OUT_K12) = range(0, 78 * LANES, LANES)  # fmt: skip
+N_ROWS = 78
 
 
 @njit(cache=True, inline="always")
@@ -1466,9 +1469,41 @@ def _lane_residual(law, dlam, gamma, i1, i2, t1, t2, W, w, y, s, atan, a, em_f, 
     return r, r_gamma, phi_1, phi_2, R, F, -phi * phi_w, hard, phi_w * w
 
 
+#: The step from the previous iterate that the transcendental functions may follow by
+#: their series (:func:`_lanes_follow`): at most STEP_RTOL of the exponent (and 1; the
+#: range of lane_math.expm1_small) ...
+STEP_RTOL = 2.0**-17
+#: ... and at most ANGLE_STEP_RTOL sin^2(pi R/2) in the ratio's angle variable.
+ANGLE_STEP_RTOL = 2.0**-20
+
+
+@njit(cache=True, inline="always")
+def _angle_step(y, s, X):  # fmt: skip
+    """Change of the ratio's angle theta = acos(y) when y becomes y e^-X (cot law,
+    ``X = pi/2 u d(dlam)``), by its series ``cot X - csc^2 cot X^2/2`` from
+    ``(y, s) = (cos theta, sin theta)``.
+
+    d theta/dX = cot theta, d^2/dX^2 = -csc^2 cot, d^3/dX^3 = csc^2 (2 cot^2 + csc^2) cot,
+    whose size is at most 3/s^5: for ``|X| <= ANGLE_STEP_RTOL s^2`` the truncation is below
+    ``ANGLE_STEP_RTOL^3 s/2 <= 2^-61 theta`` (theta >= s), i.e. rounding.
+    """
+    cot = y / s
+    step = cot * X * (1.0 - (1.0 + cot * cot) * (0.5 * X))
+    return step if X != 0.0 else 0.0
+
+
 @njit(cache=True, error_model="numpy")
-def _lanes_residual(v, law, dt):  # fmt: skip
-    """:func:`_state_at` at ``V_Q`` for the active lanes (the others keep their values)."""
+def _lanes_residual(v, law, dt, follow):  # fmt: skip
+    """:func:`_state_at` at ``V_Q`` for the active lanes (the others keep their values).
+
+    ``follow``: the lanes hold the residual at a previous iterate. When every active lane
+    has moved by a small step from it (the last Newton step of a converging solve, ~1e-6
+    relative), the ratio's and the size's exponentials follow by the exact product rule
+    ``expm1(x + d) = expm1(x) + (1 + expm1(x)) expm1(d)`` with the cubic
+    :func:`expm1_small`, and the ratio's angle by :func:`_angle_step`, instead of
+    evaluating expm1 twice and atan2 afresh: the same numbers to rounding, and the
+    residual itself (and so the convergence test) is still evaluated in full at the new q.
+    """
     for j in range(LANES):
         gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a, plain = _lane_return(
             law, v[V_Q + j], v[V_OMQ + j], v[V_FH1T + j], v[V_FH2T + j], dt)  # fmt: skip
@@ -1477,20 +1512,21 @@ def _lanes_residual(v, law, dt):  # fmt: skip
         plain = plain and arg_r <= 0.0 and a >= 0.0
         v[V_KIND + j] = BY_POINT if active and not plain else v[V_KIND + j]
         v[V_ACTIVE + j] = 1.0 if active and plain else 0.0
+        # the steps since the previous iterate (differences of nearby values: exact)
+        darg = arg_r - v[V_ARG_R + j]
+        da = a - v[V_A + j]
+        s_old = v[V_S + j]
+        small = (abs(darg) <= STEP_RTOL * min(-arg_r, 1.0)
+                 and abs(da) <= STEP_RTOL * min(a, 1.0)
+                 and abs(darg) <= ANGLE_STEP_RTOL * (s_old * s_old))  # fmt: skip
+        v[V_STEP_OK + j] = 0.0 if active and plain and not small else 1.0
         (v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j], v[V_T1 + j], v[V_T2 + j], v[V_W + j],
-         v[V_DLAM + j], v[V_WN + j], v[V_ARG_R + j], v[V_A + j]) = (
-            gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a)  # fmt: skip
-    for j in range(LANES):  # inline math (lane_math): every lane, packed
-        v[V_EM_R + j] = expm1_nonpositive(v[V_ARG_R + j])
-        v[V_EM_F + j] = expm1_nonpositive(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
-    for j in range(LANES):
-        y0 = v[V_Y0 + j]
-        em = v[V_EM_R + j]
-        s2 = v[V_S0 + j] * v[V_S0 + j] - y0 * y0 * (em * (2.0 + em))
-        v[V_Y + j] = y0 * (1.0 + em)
-        v[V_S + j] = math.sqrt(s2) if s2 > 0.0 else 0.0
-    for j in range(LANES):  # s >= 0 and y = y0 (1 + em) >= 0
-        v[V_ATAN + j] = atan2_first_quadrant(v[V_S + j], v[V_Y + j])
+         v[V_DLAM + j], v[V_WN + j], v[V_ARG_R + j], v[V_A + j], v[V_DARG_R + j],
+         v[V_DA + j]) = (gamma, i1, i2, t1, t2, W, dlam, w, arg_r, a, darg, da)  # fmt: skip
+    if follow and _all_rows(v, V_STEP_OK):
+        _lanes_follow(v)
+    else:
+        _lanes_transcendental(v)
     for j in range(LANES):
         out = _lane_residual(law, v[V_DLAM + j], v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j],
                              v[V_T1 + j], v[V_T2 + j], v[V_W + j], v[V_WN + j], v[V_Y + j],
@@ -1507,6 +1543,49 @@ def _lanes_residual(v, law, dt):  # fmt: skip
         v[V_PHI_FN + j] = phi_fn if active else v[V_PHI_FN + j]
         v[V_HARD + j] = hard if active else v[V_HARD + j]
         v[V_COND + j] = cond if active else v[V_COND + j]
+
+
+@njit(cache=True, inline="always")
+def _lanes_transcendental(v):  # fmt: skip
+    """The ratio's (y, s, angle) and the size's expm1 at ``V_ARG_R``, ``V_A`` afresh."""
+    for j in range(LANES):  # inline math (lane_math): every lane, packed
+        em_r = expm1_nonpositive(v[V_ARG_R + j])
+        v[V_EM_R + j] = em_r
+        v[V_EM_F + j] = expm1_nonpositive(-v[V_A + j]) if v[V_A + j] != 0.0 else 0.0
+        v[V_Y + j], v[V_S + j] = _lane_sine(v[V_Y0 + j], v[V_S0 + j], em_r)
+    for j in range(LANES):  # s >= 0 and y = y0 (1 + em) >= 0
+        v[V_ATAN + j] = atan2_first_quadrant(v[V_S + j], v[V_Y + j])
+
+
+@njit(cache=True, inline="always")
+def _lanes_follow(v):  # fmt: skip
+    """:func:`_lanes_transcendental` from the previous iterate's values, by the steps
+    ``V_DARG_R``, ``V_DA`` (all within the bounds of :func:`_lanes_residual`)."""
+    for j in range(LANES):
+        em_r = v[V_EM_R + j]
+        em_f = v[V_EM_F + j]
+        darg = v[V_DARG_R + j]
+        em_r = em_r + (1.0 + em_r) * expm1_small(darg)
+        v[V_EM_R + j] = em_r
+        v[V_EM_F + j] = em_f + (1.0 + em_f) * expm1_small(-v[V_DA + j])
+        v[V_ATAN + j] += _angle_step(v[V_Y + j], v[V_S + j], -darg)
+        v[V_Y + j], v[V_S + j] = _lane_sine(v[V_Y0 + j], v[V_S0 + j], em_r)
+
+
+@njit(cache=True, inline="always")
+def _lane_sine(y0, s0, em):  # fmt: skip
+    """y = cos(pi R/2) = y0 (1 + em) and s = sin(pi R/2) from the ratio's expm1 ``em``."""
+    s2 = s0 * s0 - y0 * y0 * (em * (2.0 + em))
+    return y0 * (1.0 + em), math.sqrt(s2 if s2 > 0.0 else 0.0)
+
+
+@njit(cache=True, inline="always")
+def _all_rows(v, row):  # fmt: skip
+    """Every lane's value in ``row`` is 1."""
+    count = 0.0
+    for j in range(LANES):
+        count += v[row + j]
+    return count == LANES
 
 
 @njit(cache=True, error_model="numpy")
@@ -1527,7 +1606,7 @@ def _lanes_solve(v, law, dt):  # fmt: skip
         v[V_OMQ + j] = t if flip else 1.0 - t
         v[V_ACTIVE + j] = 1.0 if v[V_KIND + j] == PLASTIC else 0.0
         v[V_ITER + j] = 0.0
-    _lanes_residual(v, law, dt)
+    _lanes_residual(v, law, dt, False)
     Aref = law.Aref
     for _ in range(MAX_ITERATIONS):
         if _none_active(v):
@@ -1549,46 +1628,97 @@ def _lanes_solve(v, law, dt):  # fmt: skip
             v[V_Q + j] = q if going else v[V_Q + j]
             v[V_OMQ + j] = omq if going else v[V_OMQ + j]
             v[V_FLIP + j] = 1.0 if flip else 0.0
-        _lanes_residual(v, law, dt)
+        _lanes_residual(v, law, dt, True)
     for j in range(LANES):  # still iterating after MAX_ITERATIONS: not converged
         v[V_KIND + j] = BY_POINT if v[V_ACTIVE + j] == 1.0 else v[V_KIND + j]
 
 
 @njit(cache=True, inline="always")
-def _lane_result(v, j, law, ca, sa, ext1, ext2, want_tangent):  # fmt: skip
-    """The :data:`Result` of an ELASTIC or PLASTIC lane (:func:`_elastic`, steps 6-7)."""
+def _lane_outcome(v, j, law, ca, sa, ext1, ext2, want_tangent):  # fmt: skip
+    """Steps 6-7 of an ELASTIC or PLASTIC lane (:func:`_elastic`; :func:`_plastic` after
+    the solve), branch-free: both outcomes are computed and one is selected.
+
+    Returns (t1, t2, F, R, dlam, vp1, vp2, diss, k00, k01, k10, k11, k02, k12); the normal
+    traction is ``V_FN_TR``, k22 is alpha_n and the tangent is zero without want_tangent.
+    """
+    elastic = v[V_KIND + j] == ELASTIC
     f1t = v[V_F1T + j]
     f2t = v[V_F2T + j]
     fn_tr = v[V_FN_TR + j]
-    if v[V_KIND + j] == ELASTIC:
-        R_new = v[V_PHI_TR + j] / v[V_F_REC + j]
-        R_new = 1.0 if R_new > 1.0 else R_new
-        if want_tangent:
-            return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr,
-                           v[V_F_REC + j], R_new, 0.0, k00=law.alpha_t, k11=law.alpha_t,
-                           k02=ca * ext1 - sa * ext2, k12=sa * ext1 + ca * ext2,
-                           k22=law.alpha_n)  # fmt: skip
-        return _result(STICK, 0, ca * f1t - sa * f2t, sa * f1t + ca * f2t, fn_tr,
-                       v[V_F_REC + j], R_new, 0.0)  # fmt: skip
     fh1t = v[V_FH1T + j]
     fh2t = v[V_FH2T + j]
     W = v[V_W + j]
-    d1, d2, a1, a2, fh1, fh2 = _returned(fh1t, fh2t, law.A1, law.A2, v[V_GAMMA + j])
+    dlam = v[V_DLAM + j]
+    # elastic: the trial state, R = Phi/F capped at 1
+    R_el = v[V_PHI_TR + j] / v[V_F_REC + j]
+    R_el = 1.0 if R_el > 1.0 else R_el
+    # plastic: the return of the converged gamma, in principal axes
+    # _returned, inline (a call compiled with the exception model would keep the loop
+    # scalar)
+    gamma = v[V_GAMMA + j]
+    d1 = law.A1 * law.A1 + gamma
+    d2 = law.A2 * law.A2 + gamma
+    a1 = law.A1 * law.A1 / d1
+    a2 = law.A2 * law.A2 / d2
+    fh1 = fh1t * a1
+    fh2 = fh2t * a2
     tb1 = (fh1t / d1) / W
     tb2 = (fh2t / d2) / W
+    g1 = fn_tr * law.b1 + fh1
+    g2 = fn_tr * law.b2 + fh2
+    p1 = g1 if not elastic else f1t
+    p2 = g2 if not elastic else f2t
     k = Tangent(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    k02_el = 0.0
+    k12_el = 0.0
+    alpha_t = 0.0
     if want_tangent:
         tr = Trial(fn_tr, f1t, f2t, fh1t, fh2t, v[V_W_TR + j], v[V_PHI_TR + j], 0.0, 0.0,
                    law.alpha_t, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
                    ext1, ext2, 0.0, 0.0, 0.0)  # fmt: skip
-        res = Residual(v[V_RES + j], v[V_R_GAMMA + j], v[V_PHI_1 + j], v[V_PHI_2 + j],
-                       v[V_DLAM + j], v[V_R + j], 0.0, v[V_F + j], 0.0, v[V_PHI_FN + j],
-                       v[V_GAMMA + j], W, v[V_HARD + j], 0.0, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
+        res = Residual(v[V_RES + j], v[V_R_GAMMA + j], v[V_PHI_1 + j], v[V_PHI_2 + j], dlam,
+                       v[V_R + j], 0.0, v[V_F + j], 0.0, v[V_PHI_FN + j], v[V_GAMMA + j], W,
+                       v[V_HARD + j], 0.0, 0.0, 0.0, 0.0, 0.0)  # fmt: skip
         st = Start(v[V_R_START + j], False, 0.0, 0.0, 0.0)
-        k = _tangent(law, tr, st, res, v[V_Y0 + j], v[V_S0 + j], d1, d2, a1, a2, fh1, fh2, ca,
-                     sa)  # fmt: skip
-    return _slip(int(v[V_ITER + j]), v[V_DLAM + j], fn_tr * law.b1 + fh1, fn_tr * law.b2 + fh2, tb1,
-                 tb2, fn_tr, v[V_F + j], v[V_R + j], ca, sa, k)  # fmt: skip
+        k = _tangent(law, tr, st, res, v[V_Y0 + j], v[V_S0 + j], d1, d2, a1, a2, fh1, fh2,
+                     ca, sa)  # fmt: skip
+        k02_el = ca * ext1 - sa * ext2
+        k12_el = sa * ext1 + ca * ext2
+        alpha_t = law.alpha_t
+    return (ca * p1 - sa * p2, sa * p1 + ca * p2,
+            v[V_F_REC + j] if elastic else v[V_F + j],
+            R_el if elastic else v[V_R + j],
+            0.0 if elastic else dlam,
+            0.0 if elastic else dlam * (ca * tb1 - sa * tb2),
+            0.0 if elastic else dlam * (sa * tb1 + ca * tb2),
+            0.0 if elastic else dlam * (g1 * tb1 + g2 * tb2),
+            alpha_t if elastic else k.k00, 0.0 if elastic else k.k01,
+            0.0 if elastic else k.k10, alpha_t if elastic else k.k11,
+            k02_el if elastic else k.k02, k12_el if elastic else k.k12)  # fmt: skip
+
+
+@njit(cache=True, error_model="numpy")
+def _lanes_outcome(v, law, ca, sa, ext1, ext2, want_tangent):  # fmt: skip
+    """:func:`_lane_outcome` of every lane into the ``V_OUT_*`` rows (packed; a BY_POINT
+    lane's values are not used)."""
+    for j in range(LANES):
+        (v[V_OUT_T1 + j], v[V_OUT_T2 + j], v[V_OUT_F + j], v[V_OUT_R + j],
+         v[V_OUT_DLAM + j], v[V_OUT_VP1 + j], v[V_OUT_VP2 + j], v[V_OUT_DISS + j],
+         v[V_OUT_K00 + j], v[V_OUT_K01 + j], v[V_OUT_K10 + j], v[V_OUT_K11 + j],
+         v[V_OUT_K02 + j], v[V_OUT_K12 + j]) = _lane_outcome(v, j, law, ca, sa, ext1, ext2,
+                                                             want_tangent)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _lane_stored(v, j, law, want_tangent):  # fmt: skip
+    """The :data:`Result` of an ELASTIC or PLASTIC lane from its ``V_OUT_*`` rows."""
+    elastic = v[V_KIND + j] == ELASTIC
+    return Result(STICK if elastic else SLIP, int(v[V_ITER + j]), v[V_OUT_T1 + j],
+                  v[V_OUT_T2 + j], v[V_FN_TR + j], v[V_OUT_F + j], v[V_OUT_R + j], 0.0,
+                  v[V_OUT_DLAM + j], v[V_OUT_VP1 + j], v[V_OUT_VP2 + j], v[V_OUT_DISS + j],
+                  v[V_OUT_K00 + j], v[V_OUT_K01 + j], v[V_OUT_K10 + j], v[V_OUT_K11 + j],
+                  v[V_OUT_K02 + j], v[V_OUT_K12 + j],
+                  law.alpha_n if want_tangent else 0.0)  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")
@@ -1603,6 +1733,7 @@ def _lanes_group(
                  slip_inc)  # fmt: skip
     _lanes_start(v, law)
     _lanes_solve(v, law, dt)
+    _lanes_outcome(v, law, ca, sa, ext1, ext2, want_tangent)
     for j in range(LANES):
         i = base + j
         if v[V_KIND + j] == BY_POINT:
@@ -1611,7 +1742,7 @@ def _lanes_group(
                          slip_inc[i, 2], surface, tear_k, ulaw, integ, rform, open_frozen,
                          want_tangent)  # fmt: skip
         else:
-            res = _lane_result(v, j, law, ca, sa, ext1, ext2, want_tangent)
+            res = _lane_stored(v, j, law, want_tangent)
         _store(i, res, want_tangent, out_traction, out_F, out_R, out_gap, out_dlam, out_vp,
                out_diss, out_tangent, out_status, out_iter)  # fmt: skip
 

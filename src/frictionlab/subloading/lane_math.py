@@ -6,6 +6,8 @@ loops of the lanes; each is within 2 ulp of the exact value over its documented 
 
 - :func:`expm1_nonpositive`: ``expm1(x)`` for ``x <= 0`` (the ratio's and the size's
   exponentials in the return mapping: both arguments are -(positive) increments);
+- :func:`expm1_small`: ``expm1(x)`` for ``|x| <= 2^-17`` (a cubic; the change of an
+  exponential between two Newton iterates of the return mapping);
 - :func:`atan2_first_quadrant`: ``atan2(s, y)`` for ``s, y >= 0`` (the ratio
   R = atan2(s, y)/(pi/2) of the cot law, whose s and y are a sine and a cosine);
 - :func:`sincos_half_pi`: ``(cos, sin)`` of ``pi R/2`` for ``0 <= R <= 1``, with the exact
@@ -24,7 +26,13 @@ import math
 
 from frictionlab._jit import njit
 
-__all__ = ["atan2_first_quadrant", "expm1_nonpositive", "sincos_half_pi"]
+__all__ = [
+    "EXPM1_SMALL_MAX",
+    "atan2_first_quadrant",
+    "expm1_nonpositive",
+    "expm1_small",
+    "sincos_half_pi",
+]
 
 #: Below this argument expm1 is -1 to double precision (e^-40 = 4e-18 < 2^-53).
 _EXPM1_FLOOR = -40.0
@@ -99,6 +107,20 @@ def expm1_nonpositive(x):  # fmt: skip
     r = (x + k * _LN2_HI) + k * _LN2_LO
     scale = _pow2_neg(k)
     return scale * _expm1_core(r) + (scale - 1.0)
+
+
+#: The range |x| <= 2^-17 of :func:`expm1_small`.
+EXPM1_SMALL_MAX = 2.0**-17
+
+
+@njit(cache=True, inline="always")
+def expm1_small(x):  # fmt: skip
+    """``expm1(x)`` for ``|x| <= EXPM1_SMALL_MAX`` (either sign): ``x + x^2/2 + x^3/6``.
+
+    The truncation ``x^4/24`` is below ``|x| 2^-51/24 < 2^-55 |x|`` (a sixth of an ulp); the
+    lanes use it for the change of an exponential between two nearby Newton iterates.
+    """
+    return x + x * x * (0.5 + x * (1.0 / 6.0))
 
 
 @njit(cache=True, inline="always")
