@@ -49,10 +49,9 @@ def test_numpy_and_arrow_joins_write_the_same_bytes(
     col = {name: [row[j] for row in rows] for j, name in enumerate(names)}
     assert [float(v) for v in col["t"]] == cols["t"].tolist()
     assert col["ok"] == ["true" if v else "false" for v in cols["ok"]]
-    gap = cols["gap"]
-    assert [float(v) if v else None for v in col["gap"]] == [
-        None if m else v for v, m in zip(gap.data.tolist(), gap.mask.tolist(), strict=True)
-    ]
+    gap, hidden = np.ma.getdata(cols["gap"]).tolist(), np.ma.getmaskarray(cols["gap"]).tolist()
+    expected = [None if m else v for v, m in zip(gap, hidden, strict=True)]
+    assert [float(v) if v else None for v in col["gap"]] == expected
     assert col["kind"] == cols["kind"].tolist() and col["name"] == cols["name"].tolist()
 
 

@@ -200,7 +200,7 @@ def _rows_text(arrays: list[np.ndarray], names: list[str]) -> memoryview:
     starts = [base + offsets[:-1] for base, (_, offsets) in zip(bases, parts, strict=False)]
     lengths = [np.diff(offsets) for _, offsets in parts]
     data = np.concatenate([data for data, _ in parts])
-    return memoryview(_take(data, np.stack(starts, 1).ravel(), np.stack(lengths, 1).ravel())[0])
+    return _take(data, np.stack(starts, 1).ravel(), np.stack(lengths, 1).ravel())[0].data
 
 
 #: Rows from which Arrow joins the cells: a NumPy gather costs ~2.5 us/row more, Arrow's
