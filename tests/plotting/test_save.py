@@ -11,7 +11,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from frictionlab.plotting._ticks import readable_log_ticks
-from frictionlab.plotting.law import _point_colorbar, new_figure, plot_healing
+from frictionlab.plotting.law import _point_colorbar, new_figure
 from frictionlab.plotting.save import DPI, figure_png_bytes
 
 
@@ -39,12 +39,6 @@ def _colorbar() -> Figure:
     return fig
 
 
-def _healing() -> Figure:
-    hold = np.geomspace(1.0, 1e4, 6)
-    ax = plot_healing(hold, 0.01 * np.log10(hold), np.ones(6, int), 0.01, 0.0, ("a",))
-    return ax.figure  # type: ignore[return-value]
-
-
 def _no_layout() -> Figure:
     fig = Figure(figsize=(4.0, 3.0))
     ax = fig.add_subplot()
@@ -53,7 +47,7 @@ def _no_layout() -> Figure:
     return fig
 
 
-@pytest.mark.parametrize("build", [_two_panels, _colorbar, _healing, _no_layout])
+@pytest.mark.parametrize("build", [_two_panels, _colorbar, _no_layout])
 def test_png_bytes_equal_savefig(build: Callable[[], Figure]) -> None:
     """The same bytes as matplotlib's two-draw savefig of an identically built figure."""
     reference = build()
@@ -66,7 +60,7 @@ def test_png_bytes_equal_savefig(build: Callable[[], Figure]) -> None:
 
 def test_png_draws_once() -> None:
     """One draw of the figure per PNG (savefig draws a laid-out figure twice)."""
-    fig = _two_panels()
+    fig = _colorbar()
     figure_png_bytes(fig)  # gives the figure its Agg canvas
     draws: list[object] = []
     fig.canvas.mpl_connect("draw_event", draws.append)
