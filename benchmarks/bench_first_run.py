@@ -9,8 +9,10 @@ first simulate also lists the kernels numba compiled in it (a listener on numba'
 ``numba:compile`` event, which fires only for a real compilation, not a cache load): after
 the warm-up it should list none.
 
-``--cold`` adds the same first simulate on a second empty cache without the warm-up.
-Run: ``python benchmarks/bench_first_run.py [--cold] [--json FILE]``.
+``--cold`` adds the same first simulate on a second empty cache without the warm-up;
+``--repeat N`` runs the warm simulate N times (default 1) and gives the median and range
+(one run spreads by tenths of a second of CPU on a loaded machine).
+Run: ``python benchmarks/bench_first_run.py [--cold] [--repeat N] [--json FILE]``.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ import argparse
 import json
 import os
 import resource
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -59,9 +62,21 @@ def timed(args: list[str], env: dict[str, str], cwd: Path, spy: bool = False) ->
     return result
 
 
+def _median(runs: list[dict]) -> dict:
+    """The median wall and CPU time of ``runs`` (with their ranges when more than one)."""
+    out = {key: round(statistics.median(r[key] for r in runs), 2) for key in ("wall_s", "cpu_s")}
+    out["load"] = runs[-1]["load"]
+    if len(runs) > 1:
+        out["runs"] = len(runs)
+        for key in ("wall_s", "cpu_s"):
+            out[key + "_range"] = [min(r[key] for r in runs), max(r[key] for r in runs)]
+    return out
+
+
 def main() -> dict:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cold", action="store_true", help="also a first simulate, no warm-up")
+    parser.add_argument("--repeat", type=int, default=1, help="warm simulates to run (median)")
     parser.add_argument("--json", type=Path, help="write the figures here")
     args = parser.parse_args()
     result: dict = {"cores": os.cpu_count(), "load_at_start": os.getloadavg()[0]}
@@ -79,7 +94,8 @@ def main() -> dict:
                 result["first_simulate_after_warmup"] = timed(
                     [*simulate, "out-first"], env, work, spy=True
                 )
-                result["second_simulate"] = timed([*simulate, "out-second"], env, work)
+                runs = [timed([*simulate, f"out-{k}"], env, work) for k in range(args.repeat)]
+                result["second_simulate"] = _median(runs)
             else:
                 result["first_simulate_cold"] = timed([*simulate, "out-cold"], env, work, spy=True)
     for key, value in result.items():
@@ -89,6 +105,9 @@ def main() -> dict:
                 if "compiled" in value
                 else ""
             )
+            if "runs" in value:
+                extra += (f"  median of {value['runs']}: CPU {value['cpu_s_range'][0]:.2f}-"
+                          f"{value['cpu_s_range'][1]:.2f} s")  # fmt: skip
             print(f"{key:30s} wall {value['wall_s']:7.2f} s  CPU {value['cpu_s']:7.2f} s  "
                   f"load {value['load']:5.2f}{extra}")  # fmt: skip
     if args.json:

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import importlib.util
+import sys
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -62,3 +65,20 @@ def test_a_simulate_warms_the_law_loops_it_uses_and_the_driver(
     steps[0][1]()
     assert seen == ({False, True} if max(points) >= warmup_module.PARALLEL_POINTS else {False})
     assert warmup_module.steps_for("roughness") == (warmup_module.STEPS[2],)  # the lattice
+
+
+def test_warmup_byte_compiles_modules_even_when_python_would_not(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The modules a first command imports are compiled once, by the warm-up."""
+    package = tmp_path / "pkg"
+    (package / "sub").mkdir(parents=True)
+    sources = [package / "__init__.py", package / "sub" / "mod.py"]
+    for source in sources:
+        source.write_text("X = 1\n", encoding="utf-8")
+    monkeypatch.setattr(sys, "dont_write_bytecode", True)  # PYTHONDONTWRITEBYTECODE=1
+    assert "bytecode of frictionlab's modules" in dict(warmup_module.STEPS)
+    warmup_module._bytecode(package)
+    for source in sources:
+        cached = Path(importlib.util.cache_from_source(str(source)))
+        assert cached.is_file() and cached.read_bytes()[:4] == importlib.util.MAGIC_NUMBER

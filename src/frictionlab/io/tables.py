@@ -11,7 +11,7 @@ Every file opens with ``pandas.read_csv(path)`` and no other argument. Each titl
 everywhere). Floats are written in the shortest form that reads back to the same float64
 (orjson's shortest round-trip form, e.g. ``1e-6``), so a round trip is exact. Each column
 (each run of neighbouring number columns of one kind) is formatted by one vectorised call
-and its cells are views of that text; Arrow joins the cells of each row in one pass (no
+and its cells are views of that text; one NumPy gather joins the cells of each row (no
 Python object per cell, no per-cell string).
 Non-finite values are refused: a table never carries NaN or infinity. Booleans are written
 as ``true``/``false``; text cells may not contain commas or line breaks. An undefined value
@@ -130,7 +130,7 @@ def csv_pieces(
         yield _rows_text([a[s:e] for a in arrays], names)
 
 
-#: Rows formatted at a time (bounds the text held in memory, and Arrow's 32-bit offsets).
+#: Rows formatted at a time (bounds the text and the gather index held in memory).
 BLOCK_ROWS = 65536
 
 
@@ -170,16 +170,18 @@ def _check_finite(name: str, values: np.ndarray) -> None:
         raise ParameterError(f"column {name}", float(data[~finite][0]), "finite numbers only")
 
 
+#: Cells of one column: ``data[offsets[i]:offsets[i + 1]]`` is row i's text (uint8, int64).
+_Cells = tuple[np.ndarray, np.ndarray]
+
+
 def _rows_text(arrays: list[np.ndarray], names: list[str]) -> memoryview:
     """The CSV lines of equal-length columns, as one contiguous buffer.
 
     Each run of neighbouring number columns of one kind (floats, or integers) is formatted
     by one vectorised call, its cells being the rows' parts with their separator (``,``
-    or the line's end); Arrow joins the runs' cells of each row in one pass.
+    or the line's end); one gather joins the runs' cells of each row.
     """
-    import pyarrow.compute as pc
-
-    cells = []
+    parts: list[_Cells] = []
     start = 0
     while start < len(arrays):
         stop = start + 1
@@ -188,13 +190,48 @@ def _rows_text(arrays: list[np.ndarray], names: list[str]) -> memoryview:
             stop += 1
         sep = b"\n" if stop == len(arrays) else b","
         if kind:
-            cells.append(_number_cells(arrays[start:stop], kind, sep))
+            parts.append(_number_cells(arrays[start:stop], kind, sep))
         else:
-            cells.append(_cells(names[start], arrays[start], sep))
+            parts.append(_cells(names[start], arrays[start], sep))
         start = stop
-    lines = pc.binary_join_element_wise(*cells, _repeat(b"", len(arrays[0])))
+    n = len(arrays[0])
+    if n >= ARROW_JOIN_ROWS:
+        return _arrow_join(parts, n)
+    bases = np.cumsum([0] + [len(data) for data, _ in parts])
+    starts = [base + offsets[:-1] for base, (_, offsets) in zip(bases, parts, strict=False)]
+    lengths = [np.diff(offsets) for _, offsets in parts]
+    data = np.concatenate([data for data, _ in parts])
+    return _take(data, np.stack(starts, 1).ravel(), np.stack(lengths, 1).ravel())[0].data
+
+
+#: Rows from which Arrow joins the cells: a NumPy gather costs ~2.5 us/row more, Arrow's
+#: import ~0.1 s (a short run writes its small tables without importing pyarrow).
+ARROW_JOIN_ROWS = 32768
+
+
+def _arrow_join(parts: list[_Cells], n: int) -> memoryview:
+    """:func:`_rows_text`'s join by Arrow (its cells arrays are views of the parts)."""
+    import pyarrow as pa
+    import pyarrow.compute as pc
+
+    cells = [
+        pa.LargeStringArray.from_buffers(n, pa.py_buffer(offsets), pa.py_buffer(data))
+        for data, offsets in parts
+    ]
+    no_text = pa.py_buffer(b"")
+    empty = pa.LargeStringArray.from_buffers(n, pa.py_buffer(np.zeros(n + 1, np.int64)), no_text)
+    lines = pc.binary_join_element_wise(*cells, empty)
     offsets = np.frombuffer(lines.buffers()[1], np.int64)[lines.offset :]
     return memoryview(lines.buffers()[2])[offsets[0] : offsets[len(lines)]]
+
+
+def _take(data: np.ndarray, starts: np.ndarray, lengths: np.ndarray) -> _Cells:
+    """The cells ``data[starts[i]:starts[i] + lengths[i]]``, one after the other."""
+    offsets = np.zeros(len(lengths) + 1, np.int64)
+    np.cumsum(lengths, out=offsets[1:])
+    index = np.repeat(starts - offsets[:-1], lengths)
+    index += np.arange(offsets[-1], dtype=index.dtype)
+    return data[index], offsets
 
 
 def _number_kind(values: np.ndarray) -> str:
@@ -204,55 +241,46 @@ def _number_kind(values: np.ndarray) -> str:
     return {"f": "f", "i": "i", "u": "i"}.get(values.dtype.kind, "")
 
 
-def _number_cells(columns: list[np.ndarray], kind: str, sep: bytes) -> Any:
-    """The rows of neighbouring number columns (each part followed by ``sep``) as an
-    Arrow large-string array.
+def _number_cells(columns: list[np.ndarray], kind: str, sep: bytes) -> _Cells:
+    """The rows of neighbouring number columns, each part followed by ``sep``.
 
     One ``orjson.dumps`` of the row-major block: floats in their shortest round-trip
     form (e.g. ``1e-6``, ``0.00001``, ``2.0``; every value reads back as the same
-    float64), integers in full. The cells are views of that text: the array's offsets
-    are the positions after every k-th comma (k columns). The block has one spare row
-    of zeros so that every row used ends with a comma (the spare one with ``]``).
+    float64), integers in full. The cells are views of that text: the offsets are the
+    positions after every k-th comma (k columns). The block has one spare row of zeros
+    so that every row used ends with a comma (the spare one with ``]``).
     """
     import orjson
-    import pyarrow as pa
 
     n = len(columns[0])
     block = np.zeros((n + 1, len(columns)), np.float64 if kind == "f" else np.int64)
     for j, values in enumerate(columns):
         block[:n, j] = values
-    raw: bytes | bytearray = orjson.dumps(block.ravel(), option=orjson.OPT_SERIALIZE_NUMPY)
+    raw = orjson.dumps(block.ravel(), option=orjson.OPT_SERIALIZE_NUMPY)
+    text = np.frombuffer(raw, np.uint8)
     k = len(columns)
-    ends = np.flatnonzero(np.frombuffer(raw, np.uint8) == ord(","))[k - 1 :: k]
+    ends = np.flatnonzero(text == ord(","))[k - 1 :: k]
     if sep != b",":  # the line's end after each row
-        raw = bytearray(raw)
-        np.frombuffer(raw, np.uint8)[ends] = sep[0]
+        text = text.copy()
+        text[ends] = sep[0]
     offsets = np.empty(n + 1, np.int64)  # cells "a,b,", "c,d,", ...
     offsets[0], offsets[1:] = 1, ends + 1
-    return pa.LargeStringArray.from_buffers(n, pa.py_buffer(offsets), pa.py_buffer(raw))
+    return text, offsets
 
 
-def _cells(name: str, values: np.ndarray, sep: bytes) -> Any:
-    """One column's cells, each followed by ``sep``, as an Arrow large-string array
-    (number columns by :func:`_number_cells`).
-
-    Arrow arrays are built from buffers: ``pyarrow.array`` and ``pyarrow.scalar`` would
-    import pandas (~0.3 s), which a run writing its tables does not otherwise need.
-    """
-    import pyarrow as pa
-    import pyarrow.compute as pc
-
+def _cells(name: str, values: np.ndarray, sep: bytes) -> _Cells:
+    """One column's cells, each followed by ``sep`` (number columns by
+    :func:`_number_cells`; undefined entries are empty fields)."""
     n = len(values)
-    if np.ma.isMaskedArray(values):  # undefined entries: empty fields
+    if np.ma.isMaskedArray(values):
         mask = np.ma.getmaskarray(values)
         data = np.ma.getdata(values)
-        filled = _cells(name, np.where(mask, np.zeros((), data.dtype), data), sep)
-        bits = pa.Array.from_buffers(
-            pa.bool_(), n, [None, pa.py_buffer(np.packbits(mask, bitorder="little"))]
-        )
-        return pc.if_else(bits, _repeat(sep, n), filled)
+        text, offsets = _cells(name, np.where(mask, np.zeros((), data.dtype), data), sep)
+        starts = np.where(mask, len(text), offsets[:-1])
+        lengths = np.where(mask, len(sep), np.diff(offsets))
+        return _take(np.concatenate([text, np.frombuffer(sep, np.uint8)]), starts, lengths)
     if values.dtype.kind == "b":
-        return _levels([b"false" + sep, b"true" + sep], values)
+        return _levels([b"false" + sep, b"true" + sep], values.astype(np.int64))
     if values.dtype.kind in "iuf":
         return _number_cells([values], "f" if values.dtype.kind == "f" else "i", sep)
     items = np.asarray(values, dtype=object)  # text: few distinct values (kinds, statuses)
@@ -270,27 +298,13 @@ def _cells(name: str, values: np.ndarray, sep: bytes) -> Any:
     return _levels([(b"" if t is None else str(t).encode()) + sep for t in texts], codes)
 
 
-def _levels(texts: list[bytes], codes: np.ndarray) -> Any:
-    """The Arrow large-string array ``texts[codes]`` (``codes``: integers or booleans)."""
-    import pyarrow as pa
-
-    offsets = np.zeros(len(texts) + 1, np.int64)
-    np.cumsum([len(t) for t in texts], out=offsets[1:])
-    levels = pa.LargeStringArray.from_buffers(
-        len(texts), pa.py_buffer(offsets), pa.py_buffer(b"".join(texts))
-    )
-    indices = np.ascontiguousarray(codes, np.int64)
-    return levels.take(
-        pa.Array.from_buffers(pa.int64(), len(indices), [None, pa.py_buffer(indices)])
-    )
-
-
-def _repeat(text: bytes, n: int) -> Any:
-    """The Arrow large-string array of ``n`` times ``text``."""
-    import pyarrow as pa
-
-    offsets = np.arange(n + 1, dtype=np.int64) * len(text)
-    return pa.LargeStringArray.from_buffers(n, pa.py_buffer(offsets), pa.py_buffer(text * n))
+def _levels(texts: list[bytes], codes: np.ndarray) -> _Cells:
+    """The cells ``texts[codes]``."""
+    lengths = np.array([len(t) for t in texts], np.int64)
+    starts = np.zeros(len(texts), np.int64)
+    np.cumsum(lengths[:-1], out=starts[1:])
+    data = np.frombuffer(b"".join(texts), np.uint8)
+    return _take(data, starts[codes], lengths[codes])
 
 
 def write_csv(

@@ -20,13 +20,22 @@ DPI = 120
 
 
 def figure_png_bytes(fig: Figure) -> bytes:
-    """Render ``fig`` to PNG bytes in memory (Agg); log axes get readable ticks."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    """Render ``fig`` to PNG bytes in memory (Agg); log axes get readable ticks.
 
-    FigureCanvasAgg(fig)
+    The same pixels and file as ``fig.savefig(buffer, format="png", dpi=DPI)``, drawn
+    once instead of twice: with a layout engine, ``savefig`` draws the whole figure
+    once to run the layout and again to render, while the canvas's own draw runs the
+    layout and renders in one pass (tests/plotting/test_save.py compares the bytes).
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.image import imsave
+
+    canvas = FigureCanvasAgg(fig)
     readable_log_ticks(fig)
+    fig.set_dpi(DPI)
+    canvas.draw()
     buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=DPI)
+    imsave(buffer, canvas.buffer_rgba(), format="png", origin="upper", dpi=DPI)
     return buffer.getvalue()
 
 
