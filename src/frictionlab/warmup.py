@@ -47,7 +47,14 @@ def _law(loops: tuple[int, ...] = (2, PARALLEL_POINTS)) -> None:
 
 
 def _driver() -> None:
-    from frictionlab.driver import Hold, InitialConditions, Recording, Slide, simulate
+    from frictionlab.driver import (
+        DriverSettings,
+        Hold,
+        InitialConditions,
+        Recording,
+        Slide,
+        simulate,
+    )
     from frictionlab.subloading import SubloadingParams
 
     params = SubloadingParams(surface="coulomb", alpha_n=1e12, alpha_t=1e12, mu_s=0.5,
@@ -59,6 +66,10 @@ def _driver() -> None:
                           Recording(every=2, points=[0], sink=rows.append)):  # fmt: skip
             simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
                      recording=recording)  # fmt: skip
+        # the steps the compiled loop hands back (a failed point, substepped) run in Python
+        simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
+                 recording=Recording(every=1, sink=rows.append),
+                 settings=DriverSettings(compiled=False))  # fmt: skip
 
 
 def _lattice() -> None:
