@@ -60,8 +60,33 @@ def _check_mu0(mu0: float) -> float:
     return value
 
 
+def _finite(name: str, values: ArrayLike, allowed: str) -> FloatArray:
+    """``values`` as a float64 array of finite numbers (any shape), else ParameterError."""
+    try:
+        arr = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ParameterError(name, values, allowed) from None
+    if not np.all(np.isfinite(arr)):
+        raise ParameterError(name, float(arr[~np.isfinite(arr)].ravel()[0]), allowed)
+    return arr
+
+
+def _slopes(gx: ArrayLike, gy: ArrayLike, beta: ArrayLike) -> tuple[FloatArray, ...]:
+    """Gradients and direction (rad) checked finite and broadcast together."""
+    return tuple(
+        np.broadcast_arrays(
+            _finite("gx", gx, "finite slopes"),
+            _finite("gy", gy, "finite slopes"),
+            _finite("beta", beta, "finite angles (rad)"),
+        )
+    )
+
+
 def _check_phi(phi: ArrayLike, signed: bool) -> FloatArray:
-    arr = np.asarray(phi, dtype=np.float64)
+    try:
+        arr = np.asarray(phi, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ParameterError("phi", phi, "numbers (rad)") from None
     low = -0.5 * math.pi if signed else 0.0
     ok = np.isfinite(arr) & (arr > low if signed else arr >= low) & (arr < 0.5 * math.pi)
     if not np.all(ok):
@@ -105,8 +130,8 @@ def max_mu0(phi: ArrayLike, beta: ArrayLike) -> FloatArray:
     > 0`` (rising contact); ``inf`` otherwise (descending or flat contact: no restriction).
     At beta = 0 the bound is ``cot(phi)``. ``phi`` (signed) and ``beta`` (local) in rad.
     """
-    p = np.asarray(phi, dtype=np.float64)
-    b = np.asarray(beta, dtype=np.float64)
+    p = _finite("phi", phi, "finite angles (rad)")
+    b = _finite("beta", beta, "finite angles (rad)")
     a = np.tan(p) * np.cos(b)
     with np.errstate(divide="ignore", invalid="ignore"):
         bound = np.cos(p) * np.sqrt(1.0 + a * a) / a
@@ -121,7 +146,7 @@ def normal_force_factor(mu0: float, phi: ArrayLike, beta: ArrayLike) -> FloatArr
     """
     m = _check_mu0(mu0)
     p = _check_phi(phi, signed=True)
-    b = np.asarray(beta, dtype=np.float64)
+    b = _finite("beta", beta, "finite angles (rad)")
     den = _local_denominator(m, p, b)
     _raise_invalid(m, p, b, den, "normal_force_factor")
     s = np.sqrt(1.0 + (np.tan(p) * np.cos(b)) ** 2)
@@ -138,7 +163,7 @@ def h_local(mu0: float, phi: ArrayLike, beta: ArrayLike) -> tuple[FloatArray, Fl
     """
     m = _check_mu0(mu0)
     p = _check_phi(phi, signed=True)
-    b = np.asarray(beta, dtype=np.float64)
+    b = _finite("beta", beta, "finite angles (rad)")
     den = _local_denominator(m, p, b)
     _raise_invalid(m, p, b, den, "h_local")
     t = np.tan(p)
@@ -159,11 +184,7 @@ def h_global(
     sliding direction (rad). Returns (H_x, H_y) in global axes per unit F_z.
     """
     m = _check_mu0(mu0)
-    gxa, gya, b = np.broadcast_arrays(
-        np.asarray(gx, dtype=np.float64),
-        np.asarray(gy, dtype=np.float64),
-        np.asarray(beta, dtype=np.float64),
-    )
+    gxa, gya, b = _slopes(gx, gy, beta)
     cb, sb = np.cos(b), np.sin(b)
     inv_n = 1.0 / np.sqrt(1.0 + gxa**2 + gya**2)
     a = gxa * cb + gya * sb
@@ -189,11 +210,7 @@ def h_rotated(
     ``[[cos a, -sin a], [sin a, cos a]]``. Equal to :func:`h_global` to rounding; kept as
     an independent cross-check.
     """
-    gxa, gya, b = np.broadcast_arrays(
-        np.asarray(gx, dtype=np.float64),
-        np.asarray(gy, dtype=np.float64),
-        np.asarray(beta, dtype=np.float64),
-    )
+    gxa, gya, b = _slopes(gx, gy, beta)
     alpha = np.arctan2(gya, gxa)
     phi = np.arctan(np.hypot(gxa, gya))
     hx_l, hy_l = h_local(mu0, phi, b - alpha)
@@ -249,10 +266,10 @@ def wedge_friction(
     (..., 4), broadcast against ``beta_deg``.
     """
     m = _check_mu0(mu0)
-    angles = np.asarray(angles_deg, dtype=np.float64)
+    angles = _finite("angles_deg", angles_deg, "four angles (phi1, phi2, phi3, phi4)")
     if angles.ndim == 0 or angles.shape[-1] != 4:
         raise ParameterError("angles_deg", angles_deg, "four angles (phi1, phi2, phi3, phi4)")
-    beta = np.radians(np.asarray(beta_deg, dtype=np.float64))
+    beta = np.radians(_finite("beta_deg", beta_deg, "finite degrees"))
     shape = np.broadcast_shapes(angles.shape[:-1], beta.shape)
     mu_x = np.zeros(shape)
     mu_y = np.zeros(shape)
@@ -266,7 +283,7 @@ def wedge_friction(
 
 
 def _sin2(phi_deg: ArrayLike) -> FloatArray:
-    p = np.asarray(phi_deg, dtype=np.float64)
+    p = _finite("phi_deg", phi_deg, "0 <= phi < 90 degrees")
     if not np.all(np.isfinite(p) & (p >= 0.0) & (p < 90.0)):
         raise ParameterError("phi_deg", phi_deg, "0 <= phi < 90 degrees")
     return np.asarray(np.sin(np.radians(p)) ** 2, dtype=np.float64)
