@@ -73,6 +73,14 @@ def _optional(name: str, value: Any, rule: str | None) -> np.ndarray | None:
     return None if value is None else _checked(name, value, rule)
 
 
+def _check_field(seg: Any, name: str, rule: str | None, *, optional: bool = False) -> None:
+    """Replace field ``name`` of the frozen ``seg`` by its checked read-only array
+    (:func:`_checked`'s ``rule``); an ``optional`` field may stay None."""
+    value = getattr(seg, name)
+    checked = _optional(name, value, rule) if optional else _checked(name, value, rule)
+    object.__setattr__(seg, name, checked)
+
+
 def _steps(name: str, value: Any) -> int | None:
     if value is None:
         return None
@@ -141,12 +149,10 @@ class Slide:
 
     def __post_init__(self) -> None:
         _one_of("slide length", distance=self.distance, duration=self.duration)
-        object.__setattr__(self, "velocity", _checked("velocity", self.velocity, ">0"))
-        object.__setattr__(self, "distance", _optional("distance", self.distance, ">0"))
-        object.__setattr__(self, "duration", _optional("duration", self.duration, ">0"))
-        object.__setattr__(
-            self, "direction_deg", _optional("direction_deg", self.direction_deg, None)
-        )
+        _check_field(self, "velocity", ">0")
+        _check_field(self, "distance", ">0", optional=True)
+        _check_field(self, "duration", ">0", optional=True)
+        _check_field(self, "direction_deg", None, optional=True)
         _check_steps(self)
 
     def sizes(self) -> set[int]:
@@ -186,7 +192,7 @@ class Hold:
     kind: ClassVar[str] = "hold"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "duration", _checked("duration", self.duration, ">=0"))
+        _check_field(self, "duration", ">=0")
         _check_steps(self)
 
     def sizes(self) -> set[int]:
@@ -206,7 +212,7 @@ def _init_inherited(seg: Any) -> None:
         raise ParameterError(
             seg.kind, "distance and duration", "at most one of distance or duration"
         )
-    object.__setattr__(seg, "velocity", _optional("velocity", seg.velocity, ">0"))
-    object.__setattr__(seg, "distance", _optional("distance", seg.distance, ">0"))
-    object.__setattr__(seg, "duration", _optional("duration", seg.duration, ">0"))
+    _check_field(seg, "velocity", ">0", optional=True)
+    _check_field(seg, "distance", ">0", optional=True)
+    _check_field(seg, "duration", ">0", optional=True)
     _check_steps(seg)

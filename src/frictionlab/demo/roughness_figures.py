@@ -55,14 +55,17 @@ DEMO_2D = LatticeSettings(stations=32, time_samples=16)
 class _Writer:
     """Saves figures and tables under ``out_dir/roughness`` and returns relative paths."""
 
-    def __init__(self, out_dir: Path) -> None:
+    def __init__(self, out_dir: Path, step: Callable[[], None]) -> None:
         self.out_dir = out_dir
         self.folder = out_dir / FOLDER
+        self.step = step
 
     def figure(self, name: str, fig: Any) -> str:
+        """Save ``fig`` as ``name``.png; one step of the section's progress per figure."""
         from frictionlab.plotting.roughness import figure_png_bytes
 
         write_bytes_atomic(self.folder / f"{name}.png", figure_png_bytes(fig))
+        self.step()
         return f"{FOLDER}/{name}.png"
 
     def table(self, name: str, columns: Any, units: Any, description: str) -> None:
@@ -78,7 +81,7 @@ class _Writer:
             self.table(f"{prefix}_{_slug(name)}", result.columns(), result.units(), name)
 
 
-def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
+def _single_level(writer: _Writer) -> Section:
     from frictionlab.plotting.roughness import new_figure, plot_family_lines, plot_wavelength_map
 
     betas = np.arange(0.0, 91.0, 5.0)
@@ -104,7 +107,6 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
         "steeper-first faces (C, E) resist more than their reversals (D, F), which coincide "
         "at 90 deg.",
     )
-    step()
     generic = families.generic_cases(MU0, (30.0, 15.0), betas[::3], settings=DEMO_1D)
     writer.family("fig6b_generic_cases", generic)
     fig = new_figure(6.5, 4.5)
@@ -116,7 +118,6 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
         f"than the wedges (case B at least {excess:.3f} mu0 higher at every beta), as "
         "Jensen's inequality predicts.",
     )
-    step()
     surfaces = families.surfaces_2d_vs_beta(MU0, betas, settings=DEMO_2D)
     writer.family("fig7_surfaces_2d", surfaces)
     fig = new_figure(6.5, 4.5)
@@ -128,7 +129,6 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
         f"(mu/mu0 varies by {np.ptp(sym):.4f}), while the asymmetric (2 pi, 3 pi) and "
         "(3 pi, 2 pi) surfaces are mirror images about beta = 45 deg.",
     )
-    step()
     grid = families.wavelength_map(MU0, settings=DEMO_2D)
     writer.family("fig8_wavelength_map", grid)
     fig = new_figure(14.0, 4.2)
@@ -144,7 +144,6 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
         f"at ({fx[hi[0]]:g} pi, {fy[hi[1]]:g} pi) for beta = 0; beta = 90 deg is the transpose "
         "and beta = 45 deg is symmetric.",
     )
-    step()
     section.parameters = [
         ("mu0", "0.3", "1"),
         ("wedge angles (steep, shallow)", "30, 15", "deg"),
@@ -156,7 +155,7 @@ def _single_level(writer: _Writer, step: Callable[[], None]) -> Section:
     return section
 
 
-def _life(writer: _Writer, step: Callable[[], None]) -> Section:
+def _life(writer: _Writer) -> Section:
     from frictionlab.plotting import roughness_life as plots
 
     section = Section(
@@ -185,7 +184,6 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
         "stretched) and is negative under tension; identical in-phase surfaces at 90 deg "
         "show no adhesion effect.",
     )
-    step()
     wear = families.wear_cases(MU0, samples=11, settings=DEMO_2D)
     writer.results("fig11_wear", wear)
     w = wear["wedge/wedge"]
@@ -196,7 +194,6 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
         f"{w.mu[w.time.size // 2, 0] / MU0:.3f} mu0 at T_w/2), most at beta = 0 in 1-D and "
         "almost independently of beta in 2-D.",
     )
-    step()
     h1 = families.hierarchy_1d_cases(MU0, settings=DEMO_1D)
     writer.results("fig12_hierarchy", h1)
     rough30 = h1["wedge 30 rough/rough"]
@@ -208,7 +205,6 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
         f"{float(rough30.mu[last_valid, 0]) / MU0:.1f} mu0 at n = {last_valid}; the "
         "mean-slope wedge formulas (red dotted) underestimate the sinusoid hierarchies.",
     )
-    step()
     h2 = families.hierarchy_2d_cases(MU0, settings=DEMO_2D)
     writer.results("fig13_hierarchy_2d", h2)
     a, b, sym = h2["l2pi_3pi"], h2["l3pi_2pi"], h2["l2pi_2pi"]
@@ -222,7 +218,6 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
         "(2 pi, 3 pi) and (3 pi, 2 pi) levels agree at 45 deg and differ at beta = 0 "
         f"({float(a.mu[n, 0]) / MU0:.3f} vs {float(b.mu[n, 0]) / MU0:.3f} mu0 with {n} levels).",
     )
-    step()
     life = families.hierarchy_wear_case(MU0, samples_per_level=6, settings=DEMO_2D)
     writer.table("fig14_hierarchy_wear", life.columns(), life.units(), "hierarchy with wear")
     ratio = life.wear_time[1] / life.wear_time[0]
@@ -233,7 +228,6 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
         f"each level's wear time (Eq 35) is {ratio:.0f} times the previous one, like its "
         "amplitude.",
     )
-    step()
     section.parameters = [
         ("mu0", "0.3", "1"),
         ("k_c, k_t", "1, 0.5", "N/m"),
@@ -261,7 +255,7 @@ def _life(writer: _Writer, step: Callable[[], None]) -> Section:
 MEASURED_CUTOFFS = (150e-6, 60e-6, 25e-6)
 
 
-def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
+def _measured(writer: _Writer) -> Section:
     from frictionlab.demo.topography_file import ground_demo_path
     from frictionlab.plotting.multiscale import multiscale_figure
     from frictionlab.plotting.roughness import mirrored_scans, scenario_figure
@@ -301,7 +295,6 @@ def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
         f"(beta = 90 deg) {ratio[18]:.4f}: the file's rms slope {info['rms_slope']:.3f} makes "
         f"friction {100 * (ratio.max() / ratio.min() - 1):.2f}% anisotropic.",
     )
-    step()
     ms = multiscale_friction(prepared.surface, flat(), MU0, [0.0, 45.0, 90.0], MEASURED_CUTOFFS)
     writer.table("measured_multiscale", ms.columns(), ms.units(), "scale-resolved friction")
     fig = multiscale_figure(ms, f"{path.name}: friction vs the scales retained")
@@ -315,11 +308,8 @@ def _measured(writer: _Writer, step: Callable[[], None]) -> Section:
         f"{ms.cutoff_m[0] * 1e6:.0f} um carry {100 * share:.0f}% of the anisotropy "
         "(mu(0)/mu(90) - 1).",
     )
-    step()
     _measured_statistics(writer, section, prepared.surface, path.name)
-    step()
     _measured_models(writer, section, prepared.surface, path.name)
-    step()
     sizes = " x ".join(f"{v * 1e3:g}" for v in info["source_physical_sizes_m"])
     points = " x ".join(str(v) for v in info["source_points"])
     rms = f"{info['rms_height_m']:.3g}, {info['rms_slope']:.3g}"
@@ -419,13 +409,12 @@ def _slug(name: str) -> str:
 
 
 def _run(
-    builder: Callable[[_Writer, Callable[[], None]], Section],
+    builder: Callable[[_Writer], Section],
     out_dir: Path,
     progress: ProgressFactory | None,
     description: str,
     total: int,
 ) -> Section:
-    writer = _Writer(Path(out_dir))
     with (progress or no_progress)(description) as update:
         done = 0
 
@@ -435,7 +424,7 @@ def _run(
             update(done, total)
 
         update(0, total)
-        return builder(writer, step)
+        return builder(_Writer(Path(out_dir), step))
 
 
 def single_level_section(out_dir: Path, progress: ProgressFactory | None = None) -> Section:

@@ -66,31 +66,12 @@ def accumulate(step, dt, du, dpath, work, traction, time, slip, approach, plasti
     (or ``seg_peak``) records it with the step, time and path (time); raises
     ``seg_max_fn`` to f_n. Returns the number of points whose segment peak rose.
     """
-    n = traction.shape[0]
-    shared = dt.shape[0] == 1
-    rose = 0
-    for i in range(n):
-        t = time[i] + (dt[0] if shared else dt[i])
-        time[i] = t
-        slip[i, 0] += du[i, 0]
-        slip[i, 1] += du[i, 1]
-        approach[i] += du[i, 2]
-        plastic_work[i] += work[i]
-        p = path[i] + dpath[i]
-        path[i] = p
-        fn = traction[i, 2]
-        r = _length(traction[i, 0], traction[i, 1]) / fn if fn > 0.0 else 0.0
-        ratio[i] = r
-        # in both passes: the arrays stay in the loop (a helper taking them would be
-        # reference-counted per point); the shared part, _extremes, takes scalars
-        if r > seg_peak[i]:
-            rose += 1
-        if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change
-            (peak[i], peak_step[i], peak_time[i], peak_path[i], seg_peak[i], seg_peak_time[i],
-             seg_max_fn[i]) = _extremes(step, t, p, r, fn, peak[i], peak_step[i], peak_time[i],
-                                        peak_path[i], seg_peak[i], seg_peak_time[i],
-                                        seg_max_fn[i])  # fmt: skip
-    return rose
+    return accumulate_row(step, dt, du, dpath, work, traction, None, None, None, None, None,
+                          time, slip, approach, plastic_work, path,
+                          ratio, peak, peak_step, peak_time, peak_path,
+                          seg_peak, seg_peak_time, seg_max_fn,
+                          None, None, None, None, None, None, None, None, None,
+                          None)  # fmt: skip
 
 
 @njit(cache=True)
@@ -104,7 +85,9 @@ def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, stat
 
     ``F``, ``R``, ``plastic_slip``, ``status``, ``iterations`` (N,) are the step's new
     values; the ``row_*`` arrays (one row of the history, shapes as the running figures
-    and ``traction``) receive the figures after the step and the new state.
+    and ``traction``) receive the figures after the step and the new state. With
+    ``row_time`` None (:func:`accumulate`) no row is written: numba compiles that
+    signature without the row branch (a branch on an argument typed None is pruned).
     """
     n = traction.shape[0]
     shared = dt.shape[0] == 1
@@ -112,36 +95,37 @@ def accumulate_row(step, dt, du, dpath, work, traction, F, R, plastic_slip, stat
     for i in range(n):
         t = time[i] + (dt[0] if shared else dt[i])
         time[i] = t
-        row_time[i] = t
         s0 = slip[i, 0] + du[i, 0]
         s1 = slip[i, 1] + du[i, 1]
         slip[i, 0] = s0
         slip[i, 1] = s1
-        row_slip[i, 0] = s0
-        row_slip[i, 1] = s1
         a = approach[i] + du[i, 2]
         approach[i] = a
-        row_approach[i] = a
         w = plastic_work[i] + work[i]
         plastic_work[i] = w
-        row_work[i] = w
         p = path[i] + dpath[i]
         path[i] = p
         f0 = traction[i, 0]
         f1 = traction[i, 1]
         fn = traction[i, 2]
-        row_traction[i, 0] = f0
-        row_traction[i, 1] = f1
-        row_traction[i, 2] = fn
-        row_F[i] = F[i]
-        row_R[i] = R[i]
-        row_plastic_slip[i] = plastic_slip[i]
-        row_status[i] = status[i]
-        row_iterations[i] = iterations[i]
+        if row_time is not None:
+            row_time[i] = t
+            row_slip[i, 0] = s0
+            row_slip[i, 1] = s1
+            row_approach[i] = a
+            row_work[i] = w
+            row_traction[i, 0] = f0
+            row_traction[i, 1] = f1
+            row_traction[i, 2] = fn
+            row_F[i] = F[i]
+            row_R[i] = R[i]
+            row_plastic_slip[i] = plastic_slip[i]
+            row_status[i] = status[i]
+            row_iterations[i] = iterations[i]
         r = _length(f0, f1) / fn if fn > 0.0 else 0.0
         ratio[i] = r
-        # in both passes: the arrays stay in the loop (a helper taking them would be
-        # reference-counted per point); the shared part, _extremes, takes scalars
+        # the arrays stay in the loop (a helper taking them would be reference-counted
+        # per point); the shared part, _extremes, takes scalars
         if r > seg_peak[i]:
             rose += 1
         if r > peak[i] or r > seg_peak[i] or fn > seg_max_fn[i]:  # stores only on a change

@@ -44,13 +44,12 @@ from frictionlab.loading import (
     Reverse,
     Slide,
     _array,
+    _check_field,
     _check_steps,
-    _checked,
     _cycles,
     _init_inherited,
     _max_step,
     _one_of,
-    _optional,
     _sizes,
     _steps,
 )
@@ -342,7 +341,7 @@ class Turn:
     default_steps: ClassVar[int] = 100
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "angle_deg", _checked("angle_deg", self.angle_deg, None))
+        _check_field(self, "angle_deg", None)
         _init_inherited(self)
 
     def sizes(self) -> set[int]:
@@ -375,11 +374,9 @@ class Cycle:
     default_steps: ClassVar[int] = 400
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "amplitude", _checked("amplitude", self.amplitude, ">0"))
-        object.__setattr__(self, "velocity", _checked("velocity", self.velocity, ">0"))
-        object.__setattr__(
-            self, "direction_deg", _optional("direction_deg", self.direction_deg, None)
-        )
+        _check_field(self, "amplitude", ">0")
+        _check_field(self, "velocity", ">0")
+        _check_field(self, "direction_deg", None, optional=True)
         _steps("cycles", self.cycles)
         _check_steps(self)
         if self.steps is not None and self.steps < 4:
@@ -475,12 +472,10 @@ class NormalStep:
             traction=self.traction,
             traction_change=self.traction_change,
         )
-        object.__setattr__(self, "approach", _optional("approach", self.approach, None))
-        object.__setattr__(self, "traction", _optional("traction", self.traction, ">0"))
-        object.__setattr__(
-            self, "traction_change", _optional("traction_change", self.traction_change, None)
-        )
-        object.__setattr__(self, "duration", _checked("duration", self.duration, ">=0"))
+        _check_field(self, "approach", None, optional=True)
+        _check_field(self, "traction", ">0", optional=True)
+        _check_field(self, "traction_change", None, optional=True)
+        _check_field(self, "duration", ">=0")
         _check_steps(self)
 
     def sizes(self) -> set[int]:
@@ -578,7 +573,7 @@ class Traction:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "traction", _array("traction", self.traction, shape_tail=(2,)))
-        object.__setattr__(self, "duration", _checked("duration", self.duration, ">=0"))
+        _check_field(self, "duration", ">=0")
         object.__setattr__(self, "cycles", _cycles(self.cycles))
         _check_steps(self)
 

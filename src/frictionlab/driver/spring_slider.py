@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from frictionlab.driver.program import _checked, _count, _max_step, _steps
+from frictionlab.driver.program import _count
 from frictionlab.driver.simulate import (
     _UNSET,
     DriverSettings,
@@ -47,6 +47,7 @@ from frictionlab.driver.simulate import (
 )
 from frictionlab.driver.stepping import StepWork, substep
 from frictionlab.errors import ParameterError
+from frictionlab.loading import _check_field, _checked, _max_step, _steps
 from frictionlab.subloading import (
     ContactState,
     Status,
@@ -100,13 +101,11 @@ class SpringSlider:
     spectral_radius: float = 0.5
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "stiffness", _checked("stiffness", self.stiffness, ">0"))
-        object.__setattr__(self, "velocity", _checked("velocity", self.velocity, ">=0"))
-        object.__setattr__(self, "mass", _checked("mass", self.mass, ">=0"))
-        object.__setattr__(self, "damping", _checked("damping", self.damping, ">=0"))
-        object.__setattr__(
-            self, "direction_deg", _checked("direction_deg", self.direction_deg, None)
-        )
+        _check_field(self, "stiffness", ">0")
+        _check_field(self, "velocity", ">=0")
+        _check_field(self, "mass", ">=0")
+        _check_field(self, "damping", ">=0")
+        _check_field(self, "direction_deg", None)
         rho = self.spectral_radius
         if isinstance(rho, bool) or not isinstance(rho, int | float) or not 0.0 <= rho <= 1.0:
             raise ParameterError("spectral_radius", rho, "0 <= spectral_radius <= 1")
