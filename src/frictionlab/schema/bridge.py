@@ -17,7 +17,7 @@ import numpy as np
 
 from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient, steady_distance
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.schema.core import Field, Section, load
+from frictionlab.schema.core import Field, Section, loader
 from frictionlab.schema.kinds import INTEGER, NUMBER, STRING, listed
 from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, parse_roughness
 from frictionlab.schema.scenario import LAW, parse_law_table, per_point
@@ -164,7 +164,7 @@ def parse_bridge(
 def load_bridge(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> BridgeScenario:
     """Read, override (``section.key=value``) and validate a bridge scenario."""
     _refuse_not_used({item.split(".", 1)[0].strip(): None for item in overrides})
-    return load(BRIDGE_FILE, parse_bridge, path, overrides)
+    return loader(BRIDGE_FILE, parse_bridge, "a bridge scenario")(path, overrides)
 
 
 def _refuse_not_used(keys: Any) -> None:

@@ -8,7 +8,6 @@ one or more ``[[data]]`` curves, each with its ``[data.initial]`` and
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -21,7 +20,7 @@ from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.tribometer import ROLES, read_tribometer
-from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
+from frictionlab.schema.core import REQUIRED, Field, Section, loader, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
 from frictionlab.schema.scenario import (
     INITIAL,
@@ -256,8 +255,4 @@ def parse_calibrate(
     )  # fmt: skip
 
 
-def load_calibrate(
-    path: str | os.PathLike[str], overrides: Sequence[str] = ()
-) -> CalibrationConfig:
-    """Read, override (``section.key=value``) and validate a calibration file."""
-    return load(CALIBRATE_FILE, parse_calibrate, path, overrides)
+load_calibrate = loader(CALIBRATE_FILE, parse_calibrate, "a calibration file")

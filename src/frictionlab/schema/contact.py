@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
@@ -30,7 +29,7 @@ from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import load_toml
 from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
+from frictionlab.schema.core import REQUIRED, Field, Section, loader, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, PAIRS, STRING, listed
 from frictionlab.schema.scenario import LAW, parse_law_table, per_point, radians
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
@@ -247,10 +246,8 @@ def _mesh(data: Any, base_dir: Path) -> tuple[MeshSource, dict[str, Any]]:
 
 def _check_field(where: str, params: SubloadingParams, values: dict[str, Any]) -> None:
     """The law with ``values`` (a region's or a table's samples) must be a valid law."""
-    try:
-        params.replace(**values, orthotropy_convention="divide")
-    except ParameterError as exc:
-        raise InputError(f"{where}: with the [law] values, {exc}") from None
+    call = lambda: params.replace(**values, orthotropy_convention="divide")  # noqa: E731
+    reraise(where, call, InputError, ": with the [law] values, ")
 
 
 def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -> list[LawTable]:
@@ -493,6 +490,4 @@ def parse_contact(
     )  # fmt: skip
 
 
-def load_contact(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> ContactScenario:
-    """Read, override (``section.key=value``) and validate a contact scenario file."""
-    return load(CONTACT_FILE, parse_contact, path, overrides)
+load_contact = loader(CONTACT_FILE, parse_contact, "a contact scenario file")

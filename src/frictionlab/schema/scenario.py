@@ -37,11 +37,11 @@ from frictionlab.driver import (
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.recorder import Recording, RowSink
 from frictionlab.driver.simulate import MAX_HALVINGS, count_points
-from frictionlab.errors import InputError, ParameterError
+from frictionlab.errors import InputError
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
 from frictionlab.plotting.legends import point_labels
-from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
+from frictionlab.schema.core import REQUIRED, Field, Section, loader, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, NUMBERS, PAIRS, STRING, listed
 from frictionlab.subloading import SURFACES, SubloadingParams
 from frictionlab.subloading.params import (
@@ -474,11 +474,8 @@ def parse_scenario(
         raise InputError(f"[output].points has {output.points[-1]}: allowed point numbers "
                          f"1..{n} (the scenario has {n} point(s))")  # fmt: skip
     check_points(n, output, program is not None, opts.allow_large)  # before size-N arrays
-    try:
-        init.state(params, n)
-    except ParameterError as exc:  # the snap-back check names a [law] field
-        section = "[law]" if exc.field in LAW_KEYS else "[initial]"
-        raise ParameterError(f"{section}.{exc.field}", exc.value, exc.allowed) from None
+    # the snap-back check names a [law] field
+    reraise(lambda key: "[law]" if key in LAW_KEYS else "[initial]", lambda: init.state(params, n))
     if program is not None:
         plans = reraise("[[program]]", lambda: plan_program(program, n))
         counts = [(p.estimated_steps, f"[[program]] #{i}.{steps_key(seg)}")
@@ -510,11 +507,6 @@ def _or(value: Any, default: Any) -> Any:
     return default if value is None else value
 
 
-def load_scenario(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> Scenario:
-    """Read, override (``section.key=value``) and validate a scenario file."""
-    return load(SCENARIO_FILE, parse_scenario, path, overrides)
-
-
 def _jsonable(obj: Any) -> Any:
     """Plain JSON values (lists for arrays, None kept)."""
     if isinstance(obj, dict):
@@ -526,3 +518,6 @@ def _jsonable(obj: Any) -> Any:
     if isinstance(obj, np.generic):
         return obj.item()
     return obj
+
+
+load_scenario = loader(SCENARIO_FILE, parse_scenario, "a scenario file")

@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from frictionlab.errors import InputError
-from frictionlab.schema.core import REQUIRED, Field, Section, load
+from frictionlab.schema.core import REQUIRED, Field, Section, loader
 from frictionlab.schema.kinds import INTEGER, STRING
 
 if TYPE_CHECKING:
@@ -84,11 +84,6 @@ def parse_sweep(
     return SweepSpec(values["title"], path, values["command"], keys, make_cases(overrides))
 
 
-def load_sweep(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> SweepSpec:
-    """Read, override (``key=value``) and validate a sweep file."""
-    return load(SWEEP_FILE, parse_sweep, path, overrides)
-
-
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
     """Nested tables -> dotted keys (bare ``program.2.duration = ...`` nests in TOML)."""
     out: dict[str, Any] = {}
@@ -152,3 +147,6 @@ def _case_list(raw: Any) -> list[dict[str, Any]]:
         where = f"[[case]] #{i}"  # "a.x+b.y" = v: the same value for each key
         out.append({p: v for k, v in flat.items() for p in _links(where, k, v, owner)})
     return out
+
+
+load_sweep = loader(SWEEP_FILE, parse_sweep, "a sweep file")
