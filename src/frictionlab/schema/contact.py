@@ -25,7 +25,7 @@ from frictionlab.contact.linear import LINEAR_SOLVERS
 from frictionlab.contact.loading import Hold, NormalLoad, Reverse, Segment, Slide, Traction
 from frictionlab.contact.shapes import Base
 from frictionlab.contact.solver import DRIVES, SolverOptions, check_memory
-from frictionlab.errors import InputError, ParameterError
+from frictionlab.errors import InputError
 from frictionlab.io.config import load_toml
 from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
@@ -223,12 +223,7 @@ def _block(t: Any, mesh: MeshSource | None = None) -> tuple[Block, dict[str, Any
 
 def mesh_keys(call: Any) -> Any:
     """Run ``call``; name a ParameterError's key as [mesh].key (mesh.*) or [block].key."""
-    try:
-        return call()
-    except ParameterError as exc:
-        name = exc.field
-        where = f"[mesh].{name[5:]}" if name.startswith("mesh.") else f"[block].{name}"
-        raise ParameterError(where, exc.value, exc.allowed) from None
+    return reraise(lambda k: f"[mesh].{k[5:]}" if k.startswith("mesh.") else f"[block].{k}", call)
 
 
 def _mesh(data: Any, base_dir: Path) -> tuple[MeshSource, dict[str, Any]]:
@@ -324,11 +319,7 @@ def _law_regions(
         if "group" in echo:
             if mesh is None:
                 raise InputError(f"{where}.group needs a [mesh] (its named groups)")
-            group = echo["group"]
-            try:
-                mesh.check_group(group)
-            except ParameterError as exc:
-                raise ParameterError(f"{where}.group", exc.value, exc.allowed) from None
+            reraise(where, partial(mesh.check_group, echo["group"]))  # names .group
         if "bridge" in echo:
             values = {**_bridge_anisotropy(where, echo["bridge"], params, base_dir), **values}
         values = radians(values)

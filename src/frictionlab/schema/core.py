@@ -341,15 +341,15 @@ def reraise(
     where: str | Callable[[str], str], call: Callable[[], Any],
     error: type[Exception] = ParameterError, sep: str = ".",
 ) -> Any:  # fmt: skip
-    """Run ``call``; re-raise a ParameterError with ``where`` (or ``where(field)``) and
-    ``sep`` in front of its field, as an ``error`` (ParameterError or InputError)."""
+    """Run ``call``; re-raise a ParameterError naming its key ``where + sep + key`` (or
+    ``where(key)``), as an ``error`` (ParameterError or InputError)."""
     try:
         return call()
     except ParameterError as exc:
-        at = where(exc.field) if callable(where) else where
-        if error is not ParameterError:
-            raise error(f"{at}{sep}{exc}") from None
-        raise ParameterError(f"{at}{sep}{exc.field}", exc.value, exc.allowed) from None
+        name = where(exc.field) if callable(where) else f"{where}{sep}{exc.field}"
+        if error is not ParameterError:  # the message names the key first
+            raise error(name + str(exc)[len(exc.field) :]) from None
+        raise ParameterError(name, exc.value, exc.allowed) from None
 
 
 def check_overrides(root: Section, overrides: Iterable[str]) -> None:

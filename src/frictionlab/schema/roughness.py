@@ -383,8 +383,8 @@ def parse_roughness(
                **LATTICE.read(top["lattice"] or {}, only_given=True)}  # fmt: skip
     options.update({k: tuple(options[k]) for k in ("phase", "stations")
                     if isinstance(options.get(k), list)})  # fmt: skip
-    section = lambda key: "[sliding]" if key in SLIDING.keys() else "[lattice]"  # noqa: E731, SIM118
-    settings = reraise(section, lambda: LatticeSettings(**options), InputError)
+    name = lambda k: f"[sliding].{k}" if k in SLIDING.keys() else f"[lattice].{k}"  # noqa: E731, SIM118
+    settings = reraise(name, lambda: LatticeSettings(**options), InputError)
     output = OUTPUT.read(top["output"] or {})
     makers: dict[str, Callable[[Any], Any]] = {
         "adhesion": lambda t: _adhesion(t, betas, settings),

@@ -475,7 +475,9 @@ def parse_scenario(
                          f"1..{n} (the scenario has {n} point(s))")  # fmt: skip
     check_points(n, output, program is not None, opts.allow_large)  # before size-N arrays
     # the snap-back check names a [law] field
-    reraise(lambda key: "[law]" if key in LAW_KEYS else "[initial]", lambda: init.state(params, n))
+    reraise(
+        lambda k: f"[law].{k}" if k in LAW_KEYS else f"[initial].{k}", lambda: init.state(params, n)
+    )
     if program is not None:
         plans = reraise("[[program]]", lambda: plan_program(program, n))
         counts = [(p.estimated_steps, f"[[program]] #{i}.{steps_key(seg)}")
