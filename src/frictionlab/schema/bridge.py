@@ -114,15 +114,12 @@ def parse_bridge(
     roughness = parse_roughness(rest, base_dir=base_dir)
     options = _options(data.get("bridge", {}))
     law_data = data["law"]
-    if isinstance(law_data, dict):
-        for group in options.fit:
-            for key in _FITTED_KEYS[group]:
-                if key in law_data:
-                    raise InputError(
-                        f"[law].{key} is fitted by the bridge ([bridge].fit includes "
-                        f"'{group}'): leave it out, or remove '{group}' from [bridge].fit "
-                        "to hold it"
-                    )
+    given = law_data if isinstance(law_data, dict) else {}
+    for group, key in [(g, k) for g in options.fit for k in _FITTED_KEYS[g] if k in given]:
+        raise InputError(
+            f"[law].{key} is fitted by the bridge ([bridge].fit includes '{group}'): leave it "
+            f"out, or remove '{group}' from [bridge].fit to hold it"
+        )
     law, given = parse_law_table(law_data)
     if varying := per_point(given):
         _, key, value = varying[0]

@@ -245,7 +245,10 @@ def _check_field(where: str, params: SubloadingParams, values: dict[str, Any]) -
     reraise(where, call, InputError, ": with the [law] values, ")
 
 
-def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -> list[LawTable]:
+def _law_tables(
+    data: Any, params: SubloadingParams, dim: int, base_dir: Path
+) -> tuple[list[LawTable], dict[str, Any]]:
+    """[law_table]: the CSV tables read and checked, and the keys given."""
     given = LAW_TABLE.read(data, "[law_table]", only_given=True)
     axes = ("x",) if dim == 2 else ("x", "y")
     out = []
@@ -279,7 +282,7 @@ def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -
         law_table = LawTable(stored, points, values, source=f"[law_table].{key} ({name!r})")
         _check_field(where, params, {stored: law_table.values})
         out.append(law_table)
-    return out
+    return out, given
 
 
 def _bridge_anisotropy(where: str, name: str, params: SubloadingParams,
@@ -378,11 +381,9 @@ def _law_field(
         raise InputError("[law] takes one value per key when [law_table] or [[law_region]] "
                          "vary it along the interface")  # fmt: skip
     multiply = law_t.mapping().get("orthotropy_convention") == "multiply"
-    law_tables = _law_tables(table_data or {}, params, dim, base_dir)
+    law_tables, table_echo = _law_tables(table_data or {}, params, dim, base_dir)
     regions, region_echo = _law_regions(region_ts, params, dim, base_dir, multiply, mesh)
-    echo: dict[str, Any] = {}
-    if table_data is not None:
-        echo["law_table"] = LAW_TABLE.read(table_data, "[law_table]", only_given=True)
+    echo: dict[str, Any] = {"law_table": table_echo} if table_data is not None else {}
     if regions:
         echo["law_region"] = region_echo
     return LawField(tuple(law_tables), tuple(regions)), echo

@@ -240,16 +240,13 @@ def law_table(params: SubloadingParams) -> dict[str, Any]:
     """
     table: dict[str, Any] = {}
     for key in LAW_KEYS:
-        if key in ("orthotropy_angle", "orthotropy_angle_deg"):
-            angle = np.degrees(np.asarray(params.orthotropy_angle, dtype=float))
-            table["orthotropy_angle_deg"] = angle.tolist()
-            continue
-        value = getattr(params, key)
-        if value is None:
-            continue
-        table[key] = np.asarray(value).tolist() if isinstance(value, np.ndarray) else value
-    table["orthotropy_convention"] = "divide"
-    return table
+        value = getattr(params, key.removesuffix("_deg"))
+        if key.startswith("orthotropy_angle"):
+            angle = np.degrees(np.asarray(value, dtype=float))
+            key, value = "orthotropy_angle_deg", angle.tolist()
+        if value is not None:
+            table[key] = np.asarray(value).tolist() if isinstance(value, np.ndarray) else value
+    return {**table, "orthotropy_convention": "divide"}
 
 
 def parse_initial_table(
