@@ -114,47 +114,6 @@ CONTACT_MODELS = ("lattice", "elastic")
 SIDES = ("lower", "upper")
 
 
-@dataclass(frozen=True)
-class AdhesionOptions:
-    """The ``[adhesion]`` table: loads per spring (N), k_t (N/m; None: k_c / 2), directions."""
-
-    loads: np.ndarray
-    k_t: float | None
-    beta_deg: np.ndarray
-    compare_without_adhesion: bool
-    detachment: float | None = None
-
-
-@dataclass(frozen=True)
-class WearOptions:
-    """The ``[wear]`` table: Archard inputs, number of times, method, directions."""
-
-    settings: WearSettings
-    samples: int
-    method: str
-    beta_deg: np.ndarray
-
-
-@dataclass(frozen=True)
-class HierarchyOptions:
-    """The ``[hierarchy]`` table: levels (innermost first), options, directions."""
-
-    levels: tuple[HierarchyLevel, ...]
-    mu_passed: str
-    on_invalid: str
-    samples_per_level: int
-    beta_deg: np.ndarray
-
-
-@dataclass(frozen=True)
-class MultiscaleOptions:
-    """The ``[multiscale]`` table: band edges (wavelengths, m, descending), directions."""
-
-    cutoffs: tuple[float, ...]
-    beta_deg: np.ndarray
-    mu_passed: str
-
-
 _SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
 SURFACE = Section("surface", (
     Field("kind", STRING, "surface kind", "", REQUIRED, choices=SURFACE_KINDS),
@@ -264,7 +223,7 @@ ADHESION = Section("adhesion", (
           low=0, open="low", allowed="a cut-off elongation > 0 m"),
     _BETA,
     Field("compare_without_adhesion", BOOL, "also run without tensile springs", "", True),
-), "load sweep with tensile springs (Eqs 21-22)", "[adhesion]", by=AdhesionOptions)  # fmt: skip
+), "load sweep with tensile springs (Eqs 21-22)", "[adhesion]")  # fmt: skip
 _W: dict[str, Any] = {"default": REQUIRED, "by": WearSettings}  # > 0: WearSettings checks
 WEAR = Section("wear", (
     Field("wear_coefficient", NUMBER, "Archard K", "-", **_W),
@@ -319,6 +278,47 @@ ROUGHNESS_FILE = Section("roughness", (
     Field("contact", table=CONTACT),
 ), "A roughness scenario of `frictionlab roughness`: two surfaces slid over each other on the "
    "lattice-spring model. Lengths in m, angles in degrees.")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class AdhesionOptions:
+    """The ``[adhesion]`` table: loads per spring (N), k_t (N/m; None: k_c / 2), directions."""
+
+    loads: np.ndarray
+    k_t: float | None
+    beta_deg: np.ndarray
+    compare_without_adhesion: bool
+    detachment: float | None = None
+
+
+@dataclass(frozen=True)
+class WearOptions:
+    """The ``[wear]`` table: Archard inputs, number of times, method, directions."""
+
+    settings: WearSettings
+    samples: int
+    method: str
+    beta_deg: np.ndarray
+
+
+@dataclass(frozen=True)
+class HierarchyOptions:
+    """The ``[hierarchy]`` table: levels (innermost first), options, directions."""
+
+    levels: tuple[HierarchyLevel, ...]
+    mu_passed: str
+    on_invalid: str
+    samples_per_level: int
+    beta_deg: np.ndarray
+
+
+@dataclass(frozen=True)
+class MultiscaleOptions:
+    """The ``[multiscale]`` table: band edges (wavelengths, m, descending), directions."""
+
+    cutoffs: tuple[float, ...]
+    beta_deg: np.ndarray
+    mu_passed: str
 
 
 @dataclass(frozen=True)
@@ -501,7 +501,7 @@ def _multiscale(data: Any, betas: np.ndarray) -> MultiscaleOptions:
 
 
 def _adhesion(data: Any, betas: np.ndarray, settings: LatticeSettings) -> AdhesionOptions:
-    options, v = ADHESION.build(data, beta_deg=betas)
+    v = ADHESION.read(data, beta_deg=betas)
     loads, k_t = v["loads"], v["k_t"]
     if k_t is not None and not 0.0 <= k_t <= settings.k_c:
         raise InputError(f"[adhesion].k_t = {k_t!r} is invalid: allowed 0 <= k_t <= k_c = "
@@ -513,7 +513,7 @@ def _adhesion(data: Any, betas: np.ndarray, settings: LatticeSettings) -> Adhesi
         raise InputError("[adhesion] needs [sliding].control = 'load' (a load sweep)")
     if v["detachment"] is not None and kt_value == 0.0:
         raise InputError("[adhesion].detachment needs tensile springs (k_t > 0)")
-    return options
+    return AdhesionOptions(**v)
 
 
 def _wear(data: Any, betas: np.ndarray) -> WearOptions:
