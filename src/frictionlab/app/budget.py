@@ -25,9 +25,11 @@ import math
 import os
 import shutil
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
+
+import numpy as np
 
 from frictionlab.errors import InputError
 
@@ -257,6 +259,40 @@ def history_bound(
         f"{name} will be about {size} ({shape}, [output] every = {estimate.every}): "
         f"{every_text} or {by_points} would keep it under {_size(limit)}"
     )
+
+
+def check_points(n: int, output: Any, streamed: bool, allow_large: bool) -> None:
+    """Refuse a scenario's ``n`` points alone (one step), before anything of size n exists."""
+    recorded = output.recorded_points(n)
+    estimate = RunEstimate(2, n, "[run].n_points", output.every, recorded, streamed)
+    check_run_size(estimate, allow_large)
+
+
+def scenario_estimate(
+    counts: Sequence[tuple[int, str]], n: int, output: Any, streamed: bool, allow_large: bool
+) -> tuple[RunEstimate, Any, tuple[str, ...]]:
+    """A scenario's estimate from its segments ``(steps, key)``, refused when too large;
+    ``output`` (an OutputOptions) with the history's ``every`` bounded; the warnings."""
+    recorded = output.recorded_points(n)
+    estimate = largest(counts, n, "[run].n_points", output.every, recorded, streamed, output.format)
+    check_run_size(estimate, allow_large)  # the steps run whatever is recorded
+    every, warning = history_bound(estimate, output.every_given)
+    if every != output.every:  # the default recording, bounded
+        output, estimate = replace(output, every=every), replace(estimate, every=every)
+    return estimate, output, () if warning is None else (warning,)
+
+
+def steps_key(seg: Any) -> str:
+    """The key that sets a segment's step count: max_step when given, else steps."""
+    return "max_step" if getattr(seg, "max_step", None) is not None else "steps"
+
+
+def machine_steps(m: Any) -> int:
+    """The steps of a ``[machine]`` run (a MachineRun)."""
+    if m.max_step is not None:
+        longest = float(np.max(np.asarray(m.duration, dtype=np.float64)))
+        return max(1, math.ceil(longest / m.max_step))
+    return m.steps or 1000
 
 
 _OVERRIDE = "allowed fewer steps or points, or [run].allow_large = true to run it anyway"

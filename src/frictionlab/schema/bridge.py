@@ -17,7 +17,7 @@ import numpy as np
 
 from frictionlab.bridge import FIT_GROUPS, SCALES, steady_coefficient, steady_distance
 from frictionlab.errors import InputError, ParameterError
-from frictionlab.schema.core import Field, Section, load
+from frictionlab.schema.core import Field, Section, loader
 from frictionlab.schema.kinds import INTEGER, NUMBER, STRING, listed
 from frictionlab.schema.roughness import _TOP, MULTISCALE, RoughnessScenario, parse_roughness
 from frictionlab.schema.scenario import LAW, parse_law_table, per_point
@@ -114,15 +114,12 @@ def parse_bridge(
     roughness = parse_roughness(rest, base_dir=base_dir)
     options = _options(data.get("bridge", {}))
     law_data = data["law"]
-    if isinstance(law_data, dict):
-        for group in options.fit:
-            for key in _FITTED_KEYS[group]:
-                if key in law_data:
-                    raise InputError(
-                        f"[law].{key} is fitted by the bridge ([bridge].fit includes "
-                        f"'{group}'): leave it out, or remove '{group}' from [bridge].fit "
-                        "to hold it"
-                    )
+    given = law_data if isinstance(law_data, dict) else {}
+    for group, key in [(g, k) for g in options.fit for k in _FITTED_KEYS[g] if k in given]:
+        raise InputError(
+            f"[law].{key} is fitted by the bridge ([bridge].fit includes '{group}'): leave it "
+            f"out, or remove '{group}' from [bridge].fit to hold it"
+        )
     law, given = parse_law_table(law_data)
     if varying := per_point(given):
         _, key, value = varying[0]
@@ -164,7 +161,7 @@ def parse_bridge(
 def load_bridge(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> BridgeScenario:
     """Read, override (``section.key=value``) and validate a bridge scenario."""
     _refuse_not_used({item.split(".", 1)[0].strip(): None for item in overrides})
-    return load(BRIDGE_FILE, parse_bridge, path, overrides)
+    return loader(BRIDGE_FILE, parse_bridge, "a bridge scenario")(path, overrides)
 
 
 def _refuse_not_used(keys: Any) -> None:

@@ -8,7 +8,6 @@ one or more ``[[data]]`` curves, each with its ``[data.initial]`` and
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -21,7 +20,7 @@ from frictionlab.driver.simulate import count_points
 from frictionlab.errors import InputError, ParameterError
 from frictionlab.io.config import Table
 from frictionlab.io.tribometer import ROLES, read_tribometer
-from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
+from frictionlab.schema.core import REQUIRED, Field, Section, loader, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, listed
 from frictionlab.schema.scenario import (
     INITIAL,
@@ -172,10 +171,9 @@ def _parse_data(t: Table, base: Path) -> tuple[Curve, dict[str, Any]]:
             f"{t.where}: per-point lists in [data.initial] or [[data.program]] are not allowed "
             "(one curve is one contact point; give each curve its own [[data]])"
         )
-    path = Path(name) if Path(name).is_absolute() else base / name
     where = f"{t.where}.file '{name}'"
     measured = read_tribometer(
-        path, columns, units, where, sep=values["sep"], decimal=values["decimal"],
+        base / name, columns, units, where, sep=values["sep"], decimal=values["decimal"],
         encoding=values["encoding"], reciprocating=values["reciprocating"],
     )  # fmt: skip
     end = program_duration(program)
@@ -237,27 +235,16 @@ def parse_calibrate(
         field = exc.field if exc.field.startswith(("fit.", "law.")) else f"fit.{exc.field}"
         section, _, key = field.partition(".")
         raise ParameterError(f"[{section}].{key}", exc.value, exc.allowed) from None
-    curves, echoes = [], []
-    for t in tables["data"]:
-        curve, echo = _parse_data(t, Path(base_dir))
-        curves.append(curve)
-        echoes.append(echo)
+    curves, echoes = zip(*(_parse_data(t, Path(base_dir)) for t in tables["data"]), strict=True)
     n_samples = sum(c.n_samples for c in curves)
     if n_samples <= len(names):
         raise InputError(f"[[data]]: {n_samples} samples in all, fewer than needed to fit "
                          f"{len(names)} parameters")  # fmt: skip
     return CalibrationConfig(
         title=top["title"], params=params, law_given=given, names=tuple(names), bounds=bounds,
-        curves=tuple(curves), data_echo=tuple(echoes),
-        max_evaluations=fit_values["max_evaluations"], profile=fit_values["profile"],
-        profile_points=fit_values["profile_points"], profile_max=fit_values["profile_max"],
-        source=source, starts=fit_values["starts"], seed=fit_values["seed"],
-        band_level=fit_values["band_level"],
+        curves=curves, data_echo=echoes, source=source,
+        **{k: v for k, v in fit_values.items() if k != "parameters"},
     )  # fmt: skip
 
 
-def load_calibrate(
-    path: str | os.PathLike[str], overrides: Sequence[str] = ()
-) -> CalibrationConfig:
-    """Read, override (``section.key=value``) and validate a calibration file."""
-    return load(CALIBRATE_FILE, parse_calibrate, path, overrides)
+load_calibrate = loader(CALIBRATE_FILE, parse_calibrate, "a calibration file")

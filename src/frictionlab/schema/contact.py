@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
@@ -26,11 +25,11 @@ from frictionlab.contact.linear import LINEAR_SOLVERS
 from frictionlab.contact.loading import Hold, NormalLoad, Reverse, Segment, Slide, Traction
 from frictionlab.contact.shapes import Base
 from frictionlab.contact.solver import DRIVES, SolverOptions, check_memory
-from frictionlab.errors import InputError, ParameterError
+from frictionlab.errors import InputError
 from frictionlab.io.config import load_toml
 from frictionlab.io.mesh_files import read_mesh
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
+from frictionlab.schema.core import REQUIRED, Field, Section, loader, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, PAIRS, STRING, listed
 from frictionlab.schema.scenario import LAW, parse_law_table, per_point, radians
 from frictionlab.subloading import SubloadingParams, check_normal_capacity, check_snap_back
@@ -224,12 +223,7 @@ def _block(t: Any, mesh: MeshSource | None = None) -> tuple[Block, dict[str, Any
 
 def mesh_keys(call: Any) -> Any:
     """Run ``call``; name a ParameterError's key as [mesh].key (mesh.*) or [block].key."""
-    try:
-        return call()
-    except ParameterError as exc:
-        name = exc.field
-        where = f"[mesh].{name[5:]}" if name.startswith("mesh.") else f"[block].{name}"
-        raise ParameterError(where, exc.value, exc.allowed) from None
+    return reraise(lambda k: f"[mesh].{k[5:]}" if k.startswith("mesh.") else f"[block].{k}", call)
 
 
 def _mesh(data: Any, base_dir: Path) -> tuple[MeshSource, dict[str, Any]]:
@@ -247,13 +241,14 @@ def _mesh(data: Any, base_dir: Path) -> tuple[MeshSource, dict[str, Any]]:
 
 def _check_field(where: str, params: SubloadingParams, values: dict[str, Any]) -> None:
     """The law with ``values`` (a region's or a table's samples) must be a valid law."""
-    try:
-        params.replace(**values, orthotropy_convention="divide")
-    except ParameterError as exc:
-        raise InputError(f"{where}: with the [law] values, {exc}") from None
+    call = lambda: params.replace(**values, orthotropy_convention="divide")  # noqa: E731
+    reraise(where, call, InputError, ": with the [law] values, ")
 
 
-def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -> list[LawTable]:
+def _law_tables(
+    data: Any, params: SubloadingParams, dim: int, base_dir: Path
+) -> tuple[list[LawTable], dict[str, Any]]:
+    """[law_table]: the CSV tables read and checked, and the keys given."""
     given = LAW_TABLE.read(data, "[law_table]", only_given=True)
     axes = ("x",) if dim == 2 else ("x", "y")
     out = []
@@ -287,7 +282,7 @@ def _law_tables(data: Any, params: SubloadingParams, dim: int, base_dir: Path) -
         law_table = LawTable(stored, points, values, source=f"[law_table].{key} ({name!r})")
         _check_field(where, params, {stored: law_table.values})
         out.append(law_table)
-    return out
+    return out, given
 
 
 def _bridge_anisotropy(where: str, name: str, params: SubloadingParams,
@@ -327,11 +322,7 @@ def _law_regions(
         if "group" in echo:
             if mesh is None:
                 raise InputError(f"{where}.group needs a [mesh] (its named groups)")
-            group = echo["group"]
-            try:
-                mesh.check_group(group)
-            except ParameterError as exc:
-                raise ParameterError(f"{where}.group", exc.value, exc.allowed) from None
+            reraise(where, partial(mesh.check_group, echo["group"]))  # names .group
         if "bridge" in echo:
             values = {**_bridge_anisotropy(where, echo["bridge"], params, base_dir), **values}
         values = radians(values)
@@ -390,11 +381,9 @@ def _law_field(
         raise InputError("[law] takes one value per key when [law_table] or [[law_region]] "
                          "vary it along the interface")  # fmt: skip
     multiply = law_t.mapping().get("orthotropy_convention") == "multiply"
-    law_tables = _law_tables(table_data or {}, params, dim, base_dir)
+    law_tables, table_echo = _law_tables(table_data or {}, params, dim, base_dir)
     regions, region_echo = _law_regions(region_ts, params, dim, base_dir, multiply, mesh)
-    echo: dict[str, Any] = {}
-    if table_data is not None:
-        echo["law_table"] = LAW_TABLE.read(table_data, "[law_table]", only_given=True)
+    echo: dict[str, Any] = {"law_table": table_echo} if table_data is not None else {}
     if regions:
         echo["law_region"] = region_echo
     return LawField(tuple(law_tables), tuple(regions)), echo
@@ -493,6 +482,4 @@ def parse_contact(
     )  # fmt: skip
 
 
-def load_contact(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> ContactScenario:
-    """Read, override (``section.key=value``) and validate a contact scenario file."""
-    return load(CONTACT_FILE, parse_contact, path, overrides)
+load_contact = loader(CONTACT_FILE, parse_contact, "a contact scenario file")

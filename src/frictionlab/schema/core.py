@@ -37,7 +37,7 @@ from frictionlab.schema.kinds import (  # re-exported: the declarations' vocabul
 
 __all__ = [
     "BOOL", "DEFS", "DESCRIPTION", "INTEGER", "NUMBER", "NUMBERS", "OMIT", "PAIRS", "REQUIRED",
-    "STRING", "TITLE", "Field", "Kind", "Section", "check_overrides", "listed", "load", "reraise",
+    "STRING", "TITLE", "Field", "Kind", "Section", "check_overrides", "listed", "loader", "reraise",
 ]  # fmt: skip
 
 
@@ -214,12 +214,13 @@ class Section:
         return t
 
     def read(
-        self, data: Any, where: str | None = None, *, only_given: bool = False
+        self, data: Any, where: str | None = None, *, only_given: bool = False, **defaults: Any
     ) -> dict[str, Any]:
         """The typed values of the table's plain keys (sub-tables are left to the caller).
 
-        Absent keys take their default (``None`` for :data:`OMIT`), or are left out with
-        ``only_given``. A missing required key is one line naming it.
+        Absent keys take the value in ``defaults``, else their default (``None`` for
+        :data:`OMIT`), or are left out with ``only_given``. A missing required key is one
+        line naming it.
         """
         t = self.table(data, where)
         kind = t.get("kind", str) if self.variants is not None else None
@@ -229,6 +230,8 @@ class Section:
                 continue
             if f.name in t:
                 out[f.name] = f.kind.read(t, f)
+            elif f.name in defaults:
+                out[f.name] = defaults[f.name]
             elif f.required:
                 raise InputError(f"missing required key {t.where}.{f.name}")
             elif not only_given:
@@ -265,11 +268,11 @@ class Section:
     ) -> tuple[Any, dict[str, Any]]:  # fmt: skip
         """(the object of class ``by`` made from the table's values, the values read).
 
-        ``defaults`` are keyword arguments for keys not given; ``drop`` names keys not
+        ``defaults``: values of keys not given (as :meth:`read`); ``drop`` names keys not
         passed on. A ParameterError of the class is re-raised naming the table.
         """
         t = self.table(data, where)
-        values = self.read(t, only_given=only_given)
+        values = self.read(t, only_given=only_given, **defaults)
         kw = {k: v for k, v in {**defaults, **values}.items() if k not in drop}
         cls = self.by[kw.pop("kind")] if self.variants is not None else self.by
         return reraise(t.where, lambda: cls(**kw), error), values
@@ -334,15 +337,19 @@ def run_file(name: str, fields: tuple[Field, ...], doc: str, where: str = "", **
     return Section(name, (TITLE, DESCRIPTION, *fields), doc, where, **kw)
 
 
-def reraise(where: str, call: Callable[[], Any], error: type[Exception] = ParameterError) -> Any:
-    """Run ``call``; re-raise a ParameterError with ``where`` in front of its field (as
-    an ``error``: ParameterError or InputError)."""
+def reraise(
+    where: str | Callable[[str], str], call: Callable[[], Any],
+    error: type[Exception] = ParameterError, sep: str = ".",
+) -> Any:  # fmt: skip
+    """Run ``call``; re-raise a ParameterError naming its key ``where + sep + key`` (or
+    ``where(key)``), as an ``error`` (ParameterError or InputError)."""
     try:
         return call()
     except ParameterError as exc:
-        if error is not ParameterError:
-            raise error(f"{where}.{exc}") from None
-        raise ParameterError(f"{where}.{exc.field}", exc.value, exc.allowed) from None
+        name = where(exc.field) if callable(where) else f"{where}{sep}{exc.field}"
+        if error is not ParameterError:  # the message names the key first
+            raise error(name + str(exc)[len(exc.field) :]) from None
+        raise ParameterError(name, exc.value, exc.allowed) from None
 
 
 def check_overrides(root: Section, overrides: Iterable[str]) -> None:
@@ -383,9 +390,15 @@ def override(root: Section, data: dict[str, Any], overrides: Sequence[str]) -> d
 T = TypeVar("T")
 
 
-def load(root: Section, parse: Callable[..., T], path: str | os.PathLike[str],
-         overrides: Sequence[str]) -> T:  # fmt: skip
-    """Read the TOML file ``path``, apply the ``--set`` overrides (checked against ``root``)
-    and ``parse`` it (relative file names from the file's folder)."""
-    p = Path(path)
-    return parse(override(root, load_toml(p), overrides), base_dir=p.parent, source=str(p))
+def loader(root: Section, parse: Callable[..., T], what: str) -> Callable[..., T]:
+    """``load_<input>(path, overrides=())``: read the TOML file ``path``, apply the ``--set``
+    overrides (checked against ``root``) and ``parse`` it (relative file names from the
+    file's folder)."""
+
+    def load(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> T:
+        p = Path(path)
+        return parse(override(root, load_toml(p), overrides), base_dir=p.parent, source=str(p))
+
+    load.__name__ = load.__qualname__ = f"load_{root.name}"
+    load.__doc__ = f"Read, override (``section.key=value``) and validate {what}."
+    return load

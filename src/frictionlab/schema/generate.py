@@ -36,15 +36,17 @@ INPUTS: dict[str, tuple[Section, str]] = {
 _MARK = re.compile(r"(<!-- keys:([\w.]+) -->\n)(.*?)(<!-- /keys -->)", re.S)
 
 
-def _sections(section: Section) -> list[Section]:
-    out = [section]
-    for f in section.fields:
-        if f.table is not None and f.table not in out:
-            out += [s for s in _sections(f.table) if s not in out]
-    for fields in (section.variants or {}).values():
-        for g in fields:
-            if isinstance(g, Field) and g.table is not None:
-                out += [s for s in _sections(g.table) if s not in out]
+def _sections(section: Section, out: list[Section] | None = None) -> list[Section]:
+    """``section`` and those below it (depth first, each once)."""
+    out = [] if out is None else out
+    if section not in out:
+        out.append(section)
+        own = [
+            f for keys in (section.variants or {}).values() for f in keys if isinstance(f, Field)
+        ]
+        for f in (*section.fields, *own):
+            if f.table is not None:
+                _sections(f.table, out)
     return out
 
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Sequence
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -47,7 +47,7 @@ from frictionlab.roughness.topography import (
     read_prepared,
 )
 from frictionlab.roughness.wear import WEAR_METHODS, WEAR_SURFACES, WearSettings
-from frictionlab.schema.core import REQUIRED, TITLE, Field, Section, load, reraise
+from frictionlab.schema.core import REQUIRED, TITLE, Field, Section, loader, reraise
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, STRING, Kind, choice, either, listed
 
 __all__ = [
@@ -111,6 +111,8 @@ LOADS = _spread(Field("count", INTEGER, default=REQUIRED, low=1), "loads")
 _BETA = Field("beta_deg", DIRECTIONS, "directions (default: [sliding].beta_deg)", "deg")
 _POS: dict[str, Any] = {"low": 0.0, "open": "low", "allowed": "a positive value (SI units)"}
 CONTACT_MODELS = ("lattice", "elastic")
+SIDES = ("lower", "upper")
+
 
 _SIZES = Field("physical_sizes", listed(float, "number", (1, 2)), "period along x (and y)", "m")
 SURFACE = Section("surface", (
@@ -372,45 +374,34 @@ def parse_roughness(
     base = Path(base_dir)
     values, top = ROUGHNESS_FILE.read_top(data)
     notes: dict[str, Any] = {}
-    lower = _surface(top["lower"], "[lower]", base, notes, "lower")
-    upper = _surface(top["upper"], "[upper]", base, notes, "upper")
+    lower, upper = (_surface(top[side], f"[{side}]", base, notes, side) for side in SIDES)
     _check_cell(lower, upper, notes)
     sliding = SLIDING.read(top["sliding"], only_given=True)
-    load_given = "load" in sliding
-    betas = sliding.pop("beta_deg")
+    load_given, betas = "load" in sliding, sliding.pop("beta_deg")
     sliding["on_invalid"] = _on_invalid("sliding", sliding.get("on_invalid", "error"), notes)
-    sliding.setdefault("load", "full")
-    sliding.setdefault("control", "load")
-    if "phase" in sliding:
-        sliding["phase"] = tuple(sliding["phase"])
-    options = {**sliding, **LATTICE.read(top["lattice"] or {}, only_given=True)}
-    if isinstance(options.get("stations"), list):
-        options["stations"] = tuple(options["stations"])
-    try:
-        settings = LatticeSettings(**options)
-    except ParameterError as exc:
-        section = "[sliding]" if exc.field in SLIDING.keys(None) else "[lattice]"
-        raise InputError(f"{section}.{exc}") from None
+    options = {"load": "full", "control": "load", **sliding,
+               **LATTICE.read(top["lattice"] or {}, only_given=True)}  # fmt: skip
+    options.update({k: tuple(options[k]) for k in ("phase", "stations")
+                    if isinstance(options.get(k), list)})  # fmt: skip
+    name = lambda k: f"[sliding].{k}" if k in SLIDING.keys() else f"[lattice].{k}"  # noqa: E731, SIM118
+    settings = reraise(name, lambda: LatticeSettings(**options), InputError)
     output = OUTPUT.read(top["output"] or {})
-    adhesion = wear = hierarchy = multiscale = None
-    if top["adhesion"] is not None:
-        adhesion = _adhesion(top["adhesion"], betas, settings)
-    if top["wear"] is not None:
-        wear = _wear(top["wear"], betas)
-    if top["hierarchy"] is not None:
-        hierarchy = _hierarchy(top["hierarchy"], lower, upper, betas, base, notes)
-    if top["multiscale"] is not None:
-        multiscale = _multiscale(top["multiscale"], betas)
+    makers: dict[str, Callable[[Any], Any]] = {
+        "adhesion": lambda t: _adhesion(t, betas, settings),
+        "wear": lambda t: _wear(t, betas),
+        "hierarchy": lambda t: _hierarchy(t, lower, upper, betas, base, notes),
+        "multiscale": lambda t: _multiscale(t, betas),
+    }
+    extra = {k: None if top[k] is None else make(top[k]) for k, make in makers.items()}
     given = CONTACT.read(top["contact"] or {})
     contact = _contact(given, settings)
     settings = _lattice_pressure(given, settings, load_given)
-    if len(given["model"]) > 1 or len(given["pressure"] or ()) > 1:
-        extra = [n for n in ("adhesion", "wear", "hierarchy", "multiscale") if top[n] is not None]
-        if extra:
-            raise InputError(
-                f"[{extra[0]}] is invalid with a list in [contact].model or [contact].pressure:"
-                " allowed only for one model at one load"
-            )
+    used = [k for k, v in extra.items() if v is not None]
+    if used and (len(given["model"]) > 1 or len(given["pressure"] or ()) > 1):
+        raise InputError(
+            f"[{used[0]}] is invalid with a list in [contact].model or [contact].pressure:"
+            " allowed only for one model at one load"
+        )
     try:  # the station count is checked against the surfaces now, not mid-computation
         lattice_geometry(lower, upper, settings.stations)
     except ParameterError as exc:
@@ -419,11 +410,11 @@ def parse_roughness(
     return RoughnessScenario(
         mu0=values["mu0"], lower=lower, upper=upper, beta_deg=betas, settings=settings,
         title=values["title"], plot_full_circle=output["plot_full_circle"],
-        plot_step_deg=output["plot_step_deg"], adhesion=adhesion, wear=wear,
-        hierarchy=hierarchy, sources={k: v for k, v in notes.items() if k in ("lower", "upper")},
-        warnings=tuple(notes.get("warnings", ())), multiscale=multiscale, contact=contact,
-        statistics=output["statistics"], models=tuple(given["model"]),
-        pressures=tuple(given["pressure"] or ()), stiffness_per_area=given["stiffness_per_area"],
+        plot_step_deg=output["plot_step_deg"], **extra, contact=contact,
+        sources={k: v for k, v in notes.items() if k in SIDES},
+        warnings=tuple(notes.get("warnings", ())), statistics=output["statistics"],
+        models=tuple(given["model"]), pressures=tuple(given["pressure"] or ()),
+        stiffness_per_area=given["stiffness_per_area"],
     )  # fmt: skip
 
 
@@ -474,17 +465,8 @@ def _lattice_pressure(
             f"[sliding].{key} is invalid with [contact].pressure: allowed one way to load "
             "the lattice (remove [sliding].load or [contact].pressure)"
         )
-    try:
-        return replace(settings, load=v["pressure"][0] * settings.k_c / kappa)
-    except ParameterError as exc:
-        raise InputError(f"[contact].pressure: {exc}") from None
-
-
-def load_roughness(
-    path: str | os.PathLike[str], overrides: Sequence[str] = ()
-) -> RoughnessScenario:
-    """Read, override (``section.key=value``) and validate a roughness scenario."""
-    return load(ROUGHNESS_FILE, parse_roughness, path, overrides)
+    load = v["pressure"][0] * settings.k_c / kappa
+    return reraise("[contact].pressure", lambda: replace(settings, load=load), InputError, ": ")
 
 
 def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:
@@ -512,17 +494,14 @@ def _check_cell(lower: Surface, upper: Surface, notes: dict[str, Any]) -> None:
 
 
 def _multiscale(data: Any, betas: np.ndarray) -> MultiscaleOptions:
-    v = MULTISCALE.read(data)
-    ordered = tuple(sorted(v["cutoffs"], reverse=True))
-    return MultiscaleOptions(ordered, _or(v["beta_deg"], betas), v["mu_passed"])
-
-
-def _or(value: Any, default: Any) -> Any:
-    return default if value is None else value
+    v = MULTISCALE.read(data, beta_deg=betas)
+    return MultiscaleOptions(
+        tuple(sorted(v["cutoffs"], reverse=True)), v["beta_deg"], v["mu_passed"]
+    )
 
 
 def _adhesion(data: Any, betas: np.ndarray, settings: LatticeSettings) -> AdhesionOptions:
-    v = ADHESION.read(data)
+    v = ADHESION.read(data, beta_deg=betas)
     loads, k_t = v["loads"], v["k_t"]
     if k_t is not None and not 0.0 <= k_t <= settings.k_c:
         raise InputError(f"[adhesion].k_t = {k_t!r} is invalid: allowed 0 <= k_t <= k_c = "
@@ -534,13 +513,13 @@ def _adhesion(data: Any, betas: np.ndarray, settings: LatticeSettings) -> Adhesi
         raise InputError("[adhesion] needs [sliding].control = 'load' (a load sweep)")
     if v["detachment"] is not None and kt_value == 0.0:
         raise InputError("[adhesion].detachment needs tensile springs (k_t > 0)")
-    return AdhesionOptions(loads, k_t, _or(v["beta_deg"], betas), v["compare_without_adhesion"],
-                           v["detachment"])  # fmt: skip
+    return AdhesionOptions(**v)
 
 
 def _wear(data: Any, betas: np.ndarray) -> WearOptions:
-    settings, v = WEAR.build(data, drop=("samples", "method", "beta_deg"), error=InputError)
-    return WearOptions(settings, v["samples"], v["method"], _or(v["beta_deg"], betas))
+    drop = ("samples", "method", "beta_deg")
+    settings, v = WEAR.build(data, drop=drop, error=InputError, beta_deg=betas)
+    return WearOptions(settings, v["samples"], v["method"], v["beta_deg"])
 
 
 def _hierarchy(
@@ -551,7 +530,7 @@ def _hierarchy(
     base_dir: Path,
     notes: dict[str, Any],
 ) -> HierarchyOptions:
-    v = HIERARCHY.read(table)
+    v = HIERARCHY.read(table, beta_deg=betas)
     v["on_invalid"] = _on_invalid("hierarchy", v["on_invalid"], notes)
     try:
         if "inner" not in table:
@@ -564,15 +543,14 @@ def _hierarchy(
             for i, item in enumerate(raw, 1):
                 where = f"{table.where}.inner #{i}"
                 level = LEVEL.table(item, where)
-                pair = [_surface(level.raw(side), f"{where}.{side}", base_dir, {}, side)
-                        for side in ("lower", "upper")]  # fmt: skip
-                inner.append(HierarchyLevel(pair[0], pair[1]))
+                pair = (_surface(level.raw(s), f"{where}.{s}", base_dir, {}, s) for s in SIDES)
+                inner.append(HierarchyLevel(*pair))
             levels = (*inner, HierarchyLevel(lower, upper))
             check_nested(levels)
     except ParameterError as exc:
         raise InputError(f"{table.where}: {exc}") from None
     return HierarchyOptions(levels, v["mu_passed"], v["on_invalid"], v["samples_per_level"],
-                            _or(v["beta_deg"], betas))  # fmt: skip
+                            v["beta_deg"])  # fmt: skip
 
 
 def _surface(data: Any, where: str, base_dir: Path, notes: dict[str, Any], side: str) -> Surface:
@@ -587,37 +565,33 @@ def _surface(data: Any, where: str, base_dir: Path, notes: dict[str, Any], side:
     return surface
 
 
+_MAKE = {k: getattr(generators, k) for k in ("flat", "wedge", "smooth_wedge", "sinusoid")}
+
+
 def _build(v: dict[str, Any], where: str, base_dir: Path, info: dict[str, Any]) -> Surface:
-    kind = v["kind"]
-    if kind == "flat":
-        return generators.flat()
-    if kind in ("wedge", "smooth_wedge"):
-        make = generators.wedge if kind == "wedge" else generators.smooth_wedge
-        return make(v["angles_deg"], v["wavelength"])
-    if kind == "sinusoid":
-        return generators.sinusoid(v["amplitude"], v["wavelengths"])
+    kind, keys = v["kind"], SURFACE.keys(v["kind"])[1:]
+    if kind in _MAKE:
+        return _MAKE[kind](**{k: v[k] for k in keys})
     if kind == "self_affine":
         sizes, points = v["physical_sizes"], v["points"]
         if len(points) != len(sizes):
             raise InputError(f"{where}.points must have {len(sizes)} entries, got {len(points)}")
         check_grid_size(f"{where}.points", points, v["allow_large"])
         info.update(hurst=v["hurst"], seed=v["seed"], physical_sizes_m=sizes, points=points)
+        rng = np.random.default_rng(v["seed"])
         return generators.self_affine(
-            v["hurst"], sizes, points, rng=np.random.default_rng(v["seed"]),
-            rms_height=v["rms_height"], rms_slope=v["rms_slope"],
-            short_cutoff=v["short_cutoff"], long_cutoff=v["long_cutoff"],
-        )  # fmt: skip
-    path = Path(v["path"])
+            **{k: v[k] for k in keys if k not in ("allow_large", "seed")}, rng=rng
+        )
     sizes, crop = v["physical_sizes"], v["crop"]
+    options = {k: v[k] for k in keys if k not in ("path", "physical_sizes", "crop")}
     prepared = read_prepared(
-        path if path.is_absolute() else base_dir / path, periodicity=v["periodicity"],
-        detrend=v["detrend"], fill_missing=v["fill_missing"], gradient=v["gradient"],
-        format=v["format"], channel=v["channel"], unit=v["unit"],
+        base_dir / v["path"], **options,
         physical_sizes=None if sizes is None else (sizes[0] if len(sizes) == 1 else tuple(sizes)),
-        crop=None if crop is None else tuple(crop), window=v["window"],
-        short_cutoff=v["short_cutoff"], long_cutoff=v["long_cutoff"],
-        allow_flattening=v["allow_flattening"], resample=v["resample"],
+        crop=None if crop is None else tuple(crop),
     )  # fmt: skip
     info.update(prepared.info)
     info["warnings"] = list(prepared.warnings)
     return prepared.surface
+
+
+load_roughness = loader(ROUGHNESS_FILE, parse_roughness, "a roughness scenario")

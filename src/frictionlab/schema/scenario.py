@@ -9,10 +9,9 @@ line naming the key.
 
 from __future__ import annotations
 
-import math
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -21,9 +20,10 @@ import numpy as np
 from frictionlab.app.budget import (
     HISTORY_BYTES_PER_ROW,
     RunEstimate,
-    check_run_size,
-    history_bound,
-    largest,
+    check_points,
+    machine_steps,
+    scenario_estimate,
+    steps_key,
 )
 from frictionlab.driver import (
     SEGMENT_KINDS,
@@ -37,10 +37,11 @@ from frictionlab.driver import (
 from frictionlab.driver.program import segment_fields
 from frictionlab.driver.recorder import Recording, RowSink
 from frictionlab.driver.simulate import MAX_HALVINGS, count_points
-from frictionlab.errors import InputError, ParameterError
+from frictionlab.errors import InputError
 from frictionlab.io.config import Table as TomlTable
 from frictionlab.io.tables import read_csv
-from frictionlab.schema.core import REQUIRED, Field, Section, load, reraise, run_file
+from frictionlab.plotting.legends import point_labels
+from frictionlab.schema.core import REQUIRED, Field, Section, loader, reraise, run_file
 from frictionlab.schema.kinds import BOOL, INTEGER, NUMBER, NUMBERS, PAIRS, STRING, listed
 from frictionlab.subloading import SURFACES, SubloadingParams
 from frictionlab.subloading.params import (
@@ -239,16 +240,13 @@ def law_table(params: SubloadingParams) -> dict[str, Any]:
     """
     table: dict[str, Any] = {}
     for key in LAW_KEYS:
-        if key in ("orthotropy_angle", "orthotropy_angle_deg"):
-            angle = np.degrees(np.asarray(params.orthotropy_angle, dtype=float))
-            table["orthotropy_angle_deg"] = angle.tolist()
-            continue
-        value = getattr(params, key)
-        if value is None:
-            continue
-        table[key] = np.asarray(value).tolist() if isinstance(value, np.ndarray) else value
-    table["orthotropy_convention"] = "divide"
-    return table
+        value = getattr(params, key.removesuffix("_deg"))
+        if key.startswith("orthotropy_angle"):
+            angle = np.degrees(np.asarray(value, dtype=float))
+            key, value = "orthotropy_angle_deg", angle.tolist()
+        if value is not None:
+            table[key] = np.asarray(value).tolist() if isinstance(value, np.ndarray) else value
+    return {**table, "orthotropy_convention": "divide"}
 
 
 def parse_initial_table(
@@ -424,36 +422,6 @@ class Scenario:
         return "program" if self.program is not None else "spring_slider"
 
 
-#: How per-point inputs are named in legends: key -> (symbol, unit).
-_LABEL_NAMES: dict[str, tuple[str, str]] = {
-    "velocity": ("V", "m/s"), "distance": ("distance", "m"), "duration": ("t", "s"),
-    "direction_deg": ("direction", "deg"), "angle_deg": ("turn", "deg"),
-    "amplitude": ("amplitude", "m"), "approach": ("approach", "m"), "traction": ("f_t", "Pa"),
-    "traction_change": ("change", "Pa"), "normal_traction": ("f_n", "Pa"),
-    "tangential_traction": ("f_t", "Pa"), "stiffness": ("k", "Pa/m"), "mass": ("m", "kg/m^2"),
-    "damping": ("c", "Pa s/m"), "alpha_n": ("alpha_n", "Pa/m"), "alpha_t": ("alpha_t", "Pa/m"),
-    "u": ("u", "1/m"), "F_s": ("F_s", "Pa"), "F_k": ("F_k", "Pa"),
-}  # fmt: skip
-
-
-def _labels(n: int, varying: list[tuple[str, str, list[Any]]]) -> tuple[str, ...]:
-    """Legend labels from the inputs given per point (``V = 0.1 m/s`` style)."""
-    if n == 1:
-        return ("",)
-    if not varying:
-        return tuple(f"point {i + 1}" for i in range(n))
-    out = []
-    for i in range(n):
-        parts = []
-        for prefix, key, values in varying[:2]:
-            symbol, unit = _LABEL_NAMES.get(key, (key, ""))
-            v = values[i]
-            text = f"({v[0]:g}, {v[1]:g})" if isinstance(v, list) else f"{v:g}"
-            parts.append(f"{prefix}{symbol} = {text}{' ' + unit if unit else ''}")
-        out.append(", ".join(parts))
-    return tuple(out)
-
-
 _PAIR_KEYS = ("rotation", "orthotropy", "tangential_traction", "traction")
 
 
@@ -487,15 +455,11 @@ def parse_scenario(
     varying = per_point(law_given) + per_point(init_echo)
     program: Program | None = None
     machine: MachineRun | None = None
-    base = Path(base_dir)
     if tables["program"] is not None:
-        segments = []
-        for t in tables["program"]:
-            raw = t.mapping()
-            segments.append(seg := _parse_segment(t, base))
-            raw.pop("kind", None)
+        program = tuple(_parse_segment(t, Path(base_dir)) for t in tables["program"])
+        for t, seg in zip(tables["program"], program, strict=True):
+            raw = {k: v for k, v in t.mapping().items() if k != "kind"}
             varying += per_point(raw, "hold " if seg.kind == "hold" else "")
-        program = tuple(segments)
     else:
         machine, machine_echo = _parse_machine(tables["machine"])
         varying += per_point(machine_echo)
@@ -506,80 +470,40 @@ def parse_scenario(
     if output.points is not None and output.points[-1] > n:
         raise InputError(f"[output].points has {output.points[-1]}: allowed point numbers "
                          f"1..{n} (the scenario has {n} point(s))")  # fmt: skip
-    # points alone (one step) before anything of size N is built, then with the steps
-    streamed = program is not None  # frictionlab simulate streams a programme's rows
-    recorded = output.recorded_points(n)
-    check_run_size(
-        RunEstimate(2, n, "[run].n_points", output.every, recorded, streamed), opts.allow_large
+    check_points(n, output, program is not None, opts.allow_large)  # before size-N arrays
+    # the snap-back check names a [law] field
+    reraise(
+        lambda k: f"[law].{k}" if k in LAW_KEYS else f"[initial].{k}", lambda: init.state(params, n)
     )
-    try:
-        init.state(params, n)
-    except ParameterError as exc:  # the snap-back check names a [law] field
-        section = "[law]" if exc.field in LAW_KEYS else "[initial]"
-        raise ParameterError(f"{section}.{exc.field}", exc.value, exc.allowed) from None
     if program is not None:
         plans = reraise("[[program]]", lambda: plan_program(program, n))
-        counts = [
-            (p.estimated_steps, f"[[program]] #{i}.{_steps_key(seg)}")
-            for i, (p, seg) in enumerate(zip(plans, program, strict=True), start=1)
-        ]
+        counts = [(p.estimated_steps, f"[[program]] #{i}.{steps_key(seg)}")
+                  for i, (p, seg) in enumerate(zip(plans, program, strict=True), 1)]  # fmt: skip
     else:
         assert machine is not None
-        counts = [(_machine_steps(machine), f"[machine].{_steps_key(machine)}")]
-    estimate = largest(counts, n, "[run].n_points", output.every, recorded, streamed, output.format)
-    check_run_size(estimate, opts.allow_large)  # the steps run whatever is recorded
-    every, warning = history_bound(estimate, output.every_given)
-    if every != output.every:  # the default recording, bounded
-        output = replace(output, every=every)
-        estimate = replace(estimate, every=every)
-    inputs: dict[str, Any] = {
-        "title": top["title"],
-        "description": top["description"],
-        "law": _jsonable(params.as_dict()),
-        "initial": _jsonable({**init_echo, "F": _or(init_echo["F"], "static value")}),
-        "run": {
-            "n_points": n,
-            "accuracy": opts.accuracy,
-            "max_halvings": opts.max_halvings,
-            "peak_accuracy": opts.peak_accuracy,
-        },
-        "output": {
-            "every": output.every,
-            "points": _or(output.points, "all"),
-            "format": output.format,
-        },
-    }
-    if program is not None:
-        inputs["program"] = [_segment_echo(s) for s in program]
-    else:
-        inputs["machine"] = _jsonable(machine_echo)
+        counts = [(machine_steps(machine), f"[machine].{steps_key(machine)}")]
+    estimate, output, warnings = scenario_estimate(counts, n, output, program is not None,
+                                                   opts.allow_large)  # fmt: skip
+    inputs: dict[str, Any] = _jsonable({
+        "title": top["title"], "description": top["description"], "law": params.as_dict(),
+        "initial": {**init_echo, "F": _or(init_echo["F"], "static value")},
+        "run": {"n_points": n, **{k: getattr(opts, k) for k in (
+            "accuracy", "max_halvings", "peak_accuracy")}},
+        "output": {"every": output.every, "points": _or(output.points, "all"),
+                   "format": output.format},
+        **({"program": [_segment_echo(s) for s in program]} if program is not None
+           else {"machine": machine_echo}),
+    })  # fmt: skip
     return Scenario(
         title=top["title"], description=top["description"], params=params, initial=init,
         run_options=opts, n_points=n, program=program, machine=machine, inputs=inputs,
-        labels=_labels(n, varying), source=source, output=output, estimate=estimate,
-        warnings=() if warning is None else (warning,),
+        labels=point_labels(n, varying), source=source, output=output, estimate=estimate,
+        warnings=warnings,
     )  # fmt: skip
 
 
 def _or(value: Any, default: Any) -> Any:
-    return default if value is None else list(value) if isinstance(value, tuple) else value
-
-
-def _steps_key(seg: Any) -> str:
-    """The key that sets a segment's step count: max_step when given, else steps."""
-    return "max_step" if getattr(seg, "max_step", None) is not None else "steps"
-
-
-def _machine_steps(m: MachineRun) -> int:
-    if m.max_step is not None:
-        longest = float(np.max(np.asarray(m.duration, dtype=np.float64)))
-        return max(1, math.ceil(longest / m.max_step))
-    return m.steps or 1000
-
-
-def load_scenario(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> Scenario:
-    """Read, override (``section.key=value``) and validate a scenario file."""
-    return load(SCENARIO_FILE, parse_scenario, path, overrides)
+    return default if value is None else value
 
 
 def _jsonable(obj: Any) -> Any:
@@ -593,3 +517,6 @@ def _jsonable(obj: Any) -> Any:
     if isinstance(obj, np.generic):
         return obj.item()
     return obj
+
+
+load_scenario = loader(SCENARIO_FILE, parse_scenario, "a scenario file")

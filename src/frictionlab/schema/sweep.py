@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from frictionlab.errors import InputError
-from frictionlab.schema.core import REQUIRED, Field, Section, load
+from frictionlab.schema.core import REQUIRED, Field, Section, loader
 from frictionlab.schema.kinds import INTEGER, STRING
 
 if TYPE_CHECKING:
@@ -60,11 +60,7 @@ def parse_sweep(
     data: Mapping[str, Any], *, base_dir: str | os.PathLike[str] = ".", source: str = ""
 ) -> SweepSpec:
     """Validate a parsed sweep file and expand its cases."""
-    from frictionlab.sweep.cases import (  # sweep/ imports this module
-        check_case_count,
-        expand_grid,
-        make_cases,
-    )
+    from frictionlab.sweep.cases import check_case_count, expand_grid, make_cases  # a cycle
 
     if not isinstance(data.get("base", ""), str) or not data.get("base"):
         SWEEP_FILE.table(dict(data), "")  # an unknown key first
@@ -79,14 +75,8 @@ def parse_sweep(
             check_case_count(len(data["case"]), "[[case]]", values["max_cases"])
         overrides = _case_list(data["case"])
         keys = tuple(dict.fromkeys(k for item in overrides for k in item))
-    base = values["base"]
-    path = Path(base) if Path(base).is_absolute() else Path(base_dir) / base
+    path = Path(base_dir) / values["base"]
     return SweepSpec(values["title"], path, values["command"], keys, make_cases(overrides))
-
-
-def load_sweep(path: str | os.PathLike[str], overrides: Sequence[str] = ()) -> SweepSpec:
-    """Read, override (``key=value``) and validate a sweep file."""
-    return load(SWEEP_FILE, parse_sweep, path, overrides)
 
 
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
@@ -101,17 +91,15 @@ def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
     return out
 
 
-def _check_value(key: str, value: Any) -> None:
-    if isinstance(value, float) and not math.isfinite(value):
-        raise InputError(f"'{key}' = {value} must be finite")
-
-
 LINK = "+"  # links keys that take the same value (frictionlab.sweep.cases.LINK)
 
 
-def _links(where: str, key: str, value: Any, owner: dict[str, str]) -> list[str]:
-    """The keys that ``key`` links ("a.x+b.y"), each set once across ``owner``."""
-    _check_value(f"{where}.{key}", value)
+def _links(where: str, key: str, values: list[Any], owner: dict[str, str]) -> list[str]:
+    """The keys that ``key`` links ("a.x+b.y"), each set once across ``owner``; its
+    ``values`` must be finite."""
+    for v in values:
+        if isinstance(v, float) and not math.isfinite(v):
+            raise InputError(f"'{where}.{key}' = {v} must be finite")
     parts = key.split(LINK)
     if not all(parts):
         raise InputError(f"{where}.'{key}' has an empty key around '{LINK}'")
@@ -132,9 +120,7 @@ def _grid(raw: Any) -> dict[str, list[Any]]:
     for key, values in grid.items():
         if not isinstance(values, list) or not values:
             raise InputError(f"[grid].'{key}' must be a non-empty list of values, got {values!r}")
-        for v in values:
-            _check_value(f"[grid].{key}", v)
-        _links("[grid]", key, None, owner)
+        _links("[grid]", key, values, owner)
     return grid
 
 
@@ -150,5 +136,8 @@ def _case_list(raw: Any) -> list[dict[str, Any]]:
         if not flat:
             raise InputError(f'[[case]] #{i} is empty: give at least one "section.key" = value')
         where = f"[[case]] #{i}"  # "a.x+b.y" = v: the same value for each key
-        out.append({p: v for k, v in flat.items() for p in _links(where, k, v, owner)})
+        out.append({p: v for k, v in flat.items() for p in _links(where, k, [v], owner)})
     return out
+
+
+load_sweep = loader(SWEEP_FILE, parse_sweep, "a sweep file")
