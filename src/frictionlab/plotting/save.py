@@ -68,8 +68,9 @@ def fixed_layout(
     wspace: float = 0.0,
     hspace: float = 0.0,
 ) -> Figure:
-    """Give ``fig`` (built without a layout engine, on one grid of subplots) fixed margins
-    and gaps [inches]; :func:`figure_png_bytes` falls back to the constrained layout where
+    """Give ``fig`` (built without a layout engine, on one grid of subplots, with no colour
+    bar: one made without the engine does not move with it) fixed margins and gaps
+    [inches]; :func:`figure_png_bytes` falls back to the constrained layout where
     a text would not fit. Returns ``fig``."""
     from matplotlib.gridspec import GridSpec
 
