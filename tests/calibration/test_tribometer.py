@@ -158,3 +158,32 @@ def test_remembered_factors_are_pints_and_skip_pint(
     again = {unit: tribometer._factor(unit, role, "t") for unit, role, _ in EXACT}
     assert again == first
     assert {unit: f for unit, _, f in EXACT} == pytest.approx(first, rel=1e-15)
+
+
+#: A fresh process reading a file in minutes and millimetres; prints the modules it loaded.
+_READ = """
+import sys
+from frictionlab.io.tribometer import read_tribometer
+m = read_tribometer(sys.argv[1])
+assert m.time[-1] == 120.0 and m.slip[-1] == 2e-3, (m.time, m.slip)
+print(" ".join(sorted({name.split(".")[0] for name in sys.modules})))
+"""
+
+
+def test_a_second_process_reads_units_without_pint_or_pandas(tmp_path: Path) -> None:
+    """pint is imported once per pint version (its factors are then remembered), pandas never."""
+    import os
+    import subprocess
+    import sys
+
+    rows = [f"{k * 0.5},{k * 0.5},0.3" for k in range(5)]  # to 2 min, 2 mm
+    path = write(tmp_path / "run.csv", ["Time (min),Displacement (mm),COF", *rows])
+    env = dict(os.environ, FRICTIONLAB_CACHE_DIR=str(tmp_path / "cache"))
+    loaded = []
+    for _ in range(2):
+        out = subprocess.run([sys.executable, "-c", _READ, str(path)], env=env,
+                             capture_output=True, text=True, timeout=120)  # fmt: skip
+        assert out.returncode == 0, out.stderr
+        loaded.append(set(out.stdout.split()))
+    assert "pint" in loaded[0] and "pandas" not in loaded[0]
+    assert not {"pint", "pandas", "dask"} & loaded[1]
