@@ -1,6 +1,6 @@
 """``python -m frictionlab`` runs the command-line interface."""
 
-from frictionlab.cli import main
+from frictionlab.cli import run
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run()

@@ -8,8 +8,12 @@ Exit codes: 0 success, 1 a computation failed, 2 bad input. Each subcommand live
 from __future__ import annotations
 
 import argparse
+import atexit
+import contextlib
 import importlib
+import os
 import sys
+import threading
 from collections.abc import Sequence
 
 from frictionlab._version import __version__
@@ -82,3 +86,23 @@ def main(argv: Sequence[str] | None = None) -> int:
         code, message = exit_code(exc, args.command)
         print(message, file=sys.stderr)
         return code
+
+
+def run() -> None:
+    """The ``frictionlab`` console command: :func:`main`, then a quick exit.
+
+    Tearing the interpreter down frees every module's objects one by one: ~0.4 s after
+    numba has loaded a kernel, ~0.15 s each for SciPy and matplotlib, ~0.5 s of a warm
+    ``frictionlab calibrate``. So once :func:`main` has returned (every output written and
+    closed), the exit handlers run (``atexit``: logging, temporary folders, pools), the
+    standard streams are flushed and the process ends with the exit code, skipping the
+    teardown; while another non-daemon thread runs, the interpreter exits as usual.
+    """
+    code = main()
+    if threading.active_count() > 1:
+        sys.exit(code)
+    atexit._run_exitfuncs()
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(OSError, ValueError):  # closed, or a broken pipe
+            stream.flush()
+    os._exit(code)

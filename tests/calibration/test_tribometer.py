@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -90,28 +92,98 @@ def test_missing_file_and_empty_file(tmp_path: Path) -> None:
         read_tribometer(write(tmp_path / "empty.csv", ["# only a comment"]))
 
 
+@pytest.fixture
+def units_in(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Any]:
+    """frictionlab.io.unit_factors with its caches in ``tmp_path``, nothing remembered."""
+    import frictionlab._compile_cache as cc
+    from frictionlab.io import unit_factors
+
+    cached = (unit_factors.registry, unit_factors.memo_path, unit_factors._memo)
+    monkeypatch.setattr(cc, "cache_dir", lambda: tmp_path / "0.0-key")
+    for f in cached:
+        f.cache_clear()
+    yield unit_factors
+    for f in cached:
+        f.cache_clear()
+
+
+#: Units and their SI factors by definition (exact in binary where the decimal is).
+EXACT = (("min", "time", 60.0), ("h", "time", 3600.0), ("mm", "slip", 1e-3),
+         ("kN", "normal_force", 1e3), ("um", "slip", 1e-6))  # fmt: skip
+
+
 @pytest.mark.parametrize("damage", ["none", "truncated"])
 def test_unit_registry_cache_gives_the_si_factors(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, damage: str
+    tmp_path: Path, units_in: Any, damage: str
 ) -> None:
     """pint's on-disk cache (and a damaged one: the plain registry instead) gives the
-    definitions' exact factors: 1 min = 60 s, 1 h = 3600 s, 1 mm = 1e-3 m, 1 kN = 1e3 N."""
-    import frictionlab._compile_cache as cc
+    definitions' factors: 1 min = 60 s, 1 h = 3600 s, 1 mm = 1e-3 m, 1 kN = 1e3 N."""
     from frictionlab.io import tribometer
 
-    monkeypatch.setattr(cc, "cache_dir", lambda: tmp_path / "0.0-key")
-    tribometer._registry.cache_clear()
-    try:
-        tribometer._registry()  # writes the cache
-        pickles = list((tmp_path / "pint").glob("*.pickle"))
-        assert pickles, "pint wrote no cache"
-        if damage == "truncated":
-            for p in pickles:
-                p.write_bytes(p.read_bytes()[:20])
-        tribometer._registry.cache_clear()
-        assert tribometer._factor("min", "time", "t") == 60.0
-        assert tribometer._factor("h", "time", "t") == 3600.0
-        assert tribometer._factor("mm", "slip", "t") == pytest.approx(1e-3, rel=1e-15)
-        assert tribometer._factor("kN", "normal_force", "t") == pytest.approx(1e3, rel=1e-15)
-    finally:
-        tribometer._registry.cache_clear()
+    units_in.registry()  # writes the cache
+    pickles = list((tmp_path / "pint").glob("*.pickle"))
+    assert pickles, "pint wrote no cache"
+    if damage == "truncated":
+        for p in pickles:
+            p.write_bytes(p.read_bytes()[:20])
+    units_in.registry.cache_clear()
+    for unit, role, factor in EXACT:
+        assert tribometer._factor(unit, role, "t") == pytest.approx(factor, rel=1e-15)
+
+
+@pytest.mark.parametrize("damage", ["none", "garbage", "wrong types"])
+def test_remembered_factors_are_pints_and_skip_pint(
+    tmp_path: Path, units_in: Any, monkeypatch: pytest.MonkeyPatch, damage: str
+) -> None:
+    """A factor pint gave once is read back bit for bit without asking pint again; a
+    damaged memo is ignored (pint asked, the memo rewritten); a wrong dimension and an
+    unknown unit are refused whether remembered or not."""
+    from frictionlab.io import tribometer
+
+    first = {unit: tribometer._factor(unit, role, "t") for unit, role, _ in EXACT}
+    with pytest.raises(InputError, match="'min' is not a unit of slip"):
+        tribometer._factor("min", "slip", "t")
+    with pytest.raises(InputError, match="'parsec/fortnight' is not a unit of time"):
+        tribometer._factor("parsec/fortnight", "time", "t")
+    path = units_in.memo_path()
+    assert path is not None and path.parent == tmp_path / "pint" and path.is_file()
+    if damage == "garbage":
+        path.write_text("{not json")
+    elif damage == "wrong types":
+        path.write_text('{"min|[time]|s": "60", "h|[time]|s": -1.0, "mm|[length]|m": 1}')
+    units_in._memo.cache_clear()
+    units_in.registry.cache_clear()
+    if damage == "none":  # remembered: pint must not be asked
+        monkeypatch.setattr(units_in, "registry", lambda: pytest.fail("pint was asked"))
+    again = {unit: tribometer._factor(unit, role, "t") for unit, role, _ in EXACT}
+    assert again == first
+    assert {unit: f for unit, _, f in EXACT} == pytest.approx(first, rel=1e-15)
+
+
+#: A fresh process reading a file in minutes and millimetres; prints the modules it loaded.
+_READ = """
+import sys
+from frictionlab.io.tribometer import read_tribometer
+m = read_tribometer(sys.argv[1])
+assert m.time[-1] == 120.0 and m.slip[-1] == 2e-3, (m.time, m.slip)
+print(" ".join(sorted({name.split(".")[0] for name in sys.modules})))
+"""
+
+
+def test_a_second_process_reads_units_without_pint_or_pandas(tmp_path: Path) -> None:
+    """pint is imported once per pint version (its factors are then remembered), pandas never."""
+    import os
+    import subprocess
+    import sys
+
+    rows = [f"{k * 0.5},{k * 0.5},0.3" for k in range(5)]  # to 2 min, 2 mm
+    path = write(tmp_path / "run.csv", ["Time (min),Displacement (mm),COF", *rows])
+    env = dict(os.environ, FRICTIONLAB_CACHE_DIR=str(tmp_path / "cache"))
+    loaded = []
+    for _ in range(2):
+        out = subprocess.run([sys.executable, "-c", _READ, str(path)], env=env,
+                             capture_output=True, text=True, timeout=120)  # fmt: skip
+        assert out.returncode == 0, out.stderr
+        loaded.append(set(out.stdout.split()))
+    assert "pint" in loaded[0] and "pandas" not in loaded[0]
+    assert not {"pint", "pandas", "dask"} & loaded[1]

@@ -80,3 +80,35 @@ def test_every_example_runs_as_printed(name: str, tmp_path: Path, capsys) -> Non
     assert main([kind, str(scenario), "--out", str(out), "--quiet", *plots]) == 0
     summary = json.loads((out / "summary.json").read_text())
     assert summary.get("success", True) is True
+
+
+#: A child process running the console command's entry with an exit handler, buffered
+#: output and (with "thread") a non-daemon thread still writing when main() returns.
+_RUN = """
+import atexit, sys, threading, time
+marks = sys.argv[1]
+atexit.register(lambda: open(marks + ".atexit", "w").write("ran"))
+if sys.argv[2] == "thread":
+    def late():
+        time.sleep(0.5)
+        open(marks + ".thread", "w").write("done")
+    threading.Thread(target=late).start()
+sys.argv = ["frictionlab", "example", "nope"]
+from frictionlab.cli import run
+print("buffered line", end="")  # block-buffered into a pipe: lost unless flushed
+run()
+"""
+
+
+@pytest.mark.parametrize("thread", ["none", "thread"])
+def test_quick_exit_keeps_the_exit_code_handlers_output_and_threads(
+    tmp_path: Path, thread: str
+) -> None:
+    marks = str(tmp_path / "m")
+    out = subprocess.run([sys.executable, "-c", _RUN, marks, thread], capture_output=True,
+                         text=True, timeout=120)  # fmt: skip
+    assert out.returncode == 2, out.stderr  # "example nope": bad input
+    assert "buffered line" in out.stdout and "is unknown" in out.stderr
+    assert Path(marks + ".atexit").read_text() == "ran"
+    if thread == "thread":
+        assert Path(marks + ".thread").read_text() == "done"

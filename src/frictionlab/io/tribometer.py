@@ -32,14 +32,13 @@ import os
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import cache
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
 from frictionlab.errors import InputError
 from frictionlab.io.inputs import read_input_bytes
+from frictionlab.io.unit_factors import si_factor
 
 __all__ = [
     "MIN_SAMPLES",
@@ -95,23 +94,6 @@ class Measured:
     columns: dict[str, str] = field(default_factory=dict)
 
 
-@cache
-def _registry() -> Any:
-    """pint's default registry; its parsed definitions are cached on disk (pint's own
-    ``cache_folder``, a ``pint`` folder beside the compiled kernels' folders, which the
-    compile cache's pruning leaves alone), which saves ~0.3 CPU s per process.
-    A cache that cannot be read or written (another process writing it, a read-only
-    folder) gives the registry built from pint's definition files instead."""
-    import pint
-
-    from frictionlab._compile_cache import cache_dir
-
-    try:
-        return pint.UnitRegistry(cache_folder=cache_dir().parent / "pint")
-    except Exception:  # pint/flexcache raise OSError or pickle's errors
-        return pint.UnitRegistry()
-
-
 def _key(name: str) -> str:
     return re.sub(r"[\s_]+", " ", name.strip().lower())
 
@@ -135,10 +117,7 @@ def _factor(unit: str, role: str, where: str) -> float:
         raise InputError(f"{where}: unit '{unit}' of the friction ratio; it has none ('-')")
     token = token.replace("μ", "u").replace("µ", "u")
     try:
-        q = _registry().Quantity(1.0, token)
-        if not q.check(dim):
-            raise ValueError
-        return float(q.to(si).magnitude)
+        return si_factor(token, si, dim)
     except Exception:  # pint raises several kinds for an unknown or wrong unit
         raise InputError(
             f"{where}: '{unit}' is not a unit of {role.replace('_', ' ')} ({dim.strip('[]')})"
@@ -226,6 +205,17 @@ def _is_number(cell: str, decimal: str) -> bool:
     return True
 
 
+def _numbers(cells: list[str], decimal: str) -> np.ndarray:
+    """The cells as float64 (NumPy's conversion, correctly rounded as ``float``); NaN
+    where a cell is not a number."""
+    if decimal != ".":
+        cells = [c.replace(decimal, ".") for c in cells]
+    try:
+        return np.array(cells, dtype=np.float64)
+    except ValueError:  # the caller names the first cell that is not a number
+        return np.array([float(c) if _is_number(c, ".") else np.nan for c in cells])
+
+
 def _find_columns(
     where: str, titles: list[str], mapping: Mapping[str, str]
 ) -> tuple[dict[str, int], dict[str, str | None]]:
@@ -288,10 +278,9 @@ def read_tribometer(
     reciprocating: bool = False,
 ) -> Measured:
     """Load ``path`` (see the module docstring); ``columns`` maps roles to the file's titles,
-    ``units`` gives a role's unit (any pint unit, ``-`` for the ratio); ``where`` prefixes
-    messages (e.g. ``"[[data]] #1.file 'run.csv'"``)."""
-    import pandas as pd
-
+    ``units`` gives a role's unit (any pint unit, ``-`` for the ratio; see
+    :mod:`~frictionlab.io.unit_factors`); ``where`` prefixes messages (e.g.
+    ``"[[data]] #1.file 'run.csv'"``)."""
     from frictionlab.errors import ParameterError
 
     p = Path(path)
@@ -374,10 +363,7 @@ def read_tribometer(
     for r in used:
         title = titles[index[r]]
         raw_cells = [row[index[r]] for _, row in data]
-        cells = pd.Series(raw_cells, dtype=str)
-        if decimal != ".":
-            cells = cells.str.replace(decimal, ".", regex=False)
-        col = pd.to_numeric(cells, errors="coerce").to_numpy(dtype=np.float64)
+        col = _numbers(raw_cells, decimal)
         bad = ~np.isfinite(col)
         if bad.any():
             j = int(np.argmax(bad))

@@ -1,7 +1,8 @@
 """Figures of a calibration: data vs model, residuals, correlations, profile likelihoods.
 
-Every function imports matplotlib lazily (through :func:`~frictionlab.plotting.law.new_figure`)
-and returns the Figure or Axes it drew on.
+Every function imports matplotlib lazily and returns the Figure or Axes it drew on. The
+curve and profile figures have fixed margins (:func:`~frictionlab.plotting.save.fixed_layout`:
+no layout solve; the constrained layout where a text would not fit).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import numpy as np
 
 from frictionlab.plotting._ticks import readable_log_ticks
 from frictionlab.plotting.law import new_figure
+from frictionlab.plotting.save import fixed_layout
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -48,8 +50,9 @@ def plot_curve_fit(
     if not 2 <= len(shown) <= MAX_PANELS:
         return _single_panel(curve, model, start_model, band)
     starts = np.concatenate([[0.0], np.cumsum(_durations(curve))])
-    fig = Figure(figsize=(3.0 + 2.2 * len(shown), 5.5), layout="constrained")
+    fig = Figure(figsize=(3.0 + 2.2 * len(shown), 5.5))
     axes = fig.subplots(2, len(shown), sharey="row", height_ratios=(3, 1), squeeze=False)
+    fixed_layout(fig, left=0.85, right=0.15, top=0.6, bottom=0.55, wspace=0.12, hspace=0.4)
     for col, k in enumerate(shown):
         sel = seg == k
         t = curve.model_time[sel] - starts[k]
@@ -61,7 +64,8 @@ def plot_curve_fit(
         if band is not None and np.all(np.isfinite(band[sel])):
             ax.fill_between(t, model[sel] - band[sel], model[sel] + band[sel], color="C0",
                             alpha=0.25, lw=0, label="confidence band")  # fmt: skip
-        ax.set_title(f"segment {k + 1} ({kinds[k]})", fontsize=9)
+        # y given: no search for top tick labels to dodge (there are none; ~10 % of the draw)
+        ax.set_title(f"segment {k + 1} ({kinds[k]})", fontsize=9, y=1.0)
         ax.grid(alpha=0.3)
         ax_r.plot(t, model[sel] - curve.friction_ratio[sel], ".", ms=2, color="C3")
         ax_r.axhline(0.0, color="0.3", lw=0.8)
@@ -86,8 +90,9 @@ def _single_panel(
     """The whole curve against time in one panel, residuals below."""
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(9.0, 5.5), layout="constrained")
+    fig = Figure(figsize=(9.0, 5.5))
     ax, ax_r = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
+    fixed_layout(fig, left=0.85, right=0.25, top=0.4, bottom=0.55, hspace=0.15)
     t = curve.time
     stride = max(1, t.size // 4000)
     ax.plot(t[::stride], curve.friction_ratio[::stride], ".", ms=2, color="0.55", label="data")
@@ -136,7 +141,11 @@ def plot_profile(
     from frictionlab.calibration import CHI2_95
 
     if ax is None:
-        ax = new_figure(1, 5.5, 4.0)[1][0]
+        from matplotlib.figure import Figure
+
+        fig = Figure(figsize=(5.5, 4.0))
+        ax = fig.add_subplot()
+        fixed_layout(fig, left=0.8, right=0.3, top=0.15, bottom=0.55)
     x = profile.values
     ax.plot(x, profile.delta_chi2, "o-", color="C0", label="profile (others re-fitted)")
     if np.isfinite(stderr) and stderr > 0:
