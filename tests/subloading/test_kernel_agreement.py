@@ -114,8 +114,14 @@ def test_update_options_give_the_same_state() -> None:
         np.testing.assert_array_equal(other.traction, full.traction)
         np.testing.assert_array_equal(other.state.F, full.state.F)
         np.testing.assert_array_equal(other.state.plastic_slip, full.state.plastic_slip)
-    np.testing.assert_array_equal(small.traction, full.traction[:50])
-    np.testing.assert_array_equal(small.tangent, full.tangent[:50])
+    # the serial run's last 50 % LANES points go through _point, the parallel run's through
+    # the lanes: the same to rounding there, identical where the grouping is the same
+    grouped = 50 - 50 % kernels.LANES
+    np.testing.assert_array_equal(small.traction[:grouped], full.traction[:grouped])
+    np.testing.assert_array_equal(small.tangent[:grouped], full.tangent[:grouped])
+    for got, ref in ((small.traction, full.traction[:50]), (small.tangent, full.tangent[:50])):
+        scale = float(np.abs(ref).max())
+        np.testing.assert_allclose(got[grouped:], ref[grouped:], rtol=1e-12, atol=1e-12 * scale)
     np.testing.assert_array_equal(reused.tangent, full.tangent)
     assert lean.tangent.shape == (0, 3, 3)
     assert reused.traction is buffers["traction"]

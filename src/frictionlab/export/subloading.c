@@ -17,6 +17,7 @@
 #include <math.h>
 
 #define HALF_PI (0.5 * 3.14159265358979323846)
+#define INV_HALF_PI (2.0 / 3.14159265358979323846)
 #define PI 3.14159265358979323846
 
 #define RTOL_RESIDUAL 1e-13
@@ -130,7 +131,7 @@ static void ratio_from(int law, double u, double y0, double s0, double R0, doubl
         double y = y0 * (1.0 + em);
         double s2 = s0 * s0 - y0 * y0 * (em * (2.0 + em));
         double s = s2 > 0.0 ? sqrt(s2) : 0.0;
-        *R = atan2(s, y) / HALF_PI;
+        *R = atan2(s, y) * INV_HALF_PI;
         *slope = s > 0.0 ? u * y / s : INFINITY;
         return;
     }
@@ -581,20 +582,21 @@ static void size_after(double F0, double Fs, double Fk, double kappa, double xi,
         return;
     }
     if (m == 1.0 && n == 1.0 && form == SL_ONE_MINUS) {
-        double a_soft = kappa * dlam / Fk;
+        double a_soft = (kappa / Fk) * dlam;
         double a = a_soft + xi * dt / Fs;
         if (a == 0.0) {
             *Fout = F0;
             *dFout = -kappa * (F0 / Fk - 1.0);
             return;
         }
-        double F_inf = (kappa * dlam + xi * dt) / a;
+        double ia = 1.0 / a;
+        double F_inf = (kappa * dlam + xi * dt) * ia;
         double em = expm1(-a);
         double e = 1.0 + em;
-        double one_minus_e_over_a = -em / a;
+        double one_minus_e_over_a = -em * ia;
         double F = F_inf + (F0 - F_inf) * e;
         double dF =
-            kappa * (1.0 - F_inf / Fk) * one_minus_e_over_a + (F_inf - F0) * e * kappa / Fk;
+            kappa * (1.0 - F_inf * (1.0 / Fk)) * one_minus_e_over_a + (F_inf - F0) * e * (kappa / Fk);
         *Fout = pmin(pmax(F, Fk), Fs);
         *dFout = dF;
         return;
@@ -655,7 +657,7 @@ static void surface_point(double q, double omq, double fh1t, double fh2t, double
     p->t1 = fh1t * p->i1;
     p->t2 = fh2t * p->i2;
     p->W = norm2(p->t1, p->t2);
-    p->dlam = p->gamma * p->W / L->alpha_t;
+    p->dlam = p->gamma * p->W * (1.0 / L->alpha_t);
     p->w = norm2(A1 * p->t1, A2 * p->t2);
     potential(L->surface, L->tear_k, p->w, fn, &p->phi, &p->phi_w, &p->phi_fn);
 }
@@ -717,7 +719,7 @@ static void state_at(double q, double omq, double fh1t, double fh2t, double fn, 
         phi_2 = 0.0;
     }
     double dW = W > 0.0 ? -(t1 * t1 * i1 + t2 * t2 * i2) / W : 0.0;
-    double ddlam = (W + gamma * dW) / alpha_t;
+    double ddlam = (W + gamma * dW) * (1.0 / alpha_t);
     double hard = dR * F + R * dF;
     double phi_gamma = phi_1 * dfh1 + phi_2 * dfh2;
     double rf_gamma = hard * ddlam;
@@ -888,7 +890,7 @@ static void model_at(double q, double fh1t, double fh2t, double fn, const law_t 
     double dphi = 0.0;
     if (w > 0.0) dphi = -phi_w * (A1 * A1 * t1 * t1 * i1 + A2 * A2 * t2 * t2 * i2) / w;
     double dW = W > 0.0 ? -(t1 * t1 * i1 + t2 * t2 * i2) / W : 0.0;
-    double ddlam = (W + gamma * dW) / L->alpha_t;
+    double ddlam = (W + gamma * dW) * (1.0 / L->alpha_t);
     double dgamma = Aref * Aref / (omq * omq);
     out[0] = phi;
     out[1] = R * F;

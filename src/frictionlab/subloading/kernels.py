@@ -33,6 +33,7 @@ import numpy as np
 from frictionlab._jit import njit, prange
 from frictionlab.subloading.evolution import (
     _HALF_PI,
+    _INV_HALF_PI,
     BACKWARD_EULER,
     EXPONENTIAL,
     ONE_MINUS,
@@ -170,7 +171,7 @@ def _state_at(
     t1 = fh1t * i1  # = fhat_1 / A1^2
     t2 = fh2t * i2
     W = _norm(t1, t2)
-    dlam = gamma * W / alpha_t
+    dlam = gamma * W * (1.0 / alpha_t)  # the quotient by a constant as a product
     w = _norm(A1 * t1, A2 * t2)
     phi, phi_w, phi_fn = potential(surface, tear_k, w, fn)
     R, dR = ratio_from(ulaw, u, y0, s0, R0, dlam)
@@ -187,7 +188,7 @@ def _state_at(
         phi_1 = 0.0
         phi_2 = 0.0
     dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
-    ddlam = (W + gamma * dW) / alpha_t
+    ddlam = (W + gamma * dW) * (1.0 / alpha_t)
     hard = dR * F + R * dF
     phi_gamma = phi_1 * dfh1 + phi_2 * dfh2
     rf_gamma = hard * ddlam
@@ -343,7 +344,7 @@ def _model_at(
     t1 = fh1t * i1
     t2 = fh2t * i2
     W = _norm(t1, t2)
-    dlam = gamma * W / alpha_t
+    dlam = gamma * W * (1.0 / alpha_t)
     w = _norm(A1 * t1, A2 * t2)
     phi, phi_w, _ = potential(surface, tear_k, w, fn)
     R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR * (1.0 / 6.0)))
@@ -357,7 +358,7 @@ def _model_at(
     if w > 0.0:
         dphi = -phi_w * (A1 * A1 * t1 * t1 * i1 + A2 * A2 * t2 * t2 * i2) / w
     dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
-    ddlam = (W + gamma * dW) / alpha_t
+    ddlam = (W + gamma * dW) * (1.0 / alpha_t)
     dgamma = Aref * Aref / (omq * omq)  # d gamma / d q
     return phi, R * F, dphi * dgamma, (Rp * F + R * dF) * ddlam * dgamma
 
@@ -1170,8 +1171,9 @@ ELASTIC, PLASTIC, BY_POINT = 0, 1, 2
  V_DDR, V_DDDR, V_DF, V_DDF, V_KIND, V_ACTIVE, V_ITER, V_T1_OLD, V_T2_OLD, V_FN,
  V_R_OLD, V_GAP_OLD, V_SLIP1, V_SLIP2, V_DUN, V_DARG_R, V_DA, V_STEP_OK, V_OUT_T1,
  V_OUT_T2, V_OUT_F, V_OUT_R, V_OUT_DLAM, V_OUT_VP1, V_OUT_VP2, V_OUT_DISS, V_OUT_K00,
- V_OUT_K01, V_OUT_K10, V_OUT_K11, V_OUT_K02, V_OUT_K12) = range(0, 78 * LANES, LANES)  # fmt: skip
-N_ROWS = 78
+ V_OUT_K01, V_OUT_K10, V_OUT_K11, V_OUT_K02, V_OUT_K12, V_PHI_W) = range(0, 79 * LANES,
+                                                                     LANES)  # fmt: skip
+N_ROWS = 79
 
 
 @njit(cache=True, inline="always")
@@ -1198,7 +1200,8 @@ def _lane_trial(law, ca, sa, dt, e_rec, t1_old, t2_old, fn, F_old, R_old, gap_ol
     """Steps 0-4 of :func:`_point` on the cone as a lane: the trial state, the starting
     ratio of a monotone trial path, the loading test. ``e_rec = exp(-xi dt/F_s)``.
 
-    Returns (kind, f1t, f2t, fn_tr, fh1t, fh2t, w_tr, phi_tr, F_rec, R_start, r0).
+    Returns (kind, f1t, f2t, fn_tr, fh1t, fh2t, w_tr, phi_tr, F_rec, R_start, r0,
+    Phi_w = 1/fn_tr), the last once per point for every residual of the cone.
     """
     f1 = ca * t1_old + sa * t2_old
     f2 = -sa * t1_old + ca * t2_old
@@ -1243,7 +1246,7 @@ def _lane_trial(law, ca, sa, dt, e_rec, t1_old, t2_old, fn, F_old, R_old, gap_ol
     plain = plain and plain0 and plain_0 and plain_1
     by_point = by_point or not (plain and monotone) or not (elastic or R_start > 0.0)
     kind = BY_POINT if by_point else (ELASTIC if elastic else PLASTIC)
-    return kind, f1t, f2t, fn_tr, fh1t, fh2t, w_tr, phi_tr, F_rec, R_start, r0
+    return kind, f1t, f2t, fn_tr, fh1t, fh2t, w_tr, phi_tr, F_rec, R_start, r0, inv
 
 
 @njit(cache=True, error_model="numpy")
@@ -1260,10 +1263,10 @@ def _lanes_trial(v, base, law, ca, sa, dt, e_rec, traction, F_old, R_old, gap_ol
     for j in range(LANES):
         (v[V_KIND + j], v[V_F1T + j], v[V_F2T + j], v[V_FN_TR + j], v[V_FH1T + j],
          v[V_FH2T + j], v[V_W_TR + j], v[V_PHI_TR + j], v[V_F_REC + j], v[V_R_START + j],
-         v[V_R0 + j]) = _lane_trial(law, ca, sa, dt, e_rec, v[V_T1_OLD + j], v[V_T2_OLD + j],
-                                    v[V_FN + j], v[V_F_OLD + j], v[V_R_OLD + j],
-                                    v[V_GAP_OLD + j], v[V_SLIP1 + j], v[V_SLIP2 + j],
-                                    v[V_DUN + j])  # fmt: skip
+         v[V_R0 + j], v[V_PHI_W + j]) = _lane_trial(
+            law, ca, sa, dt, e_rec, v[V_T1_OLD + j], v[V_T2_OLD + j], v[V_FN + j],
+            v[V_F_OLD + j], v[V_R_OLD + j], v[V_GAP_OLD + j], v[V_SLIP1 + j], v[V_SLIP2 + j],
+            v[V_DUN + j])  # fmt: skip
 
 
 @njit(cache=True, inline="always")
@@ -1297,9 +1300,9 @@ def _lane_start(law, r0, phi_tr, fn_tr, w_tr, fh1t, fh2t, R_start, y0, s0, F_rec
 
 
 @njit(cache=True, inline="always")
-def _lane_model(law, q, fh1t, fh2t, fn, R0, dR, ddR, dddR, F0, dF, ddF):  # fmt: skip
-    """One iteration of :func:`_start`'s model Newton (:func:`_model_at`, cone) as a lane.
-    Returns (q, stop, plain norm)."""
+def _lane_model(law, q, fh1t, fh2t, phi_w, R0, dR, ddR, dddR, F0, dF, ddF):  # fmt: skip
+    """One iteration of :func:`_start`'s model Newton (:func:`_model_at`, cone) as a lane
+    (``phi_w = 1/f_n``). Returns (q, stop, plain norm)."""
     A1 = law.A1
     A2 = law.A2
     omq = 1.0 - q
@@ -1309,9 +1312,8 @@ def _lane_model(law, q, fh1t, fh2t, fn, R0, dR, ddR, dddR, F0, dF, ddF):  # fmt:
     t1 = fh1t * i1
     t2 = fh2t * i2
     W, plain_W = _plain_norm(t1, t2)
-    dlam = gamma * W / law.alpha_t
+    dlam = gamma * W * (1.0 / law.alpha_t)
     w, plain_w = _plain_norm(A1 * t1, A2 * t2)
-    phi_w = 1.0 / fn if fn > 0.0 else 0.0
     phi = w * phi_w
     R = R0 + dlam * (dR + dlam * (0.5 * ddR + dlam * dddR * (1.0 / 6.0)))
     Rp = dR + dlam * (ddR + 0.5 * dddR * dlam)
@@ -1322,7 +1324,7 @@ def _lane_model(law, q, fh1t, fh2t, fn, R0, dR, ddR, dddR, F0, dF, ddF):  # fmt:
     dF = dF + ddF * dlam
     dphi = -phi_w * (A1 * A1 * t1 * t1 * i1 + A2 * A2 * t2 * t2 * i2) / w if w > 0.0 else 0.0
     dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
-    ddlam = (W + gamma * dW) / law.alpha_t
+    ddlam = (W + gamma * dW) * (1.0 / law.alpha_t)
     dgamma = law.Aref * law.Aref / (omq * omq)
     mq = phi - R * F
     dmq = dphi * dgamma - (Rp * F + R * dF) * ddlam * dgamma
@@ -1357,7 +1359,7 @@ def _lanes_start(v, law):  # fmt: skip
             break
         for j in range(LANES):
             q, stop, plain = _lane_model(law, v[V_Q + j], v[V_FH1T + j], v[V_FH2T + j],
-                                         v[V_FN_TR + j], v[V_R_START + j], v[V_DR + j],
+                                         v[V_PHI_W + j], v[V_R_START + j], v[V_DR + j],
                                          v[V_DDR + j], v[V_DDDR + j], v[V_F_REC + j],
                                          v[V_DF + j], v[V_DDF + j])  # fmt: skip
             active = v[V_ACTIVE + j] == 1.0
@@ -1424,37 +1426,38 @@ def _lane_return(law, q, omq, fh1t, fh2t, dt):  # fmt: skip
     t1 = fh1t * i1
     t2 = fh2t * i2
     W, plain_W = _plain_norm(t1, t2)
-    dlam = gamma * W / law.alpha_t
+    dlam = gamma * W * (1.0 / law.alpha_t)
     w, plain_w = _plain_norm(A1 * t1, A2 * t2)
-    a = law.kappa * dlam / law.Fk + law.xi * dt / law.Fs
+    a = (law.kappa / law.Fk) * dlam + law.xi * dt / law.Fs
     return (gamma, i1, i2, t1, t2, W, dlam, w, -_HALF_PI * law.u * dlam, a,
             plain_W and plain_w and omq > 0.0)  # fmt: skip
 
 
 @njit(cache=True, inline="always")
-def _lane_residual(law, dlam, gamma, i1, i2, t1, t2, W, w, y, s, atan, a, em_f, F0, fn,
+def _lane_residual(law, dlam, gamma, i1, i2, t1, t2, W, w, y, s, atan, a, em_f, F0, phi_w,
                    dt):  # fmt: skip
     """The rest of :func:`_state_at` (cone, cot law, exponential size with m = n = 1) as a
-    lane, given ``atan2(s, y)`` and ``expm1(-a)``. Returns (r, r_gamma, phi_1, phi_2, R, F,
-    phi_fn, hard, cond)."""
+    lane, given ``atan2(s, y)``, ``expm1(-a)`` and ``phi_w = 1/f_n``. Returns (r, r_gamma,
+    phi_1, phi_2, R, F, phi_fn, hard, cond)."""
     A1 = law.A1
     A2 = law.A2
     kappa = law.kappa
     Fk = law.Fk
-    R = atan / _HALF_PI
+    R = atan * _INV_HALF_PI
     dR = law.u * y / s if s > 0.0 else math.inf
     # size_after, closed form of m = n = 1 and the 1 - F/F_s form
     if a == 0.0:
         F = F0
         dF = -kappa * (F0 / Fk - 1.0)
     else:
-        F_inf = (kappa * dlam + law.xi * dt) / a
+        ia = 1.0 / a
+        F_inf = (kappa * dlam + law.xi * dt) * ia
         e = 1.0 + em_f
-        one_minus_e_over_a = -em_f / a
+        one_minus_e_over_a = -em_f * ia
         F = F_inf + (F0 - F_inf) * e
-        dF = kappa * (1.0 - F_inf / Fk) * one_minus_e_over_a + (F_inf - F0) * e * kappa / Fk
+        dF = (kappa * (1.0 - F_inf * (1.0 / Fk)) * one_minus_e_over_a
+              + (F_inf - F0) * e * (kappa / Fk))  # fmt: skip
         F = min(max(F, Fk), law.Fs)
-    phi_w = 1.0 / fn if fn > 0.0 else 0.0
     phi = w * phi_w
     r = phi - R * F
     dfh1 = -A1 * A1 * t1 * i1
@@ -1463,7 +1466,7 @@ def _lane_residual(law, dlam, gamma, i1, i2, t1, t2, W, w, y, s, atan, a, em_f, 
     phi_1 = phi_per_w * t1 if w > 0.0 else 0.0
     phi_2 = phi_per_w * t2 if w > 0.0 else 0.0
     dW = -(t1 * t1 * i1 + t2 * t2 * i2) / W if W > 0.0 else 0.0
-    ddlam = (W + gamma * dW) / law.alpha_t
+    ddlam = (W + gamma * dW) * (1.0 / law.alpha_t)
     hard = dR * F + R * dF
     r_gamma = (phi_1 * dfh1 + phi_2 * dfh2) - hard * ddlam
     return r, r_gamma, phi_1, phi_2, R, F, -phi * phi_w, hard, phi_w * w
@@ -1531,7 +1534,7 @@ def _lanes_residual(v, law, dt, follow):  # fmt: skip
         out = _lane_residual(law, v[V_DLAM + j], v[V_GAMMA + j], v[V_I1 + j], v[V_I2 + j],
                              v[V_T1 + j], v[V_T2 + j], v[V_W + j], v[V_WN + j], v[V_Y + j],
                              v[V_S + j], v[V_ATAN + j], v[V_A + j], v[V_EM_F + j],
-                             v[V_F_OLD + j], v[V_FN_TR + j], dt)  # fmt: skip
+                             v[V_F_OLD + j], v[V_PHI_W + j], dt)  # fmt: skip
         r, r_gamma, phi_1, phi_2, R, F, phi_fn, hard, cond = out
         active = v[V_ACTIVE + j] == 1.0
         v[V_RES + j] = r if active else v[V_RES + j]
@@ -1628,6 +1631,8 @@ def _lanes_solve(v, law, dt):  # fmt: skip
             v[V_Q + j] = q if going else v[V_Q + j]
             v[V_OMQ + j] = omq if going else v[V_OMQ + j]
             v[V_FLIP + j] = 1.0 if flip else 0.0
+        if _none_active(v):  # every lane finished: its values are those at its q already
+            break
         _lanes_residual(v, law, dt, True)
     for j in range(LANES):  # still iterating after MAX_ITERATIONS: not converged
         v[V_KIND + j] = BY_POINT if v[V_ACTIVE + j] == 1.0 else v[V_KIND + j]
