@@ -30,6 +30,7 @@ Pure computation: no file I/O.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -54,6 +55,9 @@ _SPACING = 2.0 / _NODES
 #: the bracket at worst; it stops at the value tolerance long before).
 _MAX_ITERATIONS = 60
 _STATE = ("traction", "F", "R", "plastic_slip", "gap", "frame")
+#: A set of the law's outputs in the compiled loop's order (the state's first).
+_SET_KEYS = ("traction", "F", "R", "gap", "plastic_slip", "dlam", "vp", "diss", "tangent",
+             "status", "iterations")  # fmt: skip
 
 
 def check_peak_accuracy(value: object) -> float | None:
@@ -125,6 +129,68 @@ def _control_arrays(control: Control, n: int) -> dict[str, np.ndarray]:
     }  # fmt: skip
 
 
+class _CompiledDoubling:
+    """The step doubling of a slip-controlled advance in one compiled call
+    (:func:`~frictionlab.driver._doubling_loop.double_steps`: the Python advance's law
+    calls, so its state)."""
+
+    def __init__(
+        self, params: SubloadingParams, n: int, tol: float, max_halvings: int, owner: _Bracket
+    ) -> None:
+        from frictionlab.subloading import kernels
+        from frictionlab.subloading.return_map import kernel_settings
+
+        self.law = kernel_settings(params, n == 1, False)[:8]  # as update() for (N,) dt
+        self.static = np.ascontiguousarray(np.broadcast_to(params.static, (n,)), dtype=np.float64)
+        self.sets = tuple(
+            tuple(kernels.empty_outputs(n, tangent=False)[key] for key in _SET_KEYS)
+            for _ in range(3)
+        )
+        self.du, self.dt = np.empty((n, 3)), np.empty(n)
+        self.tol, self.max_halvings, self.owner = tol, max_halvings, owner
+
+    @classmethod
+    def make(
+        cls, params: SubloadingParams, n: int, tol: float, max_halvings: int, owner: _Bracket
+    ) -> _CompiledDoubling | None:
+        """The compiled advance where it gives the Python one's: the law's own update, a
+        serial number of points; else None."""
+        from frictionlab.driver import stepping
+        from frictionlab.subloading.return_map import PARALLEL_MIN_POINTS
+
+        if stepping.update is not stepping._LAW_UPDATE or n >= PARALLEL_MIN_POINTS:
+            return None
+        return cls(params, n, tol, max_halvings, owner)
+
+    def __call__(self, start: ContactState, control: Control) -> ContactState | None:
+        """The state after ``control`` (no traction target) from ``start``; None where a
+        point failed or the law raised (the caller then runs the Python advance)."""
+        from frictionlab.driver._doubling_loop import D_SOLVES, D_SUBSTEPS, double_steps
+
+        double: Callable[..., bool] = double_steps  # numba: on first use
+        n = start.n_points
+        state = tuple(np.array(getattr(start, key), dtype=np.float64) for key in _SET_KEYS[:5])
+        du = np.empty((n, 3))
+        du[:, :2] = control.du_t
+        du[:, 2] = control.du_n
+        dt = np.ascontiguousarray(control.dt, dtype=np.float64)
+        counters = np.zeros(3, dtype=np.int64)
+        try:
+            ok = double(state, du, dt, self.tol, self.max_halvings, self.static, self.law,
+                              *self.sets, self.du, self.dt, counters)  # fmt: skip
+        except ArithmeticError:
+            return None
+        finally:
+            self.owner.solves += int(counters[D_SOLVES])
+            self.owner.substeps += int(counters[D_SUBSTEPS])
+        if not ok:
+            return None
+        traction, F, R, gap, plastic_slip = state
+        return ContactState._trusted(
+            traction=traction, F=F, R=R, gap=gap, plastic_slip=plastic_slip, frame=start.frame
+        )
+
+
 class _Bracket:
     """The friction ratio over the bracket ``[k - 1, k + 1]`` of each point (in steps from
     step ``k - 1``): one pass of ``_NODES`` sub-intervals from the state at ``k - 1``, each
@@ -156,6 +222,8 @@ class _Bracket:
         }
         self.ratio = np.empty((_NODES + 1, n))
         self.ok = True
+        self.solves = self.substeps = 0  # law calls and accepted substeps
+        self.compiled = _CompiledDoubling.make(params, n, tol, max_halvings, self)
         node = np.zeros(n, dtype=np.int64)
         self._keep(0, ContactState._trusted(**before))
         for i in range(_NODES):
@@ -198,9 +266,15 @@ class _Bracket:
         control = Control(
             frac * c["dt"], frac[:, None] * c["du_t"], frac * c["du_n"], None, fn_target
         )
-        out, _ = advance(
+        if fn_target is None and self.compiled is not None:
+            state = self.compiled(start, control)
+            if state is not None:
+                return state
+        out, work = advance(
             self.params, start, control, accuracy=self.tol, max_halvings=self.max_halvings
         )
+        self.solves += work.solves
+        self.substeps += work.substeps
         return out.state if out.ok else None
 
     def _negative_ratio(self, x: np.ndarray, rows: np.ndarray) -> np.ndarray:
