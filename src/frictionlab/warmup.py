@@ -5,8 +5,8 @@ result in frictionlab's compile cache (:mod:`frictionlab._compile_cache`). :func
 each family of kernels on a problem of a few points: the law's update for every sliding-yield
 surface, with and without the tangent, in the serial and the parallel loop; the driver's
 recorder and peak refinement; the lattice's partial- and full-contact kernels; and it
-byte-compiles frictionlab's modules. With the cache already filled it only loads the compiled code (about a second).
-``make venv`` and ``make demo`` run it.
+byte-compiles frictionlab's modules. With the cache already filled it only loads the
+compiled code (about a second). ``make venv`` and ``make demo`` run it.
 
 :func:`warm_for` warms only what one command's runs use (a sweep calls it before its
 workers start, so that no worker compiles): the law's parallel loop only for runs of at

@@ -113,6 +113,14 @@ def double_steps(state, du, dt, accuracy, max_halvings, static, law, full, half1
                 _copy_state(half2, state)
                 counters[D_SUBSTEPS] += 2
                 accepted = True
+            elif ok1 and depth + 1 >= max_halvings:  # the left half stays as tried,
+                _copy_state(half1, state)  # the right half is the second trial
+                counters[D_SUBSTEPS] += 1
+                counters[D_UNMET] += 1
+                _copy_state(half2, full)
+                full_ok = ok2
+                have_full = True
+                depth += 1
             else:  # refine: the left half, its trial kept as its full step
                 _copy_state(half1, full)
                 full_ok = ok1

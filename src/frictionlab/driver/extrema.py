@@ -165,7 +165,12 @@ class _CompiledDoubling:
     def __call__(self, start: ContactState, control: Control) -> ContactState | None:
         """The state after ``control`` (no traction target) from ``start``; None where a
         point failed or the law raised (the caller then runs the Python advance)."""
-        from frictionlab.driver._doubling_loop import D_SOLVES, D_SUBSTEPS, double_steps
+        from frictionlab.driver._doubling_loop import (
+            D_SOLVES,
+            D_SUBSTEPS,
+            D_UNMET,
+            double_steps,
+        )
 
         double: Callable[..., bool] = double_steps  # numba: on first use
         n = start.n_points
@@ -183,6 +188,7 @@ class _CompiledDoubling:
         finally:
             self.owner.solves += int(counters[D_SOLVES])
             self.owner.substeps += int(counters[D_SUBSTEPS])
+            self.owner.unmet += int(counters[D_UNMET])
         if not ok:
             return None
         traction, F, R, gap, plastic_slip = state
@@ -222,7 +228,8 @@ class _Bracket:
         }
         self.ratio = np.empty((_NODES + 1, n))
         self.ok = True
-        self.solves = self.substeps = 0  # law calls and accepted substeps
+        # law calls, accepted substeps, substeps left inaccurate at the deepest halving
+        self.solves = self.substeps = self.unmet = 0
         self.compiled = _CompiledDoubling.make(params, n, tol, max_halvings, self)
         node = np.zeros(n, dtype=np.int64)
         self._keep(0, ContactState._trusted(**before))
@@ -275,6 +282,7 @@ class _Bracket:
         )
         self.solves += work.solves
         self.substeps += work.substeps
+        self.unmet += int(work.accuracy_unmet)
         return out.state if out.ok else None
 
     def _negative_ratio(self, x: np.ndarray, rows: np.ndarray) -> np.ndarray:
@@ -322,6 +330,10 @@ class PeakTracker:
 
     def __init__(self, n_points: int) -> None:
         self.n = n_points
+        #: Law calls of every refinement so far, and of the last one, the trial steps left
+        #: short of its accuracy at the deepest halving.
+        self.solves = 0
+        self.unmet = 0
 
     def begin_segment(
         self, state: ContactState, time: np.ndarray, slip: np.ndarray, path: np.ndarray
@@ -381,8 +393,8 @@ class PeakTracker:
     ) -> RefinedPeaks:
         """Refine the turns of the segment just run (``steps`` steps; ``first_step`` its
         first step in the programme, ``index`` its 1-based number)."""
-
         n = self.n
+        self.unmet = 0
         turn = (self.k >= 0) & (self.k < steps - 1) & (self.best > self.start_ratio)
         if self.prescribed_traction or not turn.any():
             return RefinedPeaks.empty()
@@ -395,8 +407,11 @@ class PeakTracker:
         tol = 0.1 * accuracy * float(np.min(self.best[turn]))
         bracket = _Bracket(params, self.before, self.ctl, nxt, turn, tol, max_halvings)
         if not bracket.ok:  # a sub-interval failed even substepped: keep the samples
+            self.solves += bracket.solves
             return RefinedPeaks.empty()
         x, best = bracket.peak()
+        self.solves += bracket.solves
+        self.unmet = bracket.unmet
         better = turn & np.isfinite(best)
         rows = np.flatnonzero(better)
         if not rows.size:
