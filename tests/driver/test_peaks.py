@@ -164,7 +164,7 @@ def test_refined_turn_peak_matches_a_fine_run_at_a_bounded_cost(monkeypatch):
     assert coarse.stats.peak_friction_ratio[0] == peak
     # the cost: fewer law calls than running the segment once at the refinement's own
     # accuracy (a tenth of peak_accuracy, in friction-ratio units); a search that
-    # re-integrated from step k - 1 for each trial took ~18000
+    # re-integrated from step k - 1 for each trial took 3141
     tenth = 0.1 * 1e-4 * coarse.peaks.sampled_friction_ratio[0]
     once = simulate(params, _turn(15), settings=DriverSettings(accuracy=tenth),
                     peak_accuracy=None)  # fmt: skip
