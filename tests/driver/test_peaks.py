@@ -19,6 +19,7 @@ from frictionlab.driver import (
     InitialConditions,
     Slide,
     Turn,
+    extrema,
     simulate,
     stepping,
 )
@@ -195,3 +196,12 @@ def test_refinement_short_of_its_accuracy_warns():
     assert any("peak_accuracy" in w and "max_halvings" in w for w in h.warnings)
     ok = simulate(_turn_law(), _turn(15), settings=DriverSettings(accuracy=None))
     assert not any("peak_accuracy" in w for w in ok.warnings)
+
+
+def test_failed_refinement_keeps_the_samples_and_warns(monkeypatch):
+    """A trial whose local solve fails even substepped: the samples stay, with a warning."""
+    monkeypatch.setattr(extrema._Bracket, "_advance", lambda self, node, x: None)
+    h = simulate(_turn_law(), _turn(15), settings=DriverSettings(accuracy=None))
+    assert len(h.peaks) == 0
+    assert h.stats.peak_friction_ratio[0] == h.friction_ratio.max()
+    assert any("peak refinement failed" in w for w in h.warnings)

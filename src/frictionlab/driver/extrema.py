@@ -334,6 +334,8 @@ class PeakTracker:
         #: short of its accuracy at the deepest halving.
         self.solves = 0
         self.unmet = 0
+        #: Whether the last refinement failed (its segment keeps the largest samples).
+        self.failed = False
 
     def begin_segment(
         self, state: ContactState, time: np.ndarray, slip: np.ndarray, path: np.ndarray
@@ -394,7 +396,7 @@ class PeakTracker:
         """Refine the turns of the segment just run (``steps`` steps; ``first_step`` its
         first step in the programme, ``index`` its 1-based number)."""
         n = self.n
-        self.unmet = 0
+        self.unmet, self.failed = 0, False
         turn = (self.k >= 0) & (self.k < steps - 1) & (self.best > self.start_ratio)
         if self.prescribed_traction or not turn.any():
             return RefinedPeaks.empty()
@@ -408,6 +410,7 @@ class PeakTracker:
         bracket = _Bracket(params, self.before, self.ctl, nxt, turn, tol, max_halvings)
         if not bracket.ok:  # a sub-interval failed even substepped: keep the samples
             self.solves += bracket.solves
+            self.failed = True
             return RefinedPeaks.empty()
         x, best = bracket.peak()
         self.solves += bracket.solves

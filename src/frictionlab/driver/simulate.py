@@ -600,6 +600,12 @@ def simulate(
                                    first_step=seg.first_step, index=index)  # fmt: skip
             _apply_refined(rec.stats, seg, found)
             refined.append(found)
+            if tracker.failed:
+                warnings.append(
+                    f"segment #{index} ({plan.kind}): the peak refinement failed (the local "
+                    "solve of a trial step failed even substepped): its peaks are the largest "
+                    "samples, short of the true ones by up to the change over a step"
+                )
             if tracker.unmet:
                 warnings.append(
                     f"segment #{index} ({plan.kind}): the refined peak may miss peak_accuracy "
