@@ -172,7 +172,7 @@ class _CompiledDoubling:
             double_steps,
         )
 
-        double: Callable[..., bool] = double_steps  # numba: on first use
+        double: Callable[..., bool] = double_steps  # compiled on first use
         n = start.n_points
         state = tuple(np.array(getattr(start, key), dtype=np.float64) for key in _SET_KEYS[:5])
         du = np.empty((n, 3))
@@ -261,7 +261,7 @@ class _Bracket:
         a1 = np.where(second, x - 1.0, x)  # the end, as a fraction of its step
         c = {name: np.where(second.reshape((n,) + (1,) * (a.ndim - 1)), self.nxt[name], a)
              for name, a in self.ctl.items()}  # fmt: skip
-        prescribed = ~np.isnan(c["fn"])
+        prescribed = self.turn & ~np.isnan(c["fn"])  # the other points keep theirs
         fn_target = None
         if prescribed.any():  # reached linearly over the step, from its start
             fn_start = np.where(
