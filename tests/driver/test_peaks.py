@@ -205,3 +205,19 @@ def test_failed_refinement_keeps_the_samples_and_warns(monkeypatch):
     assert len(h.peaks) == 0
     assert h.stats.peak_friction_ratio[0] == h.friction_ratio.max()
     assert any("peak refinement failed" in w for w in h.warnings)
+
+
+def test_points_refined_together_each_match_their_fine_run():
+    """Two points turning by different angles (peaks at different steps) are refined in one
+    pass; each peak is within peak_accuracy of its own 600-step run's largest sample."""
+    angles = np.array([68.5, 25.0])
+    program = (Turn(angles, velocity=0.1, distance=0.2, steps=15),)
+    fine = simulate(_turn_law(), (Turn(angles, velocity=0.1, distance=0.2, steps=600),),
+                    settings=DriverSettings(accuracy=1e-5), peak_accuracy=None)  # fmt: skip
+    coarse = simulate(_turn_law(), program, settings=DriverSettings(accuracy=None))
+    np.testing.assert_array_equal(coarse.peaks.point, [1, 2])
+    np.testing.assert_allclose(coarse.peaks.friction_ratio, fine.friction_ratio.max(axis=0),
+                               rtol=1e-4)  # fmt: skip
+    assert np.all(
+        np.abs(coarse.peaks.sampled_friction_ratio / fine.friction_ratio.max(axis=0) - 1) > 1e-4
+    )
