@@ -4,9 +4,9 @@ numba compiles a kernel the first time it is called with a new type signature an
 result in frictionlab's compile cache (:mod:`frictionlab._compile_cache`). :func:`warmup` calls
 each family of kernels on a problem of a few points: the law's update for every sliding-yield
 surface, with and without the tangent, in the serial and the parallel loop; the driver's
-recorder; the lattice's partial- and full-contact kernels; and it byte-compiles frictionlab's
-modules. With the cache already filled it only loads the compiled code (about a second).
-``make venv`` and ``make demo`` run it.
+recorder and peak refinement; the lattice's partial- and full-contact kernels; and it
+byte-compiles frictionlab's modules. With the cache already filled it only loads the
+compiled code (about a second). ``make venv`` and ``make demo`` run it.
 
 :func:`warm_for` warms only what one command's runs use (a sweep calls it before its
 workers start, so that no worker compiles): the law's parallel loop only for runs of at
@@ -66,6 +66,9 @@ def _driver() -> None:
                           Recording(every=2, points=[0], sink=rows.append)):  # fmt: skip
             simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
                      recording=recording)  # fmt: skip
+        # a peak of the ratio between steps: the refinement's compiled step doubling
+        simulate(params, (Slide(velocity=1e-4, distance=2e-4, steps=8),),
+                 InitialConditions(normal_traction=1e6), n_points=n)  # fmt: skip
         # the steps the compiled loop hands back (a failed point, substepped) run in Python
         simulate(params, program, InitialConditions(normal_traction=1e6), n_points=n,
                  recording=Recording(every=1, sink=rows.append),

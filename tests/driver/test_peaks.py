@@ -13,7 +13,16 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from frictionlab.driver import Hold, InitialConditions, Slide, simulate
+from frictionlab.driver import (
+    DriverSettings,
+    Hold,
+    InitialConditions,
+    Slide,
+    Turn,
+    extrema,
+    simulate,
+    stepping,
+)
 from frictionlab.driver.healing import healing_analysis
 from frictionlab.errors import ParameterError
 from frictionlab.subloading import SubloadingParams, initial_state, update
@@ -114,3 +123,101 @@ def test_restart_peaks_of_a_coarse_slide_hold_slide_match_a_converged_run():
     coarse = run(10, 1e-4)
     assert np.max(np.abs(coarse_sampled / fine - 1)) > 1e-3  # the grid alone misses it
     assert np.allclose(coarse, fine, rtol=1e-4)
+
+
+# A turn of the sliding direction with large steps (the slip per step ~27 elastic slips
+# mu_s f_n/alpha_t): the peak lies within a step of the turn and an accurate trial needs
+# hundreds of substeps.
+def _turn_law() -> SubloadingParams:
+    return SubloadingParams(surface="coulomb", alpha_n=1000.0, alpha_t=1000.0, mu_s=0.5,
+                            mu_k=0.3, u=100.0, kappa=1.0, xi=1e-3, rotation=(0.0046, 0.0),
+                            orthotropy=(1.0, 0.593))  # fmt: skip
+
+
+def _turn(steps: int) -> tuple[Turn]:
+    return (Turn(68.5, velocity=0.1, distance=0.2, steps=steps),)
+
+
+def _counting_update(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """Count the law's update calls of the driver's Python steps (a replaced update also
+    turns off the compiled paths, which call the kernel directly)."""
+    calls = [0]
+
+    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
+        calls[0] += 1
+        return update(*args, **kwargs)
+
+    monkeypatch.setattr(stepping, "update", counted)
+    return calls
+
+
+def test_refined_turn_peak_matches_a_fine_run_at_a_bounded_cost(monkeypatch):
+    """15 steps refined against 600 steps at the driver's accuracy 1e-5, whose largest
+    sample is within 2e-6 of a run of 3000 steps at 1e-7 (0.358284208)."""
+    params = _turn_law()
+    fine = simulate(params, _turn(600), settings=DriverSettings(accuracy=1e-5),
+                    peak_accuracy=None)  # fmt: skip
+    reference = float(fine.friction_ratio.max())
+    coarse = simulate(params, _turn(15), settings=DriverSettings(accuracy=None))
+    (peak,) = coarse.peaks.friction_ratio
+    assert abs(coarse.peaks.sampled_friction_ratio[0] / reference - 1) > 5e-4  # a miss
+    assert peak == pytest.approx(reference, rel=1e-4)
+    assert coarse.stats.peak_friction_ratio[0] == peak
+    # the cost: fewer law calls than running the segment once at the refinement's own
+    # accuracy (a tenth of peak_accuracy, in friction-ratio units); a search that
+    # re-integrated from step k - 1 for each trial took 3141
+    tenth = 0.1 * 1e-4 * coarse.peaks.sampled_friction_ratio[0]
+    once = simulate(params, _turn(15), settings=DriverSettings(accuracy=tenth),
+                    peak_accuracy=None)  # fmt: skip
+    calls = _counting_update(monkeypatch)
+    counted = simulate(params, _turn(15), settings=DriverSettings(accuracy=None))
+    refinement = calls[0] - counted.work["solves"]
+    assert 0 < refinement < once.work["solves"]
+    assert refinement == counted.work["peak_solves"] == coarse.work["peak_solves"]
+
+
+def test_compiled_refinement_makes_the_python_law_calls(monkeypatch):
+    """The compiled step doubling gives the Python substepping's peaks, bit for bit."""
+    params = _turn_law()
+    program = (*_turn(15), Turn(-40.0, steps=9), Slide(velocity=0.3, distance=0.05, steps=5))
+    compiled = simulate(params, program, settings=DriverSettings(accuracy=None))
+    _counting_update(monkeypatch)
+    python = simulate(params, program, settings=DriverSettings(accuracy=None))
+    assert len(compiled.peaks) >= 2
+    for name in ("friction_ratio", "offset", "time", "slip", "step"):
+        np.testing.assert_array_equal(getattr(compiled.peaks, name), getattr(python.peaks, name))
+    assert compiled.work["peak_solves"] == python.work["peak_solves"]
+
+
+def test_refinement_short_of_its_accuracy_warns():
+    """With no halving allowed a trial step cannot reach a tenth of peak_accuracy: the
+    history says that the refined peak may miss it."""
+    h = simulate(_turn_law(), _turn(15), settings=DriverSettings(accuracy=None, max_halvings=0))
+    assert any("peak_accuracy" in w and "max_halvings" in w for w in h.warnings)
+    ok = simulate(_turn_law(), _turn(15), settings=DriverSettings(accuracy=None))
+    assert not any("peak_accuracy" in w for w in ok.warnings)
+
+
+def test_failed_refinement_keeps_the_samples_and_warns(monkeypatch):
+    """A trial whose local solve fails even substepped: the samples stay, with a warning."""
+    monkeypatch.setattr(extrema._Bracket, "_advance", lambda self, node, x: None)
+    h = simulate(_turn_law(), _turn(15), settings=DriverSettings(accuracy=None))
+    assert len(h.peaks) == 0
+    assert h.stats.peak_friction_ratio[0] == h.friction_ratio.max()
+    assert any("peak refinement failed" in w for w in h.warnings)
+
+
+def test_points_refined_together_each_match_their_fine_run():
+    """Two points turning by different angles (peaks at different steps) are refined in one
+    pass; each peak is within peak_accuracy of its own 600-step run's largest sample."""
+    angles = np.array([68.5, 25.0])
+    program = (Turn(angles, velocity=0.1, distance=0.2, steps=15),)
+    fine = simulate(_turn_law(), (Turn(angles, velocity=0.1, distance=0.2, steps=600),),
+                    settings=DriverSettings(accuracy=1e-5), peak_accuracy=None)  # fmt: skip
+    coarse = simulate(_turn_law(), program, settings=DriverSettings(accuracy=None))
+    np.testing.assert_array_equal(coarse.peaks.point, [1, 2])
+    np.testing.assert_allclose(coarse.peaks.friction_ratio, fine.friction_ratio.max(axis=0),
+                               rtol=1e-4)  # fmt: skip
+    assert np.all(
+        np.abs(coarse.peaks.sampled_friction_ratio / fine.friction_ratio.max(axis=0) - 1) > 1e-4
+    )

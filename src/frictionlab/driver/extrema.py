@@ -6,25 +6,36 @@ true peak by up to the change over a step (7 % for the starter scenario at 100 s
 each segment (step ``k``: the states after steps ``k - 1`` and ``k``, and the controls of
 steps ``k`` and ``k + 1``). Where the sample is a turn (larger than the segment's start and
 its last step), :meth:`PeakTracker.refine` maximises the ratio over the bracket
-``[k - 1, k + 1]`` by golden-section search; each trial advances from the bracket's kept
-state by a fraction of the driver's own step (slip and time scaled, traction targets
-interpolated linearly as in :meth:`~frictionlab.driver.program.Control.halves`) with the
-driver's step-doubling control at a tenth of the requested accuracy.
+``[k - 1, k + 1]``:
 
-The peak is then within ``peak_accuracy`` (relative) of the converged one whenever the
-state at step ``k - 1`` is (exact from a segment's start; otherwise to the driver's own
-accuracy). Steps that prescribe the tangential traction are not refined: the ratio is
-then linear between steps, so its peak is a sample.
+1. one pass from the kept state at ``k - 1`` over the bracket in ``_NODES`` equal
+   sub-intervals (slip and time scaled, traction targets interpolated linearly as in
+   :meth:`~frictionlab.driver.program.Control.halves`), each with the driver's
+   step-doubling control at a tenth of the requested accuracy, keeping the state at every
+   node;
+2. Chandrupatla's bracketing search (:func:`scipy.optimize.elementwise.find_minimum`,
+   superlinear) between the neighbours of the largest node, each trial one advance from
+   the node before it (at most one sub-interval), until the bracket's values agree to that
+   tenth.
+
+The cost is about one accurate integration over the two steps (a search re-integrating
+from ``k - 1`` for every trial would cost one per trial). The peak is then within
+``peak_accuracy`` (relative) of the converged one whenever the state at step ``k - 1`` is
+(exact from a segment's start; otherwise to the driver's own accuracy). Steps that
+prescribe the tangential traction are not refined: the ratio is then linear between
+steps, so its peak is a sample.
 
 Pure computation: no file I/O.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+from scipy.optimize.elementwise import find_minimum
 
 from frictionlab.driver.program import Control
 from frictionlab.subloading import ContactState, SubloadingParams
@@ -36,11 +47,17 @@ __all__ = ["DEFAULT_PEAK_ACCURACY", "PeakTracker", "RefinedPeaks", "check_peak_a
 
 #: Default relative accuracy of reported peaks (``[run] peak_accuracy``).
 DEFAULT_PEAK_ACCURACY = 1e-4
-_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
-#: Golden-section iterations: the bracket (two steps) shrinks to 2 * 0.618**40 ~ 1e-8
-#: of a step; the peak's value error is quadratic in that.
-_ITERATIONS = 40
+#: Sub-intervals of the bracket (two steps) integrated in one pass; even, so that step
+#: ``k`` ends on a node.
+_NODES = 16
+_SPACING = 2.0 / _NODES
+#: Iterations of the bracketing search between the largest node's neighbours (each halves
+#: the bracket at worst; it stops at the value tolerance long before).
+_MAX_ITERATIONS = 60
 _STATE = ("traction", "F", "R", "plastic_slip", "gap", "frame")
+#: A set of the law's outputs in the compiled loop's order (the state's first).
+_SET_KEYS = ("traction", "F", "R", "gap", "plastic_slip", "dlam", "vp", "diss", "tangent",
+             "status", "iterations")  # fmt: skip
 
 
 def check_peak_accuracy(value: object) -> float | None:
@@ -112,11 +129,213 @@ def _control_arrays(control: Control, n: int) -> dict[str, np.ndarray]:
     }  # fmt: skip
 
 
+class _CompiledDoubling:
+    """The step doubling of a slip-controlled advance in one compiled call
+    (:func:`~frictionlab.driver._doubling_loop.double_steps`: the Python advance's law
+    calls, so its state)."""
+
+    def __init__(
+        self, params: SubloadingParams, n: int, tol: float, max_halvings: int, owner: _Bracket
+    ) -> None:
+        from frictionlab.subloading import kernels
+        from frictionlab.subloading.return_map import kernel_settings
+
+        self.law = kernel_settings(params, n == 1, False)[:8]  # as update() for (N,) dt
+        self.static = np.ascontiguousarray(np.broadcast_to(params.static, (n,)), dtype=np.float64)
+        self.sets = tuple(
+            tuple(kernels.empty_outputs(n, tangent=False)[key] for key in _SET_KEYS)
+            for _ in range(3)
+        )
+        self.du, self.dt = np.empty((n, 3)), np.empty(n)
+        self.tol, self.max_halvings, self.owner = tol, max_halvings, owner
+
+    @classmethod
+    def make(
+        cls, params: SubloadingParams, n: int, tol: float, max_halvings: int, owner: _Bracket
+    ) -> _CompiledDoubling | None:
+        """The compiled advance where it gives the Python one's: the law's own update, a
+        serial number of points; else None."""
+        from frictionlab.driver import stepping
+        from frictionlab.subloading.return_map import PARALLEL_MIN_POINTS
+
+        if stepping.update is not stepping._LAW_UPDATE or n >= PARALLEL_MIN_POINTS:
+            return None
+        return cls(params, n, tol, max_halvings, owner)
+
+    def __call__(self, start: ContactState, control: Control) -> ContactState | None:
+        """The state after ``control`` (no traction target) from ``start``; None where a
+        point failed or the law raised (the caller then runs the Python advance)."""
+        from frictionlab.driver._doubling_loop import (
+            D_SOLVES,
+            D_SUBSTEPS,
+            D_UNMET,
+            double_steps,
+        )
+
+        double: Callable[..., bool] = double_steps  # compiled on first use
+        n = start.n_points
+        state = tuple(np.array(getattr(start, key), dtype=np.float64) for key in _SET_KEYS[:5])
+        du = np.empty((n, 3))
+        du[:, :2] = control.du_t
+        du[:, 2] = control.du_n
+        dt = np.ascontiguousarray(control.dt, dtype=np.float64)
+        counters = np.zeros(3, dtype=np.int64)
+        try:
+            ok = double(state, du, dt, self.tol, self.max_halvings, self.static, self.law,
+                              *self.sets, self.du, self.dt, counters)  # fmt: skip
+        except ArithmeticError:
+            return None
+        finally:
+            self.owner.solves += int(counters[D_SOLVES])
+            self.owner.substeps += int(counters[D_SUBSTEPS])
+            self.owner.unmet += int(counters[D_UNMET])
+        if not ok:
+            return None
+        traction, F, R, gap, plastic_slip = state
+        return ContactState._trusted(
+            traction=traction, F=F, R=R, gap=gap, plastic_slip=plastic_slip, frame=start.frame
+        )
+
+
+class _Bracket:
+    """The friction ratio over the bracket ``[k - 1, k + 1]`` of each point (in steps from
+    step ``k - 1``): one pass of ``_NODES`` sub-intervals from the state at ``k - 1``, each
+    advanced with the driver's step doubling to ``tol``, keeps the state at every node;
+    the ratio between nodes is one advance from the node before.
+
+    ``before``: the states at ``k - 1``; ``ctl``, ``nxt``: the controls of steps ``k`` and
+    ``k + 1`` (:func:`_control_arrays`); ``turn``: the points refined (the others stay at
+    their node 0).
+    """
+
+    def __init__(
+        self,
+        params: SubloadingParams,
+        before: dict[str, np.ndarray],
+        ctl: dict[str, np.ndarray],
+        nxt: dict[str, np.ndarray],
+        turn: np.ndarray,
+        tol: float,
+        max_halvings: int,
+    ) -> None:
+        self.params, self.ctl, self.nxt, self.turn = params, ctl, nxt, turn
+        self.tol, self.max_halvings = tol, max_halvings
+        n = turn.shape[0]
+        self.rows = np.arange(n)
+        self.nodes = {
+            name: np.empty((_NODES + 1, *arr.shape), dtype=arr.dtype)
+            for name, arr in before.items()
+        }
+        self.ratio = np.empty((_NODES + 1, n))
+        self.ok = True
+        # law calls, accepted substeps, substeps left inaccurate at the deepest halving
+        self.solves = self.substeps = self.unmet = 0
+        self.compiled = _CompiledDoubling.make(params, n, tol, max_halvings, self)
+        node = np.zeros(n, dtype=np.int64)
+        self._keep(0, ContactState._trusted(**before))
+        for i in range(_NODES):
+            node[:] = i
+            state = self._advance(node, np.where(turn, (i + 1) * _SPACING, i * _SPACING))
+            if state is None:
+                self.ok = False
+                return
+            self._keep(i + 1, state)
+
+    def _keep(self, i: int, state: ContactState) -> None:
+        for name, arr in self.nodes.items():
+            arr[i] = getattr(state, name)
+        self.ratio[i] = _ratio(state.traction)
+
+    def _advance(self, node: np.ndarray, x: np.ndarray) -> ContactState | None:
+        """The states at ``x`` (per point, in [node, node + 1] spacings) advanced from the
+        kept ``node`` (per point); None where the step failed even substepped."""
+        from frictionlab.driver.stepping import advance
+
+        n = x.shape[0]
+        start = ContactState._trusted(
+            **{name: arr[node, self.rows] for name, arr in self.nodes.items()}
+        )
+        x0 = node * _SPACING
+        second = node >= _NODES // 2  # in step k + 1
+        frac = np.where(self.turn, x - x0, 0.0)  # of a step
+        a1 = np.where(second, x - 1.0, x)  # the end, as a fraction of its step
+        c = {name: np.where(second.reshape((n,) + (1,) * (a.ndim - 1)), self.nxt[name], a)
+             for name, a in self.ctl.items()}  # fmt: skip
+        prescribed = self.turn & ~np.isnan(c["fn"])  # the other points keep theirs
+        fn_target = None
+        if prescribed.any():  # reached linearly over the step, from its start
+            fn_start = np.where(
+                second, self.nodes["traction"][_NODES // 2, :, 2], self.nodes["traction"][0, :, 2]
+            )
+            fn_target = np.where(
+                prescribed, fn_start + a1 * (c["fn"] - fn_start), start.traction[:, 2]
+            )
+        control = Control(
+            frac * c["dt"], frac[:, None] * c["du_t"], frac * c["du_n"], None, fn_target
+        )
+        if fn_target is None and self.compiled is not None:
+            state = self.compiled(start, control)
+            if state is not None:
+                return state
+        out, work = advance(
+            self.params, start, control, accuracy=self.tol, max_halvings=self.max_halvings
+        )
+        self.solves += work.solves
+        self.substeps += work.substeps
+        self.unmet += int(work.accuracy_unmet)
+        return out.state if out.ok else None
+
+    def _negative_ratio(self, x: np.ndarray, rows: np.ndarray) -> np.ndarray:
+        """-ratio at ``x`` for the points ``rows`` (the others stay at node 0: no cost)."""
+        n = self.turn.shape[0]
+        node = np.zeros(n, dtype=np.int64)
+        xs = np.zeros(n)
+        node[rows] = np.minimum(np.floor(x / _SPACING), _NODES).astype(np.int64)
+        xs[rows] = x
+        state = self._advance(node, xs)
+        if state is None:
+            return np.full(rows.shape, np.inf)
+        return -_ratio(state.traction)[rows]
+
+    def peak(self) -> tuple[np.ndarray, np.ndarray]:
+        """Position (steps from ``k - 1``) and value of each point's largest ratio: the
+        largest node, then Chandrupatla's bracketing search
+        (:func:`scipy.optimize.elementwise.find_minimum`) between its neighbours, to
+        ``(f_l - 2 f_m + f_r)/2 <= tol/2``: a concave peak is then at most ``tol`` above
+        the best point found."""
+        j = np.argmax(self.ratio, axis=0)
+        cols = np.arange(j.shape[0])
+        best = self.ratio[j, cols]
+        x = j * _SPACING
+        inner = self.turn & (j > 0) & (j < _NODES)
+        rows = np.flatnonzero(inner)
+        if rows.size:
+            jr = j[rows]
+            res = find_minimum(
+                self._negative_ratio,
+                ((jr - 1) * _SPACING, jr * _SPACING, (jr + 1) * _SPACING),
+                args=(rows,),
+                tolerances={"fatol": 0.5 * self.tol, "xatol": 1e-12},
+                maxiter=_MAX_ITERATIONS,
+            )
+            found = -res.f_bracket[1]
+            up = np.isfinite(found) & (found > best[rows])
+            best[rows[up]] = found[up]
+            x[rows[up]] = res.bracket[1][up]
+        return x, np.where(self.turn, best, -np.inf)
+
+
 class PeakTracker:
     """Keeps, per point, what is needed to refine each segment's largest friction ratio."""
 
     def __init__(self, n_points: int) -> None:
         self.n = n_points
+        #: Law calls of every refinement so far, and of the last one, the trial steps left
+        #: short of its accuracy at the deepest halving.
+        self.solves = 0
+        self.unmet = 0
+        #: Whether the last refinement failed (its segment keeps the largest samples).
+        self.failed = False
 
     def begin_segment(
         self, state: ContactState, time: np.ndarray, slip: np.ndarray, path: np.ndarray
@@ -176,9 +395,8 @@ class PeakTracker:
     ) -> RefinedPeaks:
         """Refine the turns of the segment just run (``steps`` steps; ``first_step`` its
         first step in the programme, ``index`` its 1-based number)."""
-        from frictionlab.driver.stepping import advance
-
         n = self.n
+        self.unmet, self.failed = 0, False
         turn = (self.k >= 0) & (self.k < steps - 1) & (self.best > self.start_ratio)
         if self.prescribed_traction or not turn.any():
             return RefinedPeaks.empty()
@@ -189,56 +407,14 @@ class PeakTracker:
             for name, arr in _control_arrays(plan.control(int(k) + 1), n).items():
                 nxt[name][sel] = arr[sel]
         tol = 0.1 * accuracy * float(np.min(self.best[turn]))
-
-        def ratio_at(x: np.ndarray) -> np.ndarray:
-            """The ratio at ``x`` steps past step k - 1 (x in [0, 2]; 0 off the turns)."""
-            second = x > 1.0
-            frac = np.where(turn, np.where(second, x - 1.0, x), 0.0)
-            start = ContactState._trusted(
-                **{
-                    nm: np.where(
-                        second.reshape((n,) + (1,) * (self.before[nm].ndim - 1)),
-                        self.after[nm],
-                        self.before[nm],
-                    )
-                    for nm in _STATE
-                }
-            )
-            c = {nm: np.where(second.reshape((n,) + (1,) * (a.ndim - 1)), nxt[nm], a)
-                 for nm, a in self.ctl.items()}  # fmt: skip
-            fn0 = start.traction[:, 2]
-            fn_target = np.where(np.isnan(c["fn"]), np.nan, fn0 + frac * (c["fn"] - fn0))
-            prescribed = ~np.isnan(c["fn"])
-            ctl = Control(
-                frac * c["dt"],
-                frac[:, None] * c["du_t"],
-                frac * c["du_n"],
-                None,
-                np.where(prescribed, fn_target, fn0) if prescribed.any() else None,
-            )
-            out, _ = advance(params, start, ctl, accuracy=tol, max_halvings=max_halvings)
-            if not out.ok:  # keep the sample there
-                return np.where(turn, -np.inf, 0.0)
-            return _ratio(out.state.traction)
-
-        a, b = np.zeros(n), np.full(n, 2.0)
-        c = b - _GOLDEN * (b - a)
-        d = a + _GOLDEN * (b - a)
-        fc, fd = ratio_at(c), ratio_at(d)
-        for _ in range(_ITERATIONS):
-            left = fc > fd  # the maximum lies in [a, d]
-            b = np.where(left, d, b)
-            a = np.where(left, a, c)
-            new = np.where(left, b - _GOLDEN * (b - a), a + _GOLDEN * (b - a))
-            fnew = ratio_at(new)
-            c, d, fc, fd = (
-                np.where(left, new, d),
-                np.where(left, c, new),
-                np.where(left, fnew, fd),
-                np.where(left, fc, fnew),
-            )
-        x = np.where(fc > fd, c, d)
-        best = np.maximum(fc, fd)
+        bracket = _Bracket(params, self.before, self.ctl, nxt, turn, tol, max_halvings)
+        if not bracket.ok:  # a sub-interval failed even substepped: keep the samples
+            self.solves += bracket.solves
+            self.failed = True
+            return RefinedPeaks.empty()
+        x, best = bracket.peak()
+        self.solves += bracket.solves
+        self.unmet = bracket.unmet
         better = turn & np.isfinite(best)
         rows = np.flatnonzero(better)
         if not rows.size:

@@ -193,7 +193,8 @@ class History:
         the last completed step).
     work:
         Totals: steps, substeps, solves, iterations, steps refined for a failed local solve
-        or for accuracy, steps where the accuracy could not be met.
+        or for accuracy, steps where the accuracy could not be met, and the law calls of
+        the peak refinement (``peak_solves``).
     extra, extra_units:
         Additional (rows, N) series with their units (the spring-slider's load point,
         slider velocity and spring force).
@@ -599,6 +600,19 @@ def simulate(
                                    first_step=seg.first_step, index=index)  # fmt: skip
             _apply_refined(rec.stats, seg, found)
             refined.append(found)
+            if tracker.failed:
+                warnings.append(
+                    f"segment #{index} ({plan.kind}): the peak refinement failed (the local "
+                    "solve of a trial step failed even substepped): its peaks are the largest "
+                    "samples, short of the true ones by up to the change over a step"
+                )
+            if tracker.unmet:
+                warnings.append(
+                    f"segment #{index} ({plan.kind}): the refined peak may miss peak_accuracy "
+                    f"{peak_accuracy:g}: {tracker.unmet} of its trial substeps missed a tenth "
+                    f"of it even at 2**-{max_halvings} of a step (raise max_halvings, or use "
+                    "more steps)"
+                )
         if seg is not None:
             reached = seg.max_normal_traction
             key = reached.tobytes()  # segments often reach the same tractions: checked once
@@ -620,6 +634,7 @@ def simulate(
             f"; the accuracy {accuracy} was not met in {work['accuracy_unmet']} steps "
             f"even with 2**{max_halvings} substeps"
         )
+    work["peak_solves"] = 0 if tracker is None else tracker.solves
     if pool.holds(state):  # the final state outlives the reused buffers: a copy of its own
         state = ContactState._trusted(  # the kernel's outputs (finite); read-only copies
             **{name: np.array(getattr(state, name)) for name in _STATE_ARRAYS}, frame=state.frame
