@@ -217,6 +217,7 @@ class _Bracket:
         turn: np.ndarray,
         tol: float,
         max_halvings: int,
+        compiled: bool = True,
     ) -> None:
         self.params, self.ctl, self.nxt, self.turn = params, ctl, nxt, turn
         self.tol, self.max_halvings = tol, max_halvings
@@ -230,7 +231,9 @@ class _Bracket:
         self.ok = True
         # law calls, accepted substeps, substeps left inaccurate at the deepest halving
         self.solves = self.substeps = self.unmet = 0
-        self.compiled = _CompiledDoubling.make(params, n, tol, max_halvings, self)
+        self.compiled = (
+            _CompiledDoubling.make(params, n, tol, max_halvings, self) if compiled else None
+        )
         node = np.zeros(n, dtype=np.int64)
         self._keep(0, ContactState._trusted(**before))
         for i in range(_NODES):
@@ -392,9 +395,11 @@ class PeakTracker:
         max_halvings: int,
         first_step: int,
         index: int,
+        compiled: bool = True,
     ) -> RefinedPeaks:
         """Refine the turns of the segment just run (``steps`` steps; ``first_step`` its
-        first step in the programme, ``index`` its 1-based number)."""
+        first step in the programme, ``index`` its 1-based number; ``compiled``: the step
+        doubling in one compiled call where it qualifies, else in Python)."""
         n = self.n
         self.unmet, self.failed = 0, False
         turn = (self.k >= 0) & (self.k < steps - 1) & (self.best > self.start_ratio)
@@ -407,7 +412,7 @@ class PeakTracker:
             for name, arr in _control_arrays(plan.control(int(k) + 1), n).items():
                 nxt[name][sel] = arr[sel]
         tol = 0.1 * accuracy * float(np.min(self.best[turn]))
-        bracket = _Bracket(params, self.before, self.ctl, nxt, turn, tol, max_halvings)
+        bracket = _Bracket(params, self.before, self.ctl, nxt, turn, tol, max_halvings, compiled)
         if not bracket.ok:  # a sub-interval failed even substepped: keep the samples
             self.solves += bracket.solves
             self.failed = True

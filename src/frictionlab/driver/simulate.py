@@ -419,7 +419,8 @@ class DriverSettings:
     substepping, at most ``2**max_halvings`` substeps per step. ``compiled``: run the
     steps of segments that prescribe no traction in one compiled loop where the run
     allows it (:mod:`~frictionlab.driver.compiled_steps`: the same numbers as the Python
-    steps); False runs every step in Python (the reference).
+    steps), and the peak refinement's step doubling in one compiled call; False runs
+    every step and every refinement trial in Python (the reference).
     """
 
     accuracy: float | None = None
@@ -597,7 +598,8 @@ def simulate(
         if seg is not None and tracker is not None and not failed:
             assert peak_accuracy is not None
             found = tracker.refine(params, plan, steps, peak_accuracy, max_halvings=max_halvings,
-                                   first_step=seg.first_step, index=index)  # fmt: skip
+                                   first_step=seg.first_step, index=index,
+                                   compiled=chosen.compiled)  # fmt: skip
             _apply_refined(rec.stats, seg, found)
             refined.append(found)
             if tracker.failed:
