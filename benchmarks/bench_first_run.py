@@ -41,8 +41,9 @@ SPY = (
     "    def on_end(self, e):\n"
     "        pass\n"
     "event.register('numba:compile', Spy())\n"
-    "from frictionlab.cli import main\n"
-    "sys.exit(main(sys.argv[1:]))\n"
+    "from frictionlab.cli import run\n"
+    "sys.argv[0] = 'frictionlab'\n"
+    "run()\n"
 )
 
 

@@ -35,7 +35,6 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy.optimize.elementwise import find_minimum
 
 from frictionlab.driver.program import Control
 from frictionlab.subloading import ContactState, SubloadingParams
@@ -313,6 +312,8 @@ class _Bracket:
         inner = self.turn & (j > 0) & (j < _NODES)
         rows = np.flatnonzero(inner)
         if rows.size:
+            from scipy.optimize.elementwise import find_minimum  # ~0.5 s: only when refining
+
             jr = j[rows]
             res = find_minimum(
                 self._negative_ratio,
